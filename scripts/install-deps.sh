@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# Install the Debian 12 packages dfchaos needs, and only those that are missing.
+#
+#   scripts/install-deps.sh build    compiler, CMake, Eigen, GSL, GoogleTest, CLI11 (for `make test`)
+#   scripts/install-deps.sh report   build + gnuplot, LaTeX, Doxygen (for `make reproduce`)
+#
+# Idempotent: a second run finds nothing missing and does nothing. Runs apt-get as
+# root, or through sudo; where neither is possible it prints the exact command and fails.
+set -euo pipefail
+
+profile=${1:-build}
+build_pkgs=(g++ cmake make pkg-config libeigen3-dev libgsl-dev libgtest-dev libgmock-dev
+            libcli11-dev libbenchmark-dev)
+report_pkgs=(gnuplot-nox latexmk texlive-latex-base texlive-latex-recommended
+             texlive-latex-extra texlive-fonts-recommended texlive-pictures doxygen poppler-utils)
+
+case "$profile" in
+  build)  wanted=("${build_pkgs[@]}") ;;
+  report) wanted=("${build_pkgs[@]}" "${report_pkgs[@]}") ;;
+  *) echo "install-deps.sh: profile must be 'build' or 'report', got '$profile'" >&2; exit 2 ;;
+esac
+
+missing=()
+for p in "${wanted[@]}"; do
+  status=$(dpkg-query -W -f='${Status}' "$p" 2>/dev/null || true)
+  [[ "$status" == "install ok installed" ]] || missing+=("$p")
+done
+
+if ((${#missing[@]} == 0)); then
+  echo "install-deps: all ${#wanted[@]} packages of profile '$profile' present"
+  exit 0
+fi
+
+echo "install-deps: missing: ${missing[*]}"
+if [[ $(id -u) -eq 0 ]]; then
+  sudo=()
+elif command -v sudo >/dev/null && sudo -n true 2>/dev/null; then
+  sudo=(sudo -n)
+else
+  echo "install-deps: not root and no password-less sudo; run as root:" >&2
+  echo "  apt-get update && apt-get install -y --no-install-recommends ${missing[*]}" >&2
+  exit 1
+fi
+export DEBIAN_FRONTEND=noninteractive
+"${sudo[@]}" apt-get update -qq
+"${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+echo "install-deps: installed ${#missing[@]} package(s)"

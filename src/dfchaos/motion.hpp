@@ -1,0 +1,50 @@
+/// @file motion.hpp
+/// @brief The three regimes of Section 2 and their closed-form solutions (Eqs. 3–7).
+///
+/// Positions are measured from any fixed origin; only the gap \f$x - y \le 0\f$ matters for events.
+#pragma once
+
+#include "dfchaos/parameters.hpp"
+#include "dfchaos/phase.hpp"
+#include "dfchaos/roots.hpp"
+
+namespace dfchaos {
+
+/// The regimes that last over open time intervals (Section 2): free (f), progression (p), stop (s).
+enum class Regime { Free, Progression, Stop };
+
+/// "f", "p" or "s", the paper's labels.
+const char* regime_code(Regime r);
+
+/// Free motion (Eq. 3): \f$\ddot x = a\sin t + 2b\f$, delimiter at rest at \f$y\f$. From
+/// \f$x(t_s) = x_s\f$, \f$\dot x(t_s) = v_s\f$, with \f$s = t - t_s\f$:
+/// \f$x(t) = -a\sin t + b s^2 + (v_s + a\cos t_s)s + x_s + a\sin t_s\f$.
+struct FreeMotion {
+  double a, b;
+  Instant start;
+  double x_start, v_start;
+
+  FreeMotion(const Parameters& p, const Instant& start, double x_start, double v_start);
+  double position(const Instant& t) const;
+  double velocity(const Instant& t) const;
+  /// The gap \f$x(t) - y\f$ as a QuadraticPlusHarmonic: its first up-crossing is the next contact.
+  /// Starts at rest when the mass starts at the delimiter with zero velocity (Eq. 10).
+  QuadraticPlusHarmonic gap(double y) const;
+};
+
+/// Motion with progression (Eqs. 4, 6): \f$\ddot x = a\sin t + 2c\f$, \f$y = x\f$, \f$2c = 2b - q\f$.
+/// \f$x(t) = -a\sin t + c s^2 + (v_s + a\cos t_s)s + x_s + a\sin t_s\f$ and
+/// \f$\dot x(t) = v_s + 2cs - a(\cos t - \cos t_s)\f$ (Eq. 7 when \f$t_s = t_0\f$, \f$v_s = 0\f$).
+struct ProgressionMotion {
+  double a, c;
+  Instant start;
+  double x_start, v_start;
+
+  ProgressionMotion(const Parameters& p, const Instant& start, double x_start, double v_start);
+  double position(const Instant& t) const;
+  double velocity(const Instant& t) const;
+  /// \f$-\dot x(t)\f$ as a QuadraticPlusHarmonic: its first up-crossing is where progression stops.
+  QuadraticPlusHarmonic minus_velocity() const;
+};
+
+}  // namespace dfchaos

@@ -1,0 +1,57 @@
+/// @file simulator.hpp
+/// @brief Event-driven simulation of the full system \f$(x, y, \dot x, \text{regime})\f$ (Section 2).
+///
+/// Works for all positive parameters — also \f$b \ge a/2\f$, \f$q \le 2b\f$, \f$q \ge a + 2b\f$
+/// (Remark of Section 9) — stepping through regime_chain.hpp with the closed forms of motion.hpp.
+/// Every loop is bounded: reaching max_events or max_samples is an error, not a hang.
+#pragma once
+
+#include <vector>
+
+#include "dfchaos/parameters.hpp"
+#include "dfchaos/regime_chain.hpp"
+
+namespace dfchaos {
+
+/// One logged event: a regime change (fp or is), or a grazing touch (is, free to free).
+struct SimulationEvent {
+  double t = 0;      ///< instant (real)
+  Instant when;      ///< the same as turn and phase
+  Regime before = Regime::Free, after = Regime::Free;
+  TransitionKind kind = TransitionKind::InstantaneousStop;
+  double x = 0, y = 0;
+  double v_before = 0, v_after = 0;
+};
+
+/// A state sampled on a regular time grid.
+struct Sample {
+  double t = 0, x = 0, y = 0, v = 0;
+  Regime regime = Regime::Free;
+};
+
+/// Bounds and sampling of a simulation.
+struct SimulationOptions {
+  double sample_dt = 0;          ///< spacing of samples; 0 for none
+  long max_events = 1'000'000;   ///< more events than this before t_end is an error
+  long max_samples = 5'000'000;  ///< more samples than this is refused up front
+};
+
+/// The outcome of a simulation.
+struct Simulation {
+  Regime initial_regime = Regime::Free;
+  std::vector<SimulationEvent> events;
+  std::vector<Sample> samples;
+  MechanicalState final_state;  ///< at t_end
+};
+
+/// Simulates from \f$x(t_0) = x_0\f$, \f$y(t_0) = y_0\f$, \f$\dot x(t_0) = v_0\f$ until \f$t_{end}\f$.
+/// @throws InvalidParameter (`x0`, `y0`, `v0`, `t0`, `t-end`, `sample`) for non-finite values,
+///         \f$x_0 > y_0\f$, \f$t_{end} < t_0\f$, a negative sample step or too many samples.
+/// @throws GaveUp if more than max_events events occur.
+Simulation simulate(const Parameters& p, double x0, double y0, double v0, double t0, double t_end,
+                    const SimulationOptions& options = {});
+
+/// The state at instant t of the regime segment that starts in state s (no event in between).
+MechanicalState state_in_segment(const Parameters& p, const MechanicalState& s, const Instant& t);
+
+}  // namespace dfchaos
