@@ -87,6 +87,13 @@ int main(int argc, char** argv) {
   sim->add_option("--sample", sample, "also print the state every DT time units");
   sim->add_option("--max-events", max_events, "give up after this many events");
 
+  if (argc > 1 && argv[1][0] != '-') {
+    const std::string sub = argv[1];
+    if (sub != "info" && sub != "map" && sub != "orbit" && sub != "simulate") {
+      std::fprintf(stderr, "dfchaos: error: unknown subcommand '%s' (expected info, map, orbit or simulate)\n", sub.c_str());
+      return 2;
+    }
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -91,7 +91,16 @@ std::optional<UpCrossing> first_upcrossing(const QuadraticPlusHarmonic& f, const
     throw GaveUp("first_upcrossing: no horizon and no root bound; the search would not end");
 
   std::vector<double> breaks = f.inflection_phases();
-  if (breaks.empty() || breaks.front() != 0.0) breaks.insert(breaks.begin(), 0.0);
+  // An inflection computed a few ulp away from the origin's phase (the origin *is* an inflection,
+  // e.g. a start at rest at t2) would leave a sliver piece whose rounded slope has no meaning:
+  // snap such a break onto the origin.
+  for (double& b : breaks) {
+    const double d = std::fabs(b - f.origin.phase);
+    if (std::min(d, two_pi - d) < 1e-12) b = f.origin.phase;
+  }
+  breaks.push_back(0.0);
+  std::sort(breaks.begin(), breaks.end());
+  breaks.erase(std::unique(breaks.begin(), breaks.end()), breaks.end());
 
   Instant cursor = f.origin;
   long double s_cursor = 0;

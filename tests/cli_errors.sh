@@ -1,0 +1,72 @@
+#!/usr/bin/env bash
+# Failure tier for the dfchaos CLI: every bad input gives exit status 2, exactly one line on
+# stderr naming the parameter, and nothing on stdout. Also a few well-formed calls.
+set -u
+cli=$1
+fails=0
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+
+expect_error() {  # expect_error NAME-IN-MESSAGE ARGS...
+  local name=$1; shift
+  "$cli" "$@" >"$tmp/out" 2>"$tmp/err"
+  local rc=$?
+  local lines; lines=$(wc -l <"$tmp/err")
+  if [[ $rc -ne 2 || -s "$tmp/out" || $lines -ne 1 ]] || ! grep -q -- "$name" "$tmp/err"; then
+    echo "FAIL: dfchaos $* -> rc=$rc, stdout $(wc -c <"$tmp/out") bytes, stderr $lines lines: $(head -c 300 "$tmp/err")"
+    fails=$((fails + 1))
+  else
+    echo "ok:   dfchaos $* -> $(cat "$tmp/err")"
+  fi
+}
+expect_ok() {  # expect_ok HEADER-REGEX ARGS...
+  local pat=$1; shift
+  if ! "$cli" "$@" >"$tmp/out" 2>"$tmp/err" || ! head -n 3 "$tmp/out" | grep -qE "$pat"; then
+    echo "FAIL: dfchaos $* should succeed with /$pat/: $(head -c 300 "$tmp/err")"
+    fails=$((fails + 1))
+  else
+    echo "ok:   dfchaos $*"
+  fi
+}
+
+P=(--a 1 --b 0.01 --q 0.85)
+expect_error "--a"    map --a x --b 0.01 --q 0.85 --theta 4
+expect_error "a:"     map --a nan --b 0.01 --q 0.85 --theta 4
+expect_error "a:"     map --a 0 --b 0.01 --q 0.85 --theta 4
+expect_error "a:"     map --a -1 --b 0.01 --q 0.85 --theta 4
+expect_error "a:"     map --a inf --b 0.01 --q 0.85 --theta 4
+expect_error "b:"     map --a 1 --b 0 --q 0.85 --theta 4
+expect_error "b:"     map --a 1 --b 0.5 --q 0.85 --theta 4
+expect_error "b:"     orbit --a 1 --b 0.7 --q 0.85 --theta0 4 --steps 3
+expect_error "q:"     map --a 1 --b 0.3 --q 0.5 --theta 4
+expect_error "q:"     map --a 1 --b 0.01 --q -2 --theta 4
+expect_error "theta:" map "${P[@]}" --theta 1.0
+expect_error "theta:" map "${P[@]}" --theta 4.0 7.0
+expect_error "theta:" map "${P[@]}" --theta nan
+expect_error "theta:" orbit "${P[@]}" --theta0 6.5 --steps 3
+expect_error "theta"  map "${P[@]}"
+expect_error "--theta" map "${P[@]}" --theta
+expect_error "grid N" map "${P[@]}" --grid 3.5 4 0
+expect_error "grid N" map "${P[@]}" --grid 3.5 4 2.5
+expect_error "grid HI" map "${P[@]}" --grid 4 3.5 10
+expect_error "grid LO" map "${P[@]}" --grid 1 3.5 10
+expect_error "--grid" map "${P[@]}" --grid 3.5 4
+expect_error "steps"  orbit "${P[@]}" --theta0 4 --steps 0
+expect_error "--steps" orbit "${P[@]}" --theta0 4 --steps many
+expect_error "x0:"    simulate "${P[@]}" --x0 1 --y0 0 --v0 0 --t0 0 --t-end 10
+expect_error "t-end:" simulate "${P[@]}" --x0 0 --y0 0 --v0 0 --t0 10 --t-end 0
+expect_error "v0:"    simulate "${P[@]}" --x0 0 --y0 0 --v0 nan --t0 0 --t-end 10
+expect_error "sample:" simulate "${P[@]}" --x0 0 --y0 0 --v0 0 --t0 0 --t-end 10 --sample -1
+expect_error "--t-end" simulate "${P[@]}" --x0 0 --y0 0 --v0 0 --t0 0
+expect_error "frobnicate" frobnicate "${P[@]}"
+expect_error "--bogus" map "${P[@]}" --theta 4 --bogus 1
+expect_error "subcommand" 
+
+expect_ok "^theta	T1	T	scenario	elapsed	penetration$" map "${P[@]}" --theta 3.5 4.5
+expect_ok "^n	theta	scenario	elapsed	penetration	time	y$" orbit "${P[@]}" --theta0 3.5 --steps 5
+expect_ok "^t	phase	before	after	kind" simulate "${P[@]}" --x0 0 --y0 0 --v0 0 --t0 4 --t-end 100 --sample 1
+expect_ok "^quantity	value" info "${P[@]}"
+
+[[ $(wc -l < <("$cli" map "${P[@]}" --grid 3.5 4.5 7)) -eq 8 ]] || { echo "FAIL: --grid N gives N rows"; fails=$((fails + 1)); }
+echo "$((fails == 0 ? 1 : 0)) passed, $fails failed"
+exit $((fails > 0))

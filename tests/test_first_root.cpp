@@ -1,0 +1,119 @@
+// Cross-validation: the certain first-root isolation (roots.hpp) against a dense brute-force scan.
+// An independent, plain-double evaluation of G1 (Eq. 11) on a fine grid, with every local maximum
+// located by bisection on dG1/dt, must show no contact before the computed T1.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "dfchaos/motion.hpp"
+#include "dfchaos/next_hit.hpp"
+#include "test_support.hpp"
+
+using namespace dfchaos;
+
+namespace {
+constexpr int kDraws = 10000;
+constexpr double kGridStep = 0.02;     // brute-force grid (the forcing period is 2 pi)
+constexpr double kMargin = 1e-6;       // points this close before T1 are not checked
+constexpr double kSignTol = 1e-9;      // G1 > kSignTol * scale before T1 would be a missed contact
+constexpr long kMaxPieces = 64;        // root-search work must not grow as b/a shrinks
+
+struct PlainG1 {  // Eq. (11), written out independently of the library, in s = t - theta
+  double a, b, th;
+  double g(double s) const { return b * s * s - a * std::sin(th + s) + a * std::cos(th) * s + a * std::sin(th); }
+  double dg(double s) const { return 2 * b * s - a * std::cos(th + s) + a * std::cos(th); }
+};
+
+/// Maximum of G1 on [s0, s1] where dG1/dt goes from + to -, by bisection on dG1/dt.
+double local_max(const PlainG1& f, double s0, double s1, double& where) {
+  for (int i = 0; i < 60; ++i) {
+    const double m = 0.5 * (s0 + s1);
+    if (f.dg(m) > 0) s0 = m; else s1 = m;
+  }
+  where = 0.5 * (s0 + s1);
+  return f.g(where);
+}
+}  // namespace
+
+TEST(FirstRoot, NoEarlierContactThanT1OnRandomDraws) {
+  test_support::Drawer draws(1e-4, 0.2, 0.5, 1.0);
+  long worst_pieces = 0;
+  int maxima_checked = 0;
+  for (int n = 0; n < kDraws; ++n) {
+    const auto d = draws.next();
+    const Parameters p(1.0, d.b, d.q);
+    const NextHit h = next_hit(p, d.theta);
+    const double s1 = h.theta1 - d.theta;
+    const PlainG1 f{1.0, d.b, d.theta};
+    const double scale = 1.0 + d.b * s1 * s1;  // size of the cancelling terms of G1 at T1
+    ASSERT_GT(s1, 0) << "theta=" << d.theta << " b=" << d.b;
+    ASSERT_NEAR(f.g(s1), 0.0, 1e3 * kSignTol * scale) << "T1 is not a root: theta=" << d.theta << " b=" << d.b;
+    ASSERT_GE(f.dg(s1), -1e3 * kSignTol * scale);
+    worst_pieces = std::max(worst_pieces, h.pieces);
+
+    long long maxima = 0;
+    bool max_near_root = false;
+    double prev_d = f.dg(kGridStep * 1e-3);
+    for (double s = kGridStep; s < s1 - kMargin; s += kGridStep) {
+      const double gs = f.g(s), ds = f.dg(s);
+      ASSERT_LE(gs, kSignTol * scale) << "missed contact at s=" << s << " before T1: theta=" << d.theta << " b=" << d.b;
+      if (prev_d > 0 && ds <= 0) {
+        double where = 0;
+        const double gm = local_max(f, s - kGridStep, s, where);
+        if (where < s1 - kMargin) {
+          ASSERT_LE(gm, kSignTol * scale) << "missed contact at a local maximum s=" << where << ": theta=" << d.theta;
+          ++maxima;
+          ++maxima_checked;
+        } else {
+          max_near_root = true;
+        }
+      }
+      prev_d = ds;
+    }
+    if (!max_near_root) {
+      ASSERT_EQ(h.maxima_before, maxima) << "closed-form count of maxima disagrees: theta=" << d.theta << " b=" << d.b;
+    }
+  }
+  EXPECT_GT(maxima_checked, kDraws);  // the draws do exercise flights with many humps
+  EXPECT_LE(worst_pieces, kMaxPieces);
+}
+
+TEST(FirstRoot, ProgressionEndHasNoEarlierVelocityZero) {
+  test_support::Drawer draws(1e-4, 0.2, 0.5, 1.0, test_support::kSeed + 7);
+  for (int n = 0; n < 2000; ++n) {
+    const auto d = draws.next();
+    const Parameters p(1.0, d.b, d.q);
+    if (!(d.q > 2 * d.b)) continue;
+    const double v0 = 3 * draws.uniform();
+    const ProgressionMotion m(p, Instant::at_phase(d.theta), 0.0, v0);
+    const auto root = first_upcrossing(m.minus_velocity());
+    ASSERT_TRUE(root.has_value());
+    const double s1 = static_cast<double>(root->s);
+    EXPECT_NEAR(m.velocity(root->t), 0.0, 1e-12);
+    for (double s = 1e-3; s < s1 - kMargin; s += kGridStep / 4)
+      ASSERT_GT(v0 + 2 * p.c() * s - (std::cos(d.theta + s) - std::cos(d.theta)), -kSignTol);
+  }
+}
+
+TEST(FirstRoot, WorkIsIndependentOfSmallBOverA) {
+  // Flights last ~ (a/b)|cos theta|, from 10 to 10^6 time units here; the pieces examined must not grow.
+  for (double ba : {1e-1, 1e-2, 1e-3, 1e-4, 1e-5, 1e-6}) {
+    const Parameters p(1.0, ba, 0.85);
+    long worst = 0;
+    for (int i = 0; i < 200; ++i) {
+      const double th = *p.t2() + (*p.t3() - *p.t2()) * (i + 0.5) / 200;
+      worst = std::max(worst, next_hit(p, th).pieces);
+    }
+    EXPECT_LE(worst, kMaxPieces) << "b/a=" << ba;
+  }
+}
+
+TEST(FirstRoot, RegressionStartAtRestExactlyAtT2IsNotARoot) {
+  // Bug fixed: at theta = t2 the inflection phase computed from f'' differed from t2 by an ulp, and
+  // the sliver piece between them was taken for an immediate contact (T1 = t2).
+  for (double ba : {1e-3, 1e-2, 0.1, 0.3}) {
+    const Parameters p(1.0, ba, 0.9);
+    const NextHit h = next_hit(p, *p.t2());
+    EXPECT_GT(h.theta1 - *p.t2(), 1.0) << "b/a=" << ba;
+  }
+}

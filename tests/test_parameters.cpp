@@ -1,0 +1,109 @@
+// Unit tests: vartheta0 of Eq. (1), the switching phases, parameter validation.
+#include <gtest/gtest.h>
+
+#include <cfloat>
+#include <cmath>
+
+#include "dfchaos/errors.hpp"
+#include "dfchaos/parameters.hpp"
+
+using namespace dfchaos;
+
+namespace {
+constexpr double kResidualTol = 1e-15;   // |Eq. (1) residual| at the computed vartheta0
+constexpr double kUlpTol = 2 * DBL_EPSILON;  // relative distance to the long-double reference
+
+/// Independent reference: bisection in long double (64-bit mantissa) on pi - x - cot(x/2).
+long double vartheta0_long_double() {
+  const long double pil = 3.141592653589793238462643383279502884L;
+  long double lo = 0.1L, hi = pil / 2;
+  for (int i = 0; i < 200; ++i) {
+    const long double m = 0.5L * (lo + hi);
+    if (pil - m - 1.0L / std::tan(0.5L * m) < 0) lo = m; else hi = m;
+  }
+  return 0.5L * (lo + hi);
+}
+}  // namespace
+
+TEST(Vartheta0, ResidualOfEq1IsBelowTolerance) {
+  EXPECT_LT(std::fabs(eq1_residual(vartheta0())), kResidualTol);
+}
+
+TEST(Vartheta0, AgreesWithLongDoubleBisection) {
+  const long double ref = vartheta0_long_double();
+  EXPECT_LE(std::fabs(static_cast<long double>(vartheta0()) - ref), kUlpTol * ref);
+}
+
+TEST(Vartheta0, ResidualChangesSignOnlyOnce) {
+  // Eq. (1)'s residual increases on (0, pi/2]: sampled, it is monotone and crosses zero once.
+  int crossings = 0;
+  double prev = eq1_residual(1e-3);
+  for (int i = 1; i <= 10000; ++i) {
+    const double x = 1e-3 + (M_PI / 2 - 1e-3) * i / 10000.0;
+    const double r = eq1_residual(x);
+    EXPECT_GT(r, prev);
+    if ((prev < 0) != (r < 0)) ++crossings;
+    prev = r;
+  }
+  EXPECT_EQ(crossings, 1);
+}
+
+TEST(Vartheta0, MatchesPaperDigits) {
+  // The paper prints 0.81047 and 0.724611; both must be the correctly rounded values.
+  EXPECT_NEAR(vartheta0(), 0.81047, 0.5e-5);
+  EXPECT_NEAR(std::sin(vartheta0()), 0.724611, 0.5e-6);
+}
+
+TEST(Phases, AreZerosOfTheForce) {
+  for (double b : {1e-5, 1e-3, 0.05, 0.2, 0.49})
+    for (double q : {0.3, 0.75, 0.95}) {
+      const Parameters p(1.0, b, q);
+      ASSERT_TRUE(p.t2() && p.t3());
+      EXPECT_NEAR(p.F(*p.t2()), 0.0, 1e-15);
+      EXPECT_NEAR(p.F(*p.t3()), 0.0, 1e-15);
+      EXPECT_LT(p.F(0.5 * (*p.t2() + *p.t3())), 0.0);  // F < 0 inside (t2, t3)
+      ASSERT_TRUE(p.t0() && p.t1());
+      EXPECT_NEAR(p.F(*p.t0()), q, 1e-15);
+      EXPECT_NEAR(p.F(*p.t1()), q, 1e-15);
+    }
+}
+
+TEST(Phases, UndefinedOutsideTheirRange) {
+  EXPECT_FALSE(Parameters(1.0, 0.5, 0.5).t2());   // 2b = a: F >= 0
+  EXPECT_FALSE(Parameters(1.0, 0.1, 1.3).t0());   // q - 2b >= a: F never exceeds q
+  EXPECT_THROW(Parameters(1.0, 0.6, 0.8).t2_required(), InvalidParameter);
+}
+
+TEST(Parameters, ScaleInvariancePhasesDependOnRatiosOnly) {
+  const Parameters p(1.0, 0.01, 0.85), r(7.5, 0.075, 6.375);
+  EXPECT_NEAR(*p.t0(), *r.t0(), 1e-14);
+  EXPECT_NEAR(*p.t2(), *r.t2(), 1e-14);
+  EXPECT_NEAR(*p.t3(), *r.t3(), 1e-14);
+}
+
+TEST(Parameters, RejectsNonFiniteAndNonPositive) {
+  for (double bad : std::initializer_list<double>{0.0, -1.0, NAN, INFINITY, -INFINITY}) {
+    EXPECT_THROW(Parameters(bad, 0.1, 0.8), InvalidParameter);
+    EXPECT_THROW(Parameters(1.0, bad, 0.8), InvalidParameter);
+    EXPECT_THROW(Parameters(1.0, 0.1, bad), InvalidParameter);
+  }
+  try {
+    Parameters(1.0, -0.1, 0.8);
+    FAIL();
+  } catch (const InvalidParameter& e) {
+    EXPECT_EQ(e.parameter(), "b");
+    EXPECT_NE(std::string(e.what()).find("b:"), std::string::npos);
+  }
+}
+
+TEST(Parameters, AssumptionsReportEq2AndEq23) {
+  const double s0 = std::sin(vartheta0());
+  EXPECT_TRUE(Parameters(1.0, 0.01, 0.85).assumptions().eq2);
+  EXPECT_FALSE(Parameters(1.0, 0.01, s0 - 1e-9).assumptions().eq2);
+  EXPECT_TRUE(Parameters(1.0, 0.01, s0 + 1e-9).assumptions().eq2);
+  EXPECT_TRUE(Parameters(1.0, 0.01, 0.5).assumptions().eq23);
+  EXPECT_FALSE(Parameters(1.0, 0.01, 1.0).assumptions().eq23);
+  EXPECT_FALSE(Parameters(1.0, 0.6, 0.9).assumptions().b_in_range);
+  EXPECT_FALSE(Parameters(1.0, 0.3, 0.5).assumptions().progression_ends);
+  EXPECT_THROW(Parameters(1.0, 0.3, 0.5).require_return_map(), InvalidParameter);
+}
