@@ -130,3 +130,19 @@ TEST(Simulator, BoundsAndBadInput) {
   many.sample_dt = 1e-9;
   EXPECT_THROW(simulate(p, 0, 0, 0, 0, 1e3, many), InvalidParameter);  // too many samples
 }
+
+TEST(Simulator, RegressionFreeStartAtRestAtT2WithTinyHorizonIsNotAZenoLoop) {
+  // Bug fixed: the last step of a run ended, 1e-9 before t-end, with a switch to free flight at
+  // rest exactly at t2. There F = 0 and the gap is O(u^3), below rounding noise; the search took
+  // it for an immediate contact, the grazing rule restarted free flight at the same instant, and
+  // the event limit was hit. The direction of departure now comes from the Taylor coefficients.
+  const Parameters p(1.0, 0.1, 0.95);
+  SimulationOptions o;
+  o.max_events = 12;
+  EXPECT_NO_THROW(simulate(p, 0.0, 0.0, 0.0, 3.7483043425574754, 15.909321189739297, o));
+  const Simulation s = simulate(p, 0.0, 0.0, 0.0, *p.t2(), *p.t2() + 1e-9, o);
+  EXPECT_TRUE(s.events.empty());
+  // And a contact at rest exactly at t3, where F rises through 0, is a stop at once.
+  const Simulation t = simulate(p, 0.0, 0.0, 0.0, *p.t3(), *p.t3() + 1.0, o);
+  EXPECT_EQ(t.initial_regime, Regime::Stop);
+}

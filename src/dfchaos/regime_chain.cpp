@@ -16,6 +16,7 @@ Regime regime_at_contact(const Parameters& p, const Instant& t, double v) {
   if (v > 0) return Regime::Progression;
   const double F = p.F(t.phase);
   if (F > p.q() || (p.t0() && t.phase == *p.t0())) return Regime::Progression;
+  if (p.t3() && t.phase == *p.t3()) return Regime::Stop;  // F = 0 rising: F rounds to either sign here
   if (F < 0 || (p.t2() && t.phase == *p.t2())) return Regime::Free;
   return Regime::Stop;
 }

@@ -50,6 +50,8 @@ MapStep return_map_step(const Parameters& p, double theta) {
     if (!tr) throw std::logic_error("return_map_step: a regime of the map never ends (a bug)");
     step.pieces += tr->pieces;
     if (tr->from == Regime::Progression) step.penetration += tr->y - s.y;
+    if (n == 0) step.theta2 = tr->t;
+    if (n == 1 && tr->from == Regime::Progression && step.progressions == 1) step.theta2 = tr->t;
     if (tr->from == Regime::Stop && tr->to == Regime::Progression && ++restarts_from_t0 >= 2)
       throw GaveUp("return map at theta=" + format_double(theta) + ": no return to free flight (" + p.describe() +
                    "): the progression from rest at t0 stops again before t2, so it repeats every period");

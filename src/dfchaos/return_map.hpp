@@ -30,6 +30,9 @@ const char* scenario_name(Scenario s);  ///< "A", "B", "C", "D", "C'", "D'", "G"
 struct MapStep {
   double theta = 0;            ///< the argument, a phase in \f$[t_2, t_3)\f$
   NextHit hit;                 ///< \f$T_1(\theta)\f$ and the impact velocity (Eq. 11)
+  /// \f$\theta_2\f$: where the first progression stops (first zero of \f$G_2\f$, Eq. 17); equal
+  /// to the hit instant for a grazing or a zero-velocity touch (no progression).
+  Instant theta2;
   double T = 0;                ///< \f$T(\theta) \in [t_2, t_3)\f$
   Instant end;                 ///< \f$\widehat T(\theta)\f$: the instant of the switch to free flight
   double elapsed = 0;          ///< \f$\widehat T(\theta) - \theta\f$

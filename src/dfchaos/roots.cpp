@@ -104,13 +104,36 @@ std::optional<UpCrossing> first_upcrossing(const QuadraticPlusHarmonic& f, const
 
   Instant cursor = f.origin;
   long double s_cursor = 0;
-  bool at_origin = true;
+  bool left_known_negative = false;
   long pieces = 0;
+  if (f.starts_at_rest) {
+    // f(origin) = 0 and the slope is O(u) or smaller: evaluations near the origin are below
+    // rounding noise. The direction is decided by the first non-negligible Taylor coefficient.
+    const double phi = f.origin.phase;
+    const long double tiny = 64 * 2.2e-16L * (R + 2 * std::fabs(f.alpha) + std::fabs(f.beta) + 1);
+    const long double c1 = f.slope_at(0, phi), c2 = f.curvature_at(phi);
+    const long double c3 = static_cast<long double>(-f.A * std::cos(phi) + f.B * std::sin(phi));
+    const long double dir = std::fabs(c1) > tiny ? c1 : (std::fabs(c2) > tiny ? c2 : c3);
+    if (dir > 0) {  // f rises at once: the root is the origin itself (e.g. contact at rest at t3)
+      UpCrossing r;
+      r.t = f.origin;
+      r.s = 0;
+      r.slope = 0;
+      r.pieces = 0;
+      return r;
+    }
+    // f < 0 on (0, kRestOffset]: the Taylor terms dominate there by orders of magnitude.
+    constexpr long double kRestOffset = 1e-7L;
+    if (limit < kRestOffset) return std::nullopt;
+    cursor = advance(f.origin, kRestOffset);
+    s_cursor = elapsed(f.origin, cursor);
+    left_known_negative = true;
+  }
   while (true) {
     if (we > 0 && s_cursor >= ws && s_cursor < we) {
       cursor = advance(f.origin, we);
       s_cursor = elapsed(f.origin, cursor);
-      at_origin = false;
+      left_known_negative = false;
     }
     if (s_cursor >= limit) break;
     if (++pieces > limits.max_pieces)
@@ -129,9 +152,8 @@ std::optional<UpCrossing> first_upcrossing(const QuadraticPlusHarmonic& f, const
     const double L = static_cast<double>(elapsed(cursor, end));
     const double phi0 = cursor.phase;
     const long double s0 = s_cursor;
-    const bool rest = at_origin && f.starts_at_rest;
-    auto val = [&](double u) -> long double { return (rest && u == 0) ? 0.0L : f.value_at(s0 + u, phi0 + u); };
-    auto der = [&](double u) -> long double { return (rest && u == 0) ? 0.0L : f.slope_at(s0 + u, phi0 + u); };
+    auto val = [&](double u) -> long double { return f.value_at(s0 + u, phi0 + u); };
+    auto der = [&](double u) -> long double { return f.slope_at(s0 + u, phi0 + u); };
     auto curv = [&](double u) -> long double { return f.curvature_at(phi0 + u); };
 
     if (L > 0) {
@@ -151,7 +173,7 @@ std::optional<UpCrossing> first_upcrossing(const QuadraticPlusHarmonic& f, const
         if (!(dl + dr > 0) || u1 <= u0) continue;  // f decreasing (or constant) here: no crossing from below
         if (val(u1) < 0) continue;
         double u;
-        if (val(u0) >= 0) u = u0;  // only at a start that is not strictly below zero
+        if (!(u0 == 0 && left_known_negative) && val(u0) >= 0) u = u0;  // a start not strictly below zero
         else u = solve_increasing(val, der, u0, u1, phi0);
         UpCrossing r;
         r.t = advance(cursor, u);
@@ -163,7 +185,7 @@ std::optional<UpCrossing> first_upcrossing(const QuadraticPlusHarmonic& f, const
     }
     cursor = end;
     s_cursor = s_end;
-    at_origin = false;
+    left_known_negative = false;
   }
   if (limit_is_bound && limit < limits.horizon)
     throw std::logic_error("first_upcrossing: no root found before the guaranteed bound (a bug)");

@@ -37,9 +37,11 @@ struct QuadraticPlusHarmonic {
   Instant origin;
   long double alpha = 0, beta = 0, gamma = 0;
   double A = 0, B = 0;
-  /// True when \f$f(\mathrm{origin}) = f'(\mathrm{origin}) = 0\f$ holds exactly by construction
-  /// (a motion starting at rest at the contact). The search then uses these exact values instead
-  /// of their rounded evaluations, so that a start at rest is never mistaken for a root.
+  /// True when \f$f(\mathrm{origin}) = 0\f$ holds exactly by construction (a motion starting at rest
+  /// at the contact). Near such an origin \f$f\f$ is \f$O(u^2)\f$ or \f$O(u^3)\f$, below rounding
+  /// noise; the search then takes the direction of departure from the first non-negligible Taylor
+  /// coefficient \f$f', f'', f'''\f$ at the origin: upward means a root at the origin itself,
+  /// downward means \f$f < 0\f$ on \f$(0, 10^{-7}]\f$ and the scan starts there.
   bool starts_at_rest = false;
 
   /// \f$f\f$ at elapsed time \f$s\f$ whose phase is \f$\varphi\f$.

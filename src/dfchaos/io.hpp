@@ -1,0 +1,118 @@
+/// @file io.hpp
+/// @brief Experiment outputs: TSV tables with a provenance header, claims as JSON, LaTeX table
+/// fragments and macros; all written atomically (temporary file, then rename) only at the end, so
+/// that a failed run leaves no partial file.
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <string>
+#include <utility>
+#include <variant>
+#include <vector>
+
+namespace dfchaos {
+
+/// Writes `content` to `path` through `path.tmp` and an atomic rename; creates parent folders.
+void write_atomically(const std::filesystem::path& path, const std::string& content);
+
+/// A minimal JSON value (null, bool, number, string, array, object with ordered keys).
+class Json {
+ public:
+  Json() = default;
+  Json(bool b) : v_(b) {}
+  Json(double d) : v_(d) {}
+  Json(int i) : v_(static_cast<long long>(i)) {}
+  Json(long i) : v_(static_cast<long long>(i)) {}
+  Json(long long i) : v_(i) {}
+  Json(const char* s) : v_(std::string(s)) {}
+  Json(std::string s) : v_(std::move(s)) {}
+  static Json array();
+  static Json object();
+  /// Sets a key of an object (insertion order is kept).
+  Json& set(const std::string& key, Json value);
+  /// Appends to an array.
+  Json& push(Json value);
+  /// Serialises; non-finite numbers become null; doubles in %.17g.
+  std::string dump(int indent = 2) const;
+
+ private:
+  using Array = std::vector<Json>;
+  using Object = std::vector<std::pair<std::string, Json>>;
+  std::variant<std::nullptr_t, bool, double, long long, std::string, std::shared_ptr<Array>, std::shared_ptr<Object>> v_ =
+      nullptr;
+  void dump_to(std::string& out, int indent, int depth) const;
+};
+
+/// A table cell: number, integer or text.
+using Cell = std::variant<double, long long, std::string>;
+
+/// A tab-separated table: one header line of column names, then rows; doubles in %.17g.
+class Table {
+ public:
+  explicit Table(std::vector<std::string> columns);
+  /// Appends a row. @throws std::logic_error if the number of cells differs from the columns.
+  Table& row(std::vector<Cell> cells);
+  std::size_t rows() const { return rows_.size(); }
+  std::string render() const;
+
+ private:
+  std::vector<std::string> columns_;
+  std::vector<std::vector<Cell>> rows_;
+};
+
+/// One claim of the paper as checked by an experiment.
+struct Claim {
+  std::string id;          ///< short stable identifier, e.g. "eq1.unique"
+  std::string reference;   ///< where in the paper, e.g. "Eq. (1)", "Lemma 2"
+  std::string statement;   ///< the claim, in our words
+  Json parameters = Json::object();  ///< the parameters it was checked at
+  Json evidence = Json::object();    ///< the numbers the verdict rests on
+  bool holds = false;      ///< the computed verdict
+  bool expected = true;    ///< whether the experiment asserts that it holds (a failure is then an error)
+};
+
+/// Collects everything an experiment produces and writes it under an output root:
+/// `data/<name>[-part].tsv`, `tables/<file>.tex`, `tables/<name>-macros.tex`, `claims/<name>.json`.
+class ExperimentOutput {
+ public:
+  ExperimentOutput(std::string name, std::filesystem::path root);
+
+  /// Records a run parameter (goes into every header and the claims file).
+  void parameter(const std::string& key, const std::string& value);
+  void parameter(const std::string& key, double value);
+
+  /// Adds a data table, written to data/<name>.tsv (part empty) or data/<name>-<part>.tsv.
+  void table(const std::string& part, const Table& t, const std::string& description);
+  /// Adds a LaTeX fragment, written to tables/<file>.tex.
+  void latex(const std::string& file, const std::string& tex);
+  /// Adds a macro \\dfc<Name>{value} (Name: letters only), written to tables/<name>-macros.tex.
+  void macro(const std::string& name, const std::string& value);
+  void macro(const std::string& name, double value, int significant_digits);
+  /// Adds a claim.
+  void claim(Claim c);
+
+  /// Writes all files; prints one line per claim to stderr. @return 0 when every claim marked
+  /// `expected` holds, 1 otherwise (after saying which failed, in one line each).
+  int finish() const;
+
+  const std::string& name() const { return name_; }
+
+ private:
+  std::string name_;
+  std::filesystem::path root_;
+  std::vector<std::pair<std::string, std::string>> parameters_;
+  std::vector<std::pair<std::filesystem::path, std::string>> files_;
+  std::vector<std::pair<std::string, std::string>> macros_;
+  std::vector<Claim> claims_;
+  std::string header() const;
+};
+
+/// Formats a number with the given count of significant digits (for macros and tables).
+std::string format_significant(double x, int digits);
+
+/// The compiler that built dfchaos (for provenance).
+std::string compiler_id();
+
+}  // namespace dfchaos
