@@ -75,3 +75,19 @@ TEST_P(GrazingPoints, AreTangenciesAndMatchJumpsOfADenseScan) {
 }
 
 INSTANTIATE_TEST_SUITE_P(SeveralBOverA, GrazingPoints, ::testing::Values(0.2, 0.1, 0.05, 0.02));
+
+TEST(NextHit, DiscontinuitiesAreTheSymmetricTangenciesInClosedForm) {
+  // Independent cross-check of grazing_points: on [t2, 3pi/2] every discontinuity found by the
+  // label scan, bisection and Newton solves 2z - (a/b) cos z = (2k+1) pi, and vice versa.
+  for (double ba : {0.05, 0.01, 0.003}) {
+    const Parameters p(1.0, ba, 0.85);
+    const double lo = *p.t2() + 1e-9, hi = 1.5 * M_PI;
+    const auto z = grazing_points(p, lo, hi, 500);
+    const auto c = symmetric_tangencies(p, lo, hi);
+    ASSERT_EQ(z.size(), c.size()) << "b/a=" << ba;
+    for (std::size_t k = 0; k < z.size(); ++k) {
+      EXPECT_NEAR(z[k].z, c[k].z, 1e-12);
+      EXPECT_NEAR(z[k].t1_right - z[k].z, c[k].flight, 1e-9 * c[k].flight);
+    }
+  }
+}

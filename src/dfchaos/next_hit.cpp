@@ -146,4 +146,29 @@ std::vector<GrazingPoint> grazing_points(const Parameters& p, double lo, double 
   return out;
 }
 
+std::vector<SymmetricTangency> symmetric_tangencies(const Parameters& p, double lo, double hi) {
+  require_theta(p, lo, "lo");
+  require_theta(p, hi, "hi");
+  hi = std::min(hi, 1.5 * pi);  // s = -(a/b) cos z > 0 needs cos z < 0
+  std::vector<SymmetricTangency> out;
+  if (!(lo < hi)) return out;
+  const double r = p.a() / p.b();
+  auto h = [&](double th) { return 2 * th - r * std::cos(th); };
+  // h decreases on (t2, t3): odd multiples of pi between h(hi) and h(lo).
+  const long long k_lo = static_cast<long long>(std::ceil((h(hi) / pi - 1) / 2));
+  const long long k_hi = static_cast<long long>(std::floor((h(lo) / pi - 1) / 2));
+  for (long long k = k_hi; k >= k_lo; --k) {
+    const double target = (2 * k + 1) * pi;
+    double a = lo, b = hi;  // h(a) >= target >= h(b)
+    for (int it = 0; it < 200 && b - a > 2 * DBL_EPSILON * b; ++it) {
+      const double m = 0.5 * (a + b);
+      if (h(m) >= target) a = m; else b = m;
+    }
+    const double z = 0.5 * (a + b);
+    if (z < lo || z > hi) continue;
+    out.push_back(SymmetricTangency{z, -r * std::cos(z), k});
+  }
+  return out;
+}
+
 }  // namespace dfchaos

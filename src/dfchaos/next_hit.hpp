@@ -70,4 +70,20 @@ struct GrazingPoint {
 /// @throws InvalidParameter if the interval is not inside \f$[t_2, t_3)\f$ or scan < 2.
 std::vector<GrazingPoint> grazing_points(const Parameters& p, double lo, double hi, int scan = 2000);
 
+/// The tangencies of the symmetric family, in closed form. Eliminating \f$b\f$ between \f$G_1 = 0\f$
+/// and \f$\partial_t G_1 = 0\f$ (Eq. 14) with \f$s = \theta_1 - \theta\f$ gives
+/// \f$\cos\frac{\theta_1+\theta}{2}\,\bigl(s\cos\frac{s}{2} - 2\sin\frac{s}{2}\bigr) = 0\f$.
+/// The first factor vanishes when \f$\theta_1 + \theta \equiv \pi \pmod{2\pi}\f$; then
+/// \f$\cos\theta_1 = -\cos\theta\f$ exactly (Eq. 16 with no remainder), \f$s = -(a/b)\cos\theta\f$, and
+/// \f$\theta\f$ solves \f$h(\theta) = 2\theta - (a/b)\cos\theta = (2k+1)\pi\f$. Since
+/// \f$h' = 2 + (a/b)\sin\theta < 0\f$ on \f$(t_2, t_3)\f$ there is one solution per odd multiple of
+/// \f$\pi\f$ in \f$h([lo, hi])\f$, found here by bisection. Only \f$\cos\theta < 0\f$ gives \f$s > 0\f$.
+/// Whether each is a *first* contact (a discontinuity of \f$T_1\f$) is for the caller to check.
+struct SymmetricTangency {
+  double z = 0;       ///< the start phase
+  double flight = 0;  ///< \f$s = -(a/b)\cos z\f$
+  long long k = 0;    ///< \f$h(z) = (2k+1)\pi\f$
+};
+std::vector<SymmetricTangency> symmetric_tangencies(const Parameters& p, double lo, double hi);
+
 }  // namespace dfchaos
