@@ -1,0 +1,78 @@
+/// @file covering.hpp
+/// @brief Continuity branches of \f$T\f$ and covering segments: Lemma 4 (Eq. 18).
+///
+/// **Where T can jump.** On a continuity branch of \f$T_1\f$ (between consecutive grazing points),
+/// the end \f$\theta_2\f$ of the first progression moves continuously, except where the
+/// progression velocity touches 0 at phase \f$t_0\f$ — and there \f$T = t_2\f$ on both sides while
+/// Lemma 1 holds. \f$T = \theta_2 \bmod 2\pi\f$ while that phase is in \f$[t_2, t_3)\f$ (scenario A)
+/// and \f$T = t_2\f$ in scenarios B and C, which join continuously at \f$\theta_2 \equiv t_2\f$. So
+/// \f$T\f$ jumps only (i) at a discontinuity of \f$T_1\f$, (ii) where \f$\theta_2\f$'s phase crosses
+/// \f$t_3\f$ (A against a stop), and (iii) between scenario D, where \f$T\f$ is the constant end phase
+/// of the progression from \f$t_0\f$, and the rest. The ContinuityLabel changes at each of these:
+/// it is (\f$T_1\f$ branch, number of phases \f$t_3\f$ passed before \f$\theta_2\f$, D or not).
+///
+/// **Covering segments.** A closed segment \f$J\f$ on which \f$T\f$ is continuous and which holds a
+/// point with \f$T = t_2\f$ and a point with \f$T \ge 3\pi/2\f$ satisfies \f$T(J) \supseteq [t_2, 3\pi/2]\f$
+/// (intermediate values; \f$T \ge t_2\f$ everywhere). They are searched for among grid points of
+/// one label run — a fixed number of points in each continuity branch of \f$T_1\f$, whose ends are
+/// known in closed form — and each one found is re-checked on a finer grid inside it.
+#pragma once
+
+#include <vector>
+
+#include "dfchaos/parameters.hpp"
+#include "dfchaos/return_map.hpp"
+
+namespace dfchaos {
+
+/// Label of the continuity branch of \f$T\f$ containing \f$\theta\f$ (see the file comment).
+struct ContinuityLabel {
+  long long t1_branch = 0;  ///< NextHit::maxima_before
+  long long t3_passed = 0;  ///< \f$\lfloor(\theta_2 - t_3)/2\pi\rfloor\f$, turns counted from \f$\theta\f$
+  bool scenario_d = false;  ///< scenario D or D' (T is the constant end of the progression from t0)
+  friend bool operator==(const ContinuityLabel&, const ContinuityLabel&) = default;
+};
+
+/// The label together with the map step it was computed from.
+struct LabelledStep {
+  MapStep step;
+  ContinuityLabel label;
+};
+
+/// The continuity label at \f$\theta\f$.
+LabelledStep continuity_label(const Parameters& p, double theta);
+
+/// A closed segment on which \f$T\f$ is continuous and whose image contains \f$[t_2, \text{top}]\f$.
+struct CoveringSegment {
+  double lo = 0, hi = 0;        ///< the segment
+  double theta_at_t2 = 0;       ///< an end where \f$T = t_2\f$
+  double theta_at_top = 0;      ///< an end where \f$T \ge\f$ top
+  double T_at_top = 0;
+  ContinuityLabel label;
+  bool verified = false;        ///< labels constant, and no T-jump on the fine grid inside
+};
+
+/// Options of the covering search.
+struct CoveringSearch {
+  int scan = 48;                ///< at least this many grid points per continuity branch of T1
+  int uniform = 8000;           ///< and at least the density of this many points spread over [lo, hi]
+  int verify = 400;             ///< fine-grid points inside each segment found
+  int refine = 32;              ///< local points on each side where T comes within 5% of t2 (narrow B arcs)
+  int max_segments = 0;         ///< stop after this many verified segments (0: find all)
+};
+
+/// Disjoint covering segments of \f$[t_2, \text{top}]\f$ inside \f$[lo, hi]\f$, in ascending order.
+/// @throws InvalidParameter unless the map is defined and \f$t_2 \le lo < hi < t_3\f$.
+std::vector<CoveringSegment> covering_segments(const Parameters& p, double lo, double hi, double top,
+                                               const CoveringSearch& search = {});
+
+/// Lemma 4's conclusion at one parameter set: two disjoint closed segments of \f$[t_2, 3\pi/2]\f$,
+/// each with \f$T\f$ continuous and \f$T(J_i) \supseteq [t_2, 3\pi/2]\f$.
+struct Lemma4Covering {
+  bool holds = false;
+  CoveringSegment J0, J1;       ///< the two leftmost verified segments (when holds)
+  int segments_found = 0;       ///< verified segments found (at most search.max_segments if set)
+};
+Lemma4Covering lemma4_covering(const Parameters& p, const CoveringSearch& search = {});
+
+}  // namespace dfchaos
