@@ -39,7 +39,9 @@ MapStep return_map_step(const Parameters& p, double theta) {
   p.require_return_map();
   MapStep step;
   step.theta = theta;
-  step.hit = next_hit(p, theta);  // validates theta
+  const double t2 = p.t2_required(), t3 = p.t3_required();
+  if (!std::isfinite(theta) || theta < t2 || theta >= t3)
+    throw InvalidParameter("theta", "t2 <= theta < t3 = [" + format_double(t2) + ", " + format_double(t3) + ")", theta);
 
   MechanicalState s{Instant::at_phase(theta), Regime::Free, 0.0, 0.0, 0.0};
   step.chain = "f";
@@ -50,7 +52,14 @@ MapStep return_map_step(const Parameters& p, double theta) {
     if (!tr) throw std::logic_error("return_map_step: a regime of the map never ends (a bug)");
     step.pieces += tr->pieces;
     if (tr->from == Regime::Progression) step.penetration += tr->y - s.y;
-    if (n == 0) step.theta2 = tr->t;
+    if (n == 0) {  // the first contact is T1 (Eq. 11): the same root search as next_hit()
+      step.theta2 = tr->t;
+      step.hit.t1 = tr->t;
+      step.hit.theta1 = tr->t.value();
+      step.hit.hit_velocity = tr->v_before;
+      step.hit.maxima_before = maxima_between(p, theta, tr->t);
+      step.hit.pieces = tr->pieces;
+    }
     if (n == 1 && tr->from == Regime::Progression && step.progressions == 1) step.theta2 = tr->t;
     if (tr->from == Regime::Stop && tr->to == Regime::Progression && ++restarts_from_t0 >= 2)
       throw GaveUp("return map at theta=" + format_double(theta) + ": no return to free flight (" + p.describe() +

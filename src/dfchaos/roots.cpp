@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "dfchaos/errors.hpp"
 
@@ -154,7 +155,18 @@ std::optional<UpCrossing> first_upcrossing(const QuadraticPlusHarmonic& f, const
     const long double s0 = s_cursor;
     auto val = [&](double u) -> long double { return f.value_at(s0 + u, phi0 + u); };
     auto der = [&](double u) -> long double { return f.slope_at(s0 + u, phi0 + u); };
-    auto curv = [&](double u) -> long double { return f.curvature_at(phi0 + u); };
+    // Value and slope, or slope and curvature, from one sine-cosine evaluation.
+    auto val_der = [&](double u) {
+      const double sn = std::sin(phi0 + u), cs = std::cos(phi0 + u);
+      const long double s = s0 + u;
+      return std::pair<long double, long double>{(f.alpha * s + f.beta) * s + f.gamma + static_cast<long double>(f.A * sn + f.B * cs),
+                                                 2 * f.alpha * s + f.beta + static_cast<long double>(f.A * cs - f.B * sn)};
+    };
+    auto der_curv = [&](double u) {
+      const double sn = std::sin(phi0 + u), cs = std::cos(phi0 + u);
+      return std::pair<long double, long double>{2 * f.alpha * (s0 + u) + f.beta + static_cast<long double>(f.A * cs - f.B * sn),
+                                                 2 * f.alpha - static_cast<long double>(f.A * sn + f.B * cs)};
+    };
 
     if (L > 0) {
       const long double d0 = der(0), d1 = der(L);
@@ -162,8 +174,13 @@ std::optional<UpCrossing> first_upcrossing(const QuadraticPlusHarmonic& f, const
       int nsub = 1;
       if ((d0 > 0 && d1 < 0) || (d0 < 0 && d1 > 0)) {
         // f' is monotone on the piece: its single zero m splits it into two monotone parts.
-        const double m = d0 > 0 ? solve_increasing([&](double u) { return -der(u); }, [&](double u) { return -curv(u); }, 0, L, phi0)
-                                : solve_increasing(der, curv, 0, L, phi0);
+        const double m = d0 > 0 ? solve_increasing(
+                                      [&](double u) {
+                                        const auto [d, c] = der_curv(u);
+                                        return std::pair<long double, long double>{-d, -c};
+                                      },
+                                      0, L, phi0, -d0, -d1)
+                                : solve_increasing(der_curv, 0, L, phi0, d0, d1);
         sub[1] = m;
         nsub = 2;
       }
@@ -171,10 +188,12 @@ std::optional<UpCrossing> first_upcrossing(const QuadraticPlusHarmonic& f, const
         const double u0 = sub[i], u1 = sub[i + 1];
         const long double dl = (i == 0) ? d0 : 0.0L, dr = (i + 1 == nsub) ? d1 : 0.0L;
         if (!(dl + dr > 0) || u1 <= u0) continue;  // f decreasing (or constant) here: no crossing from below
-        if (val(u1) < 0) continue;
+        if (val(u1) < 0) continue;  // (evaluated twice when it is a root bracket: cheap next to the solve)
         double u;
-        if (!(u0 == 0 && left_known_negative) && val(u0) >= 0) u = u0;  // a start not strictly below zero
-        else u = solve_increasing(val, der, u0, u1, phi0);
+        const long double f1 = val(u1);
+        const long double f0 = (u0 == 0 && left_known_negative) ? -1.0L : val(u0);
+        if (f0 >= 0) u = u0;  // a start not strictly below zero
+        else u = solve_increasing(val_der, u0, u1, phi0, f0, f1);
         UpCrossing r;
         r.t = advance(cursor, u);
         r.s = s0 + u;

@@ -81,11 +81,13 @@ struct SearchLimits {
 std::optional<UpCrossing> first_upcrossing(const QuadraticPlusHarmonic& f, const SearchLimits& limits = {});
 
 /// Safeguarded Newton iteration for an increasing function on \f$[lo, hi]\f$ with
-/// \f$g(lo) < 0 \le g(hi)\f$: Newton steps inside the bracket, bisection otherwise and at every
-/// fourth step. Converges to a bracket of width \f$4\epsilon(|x_0| + |hi| + 1)\f$ where
-/// \f$x_0\f$ is the offset scale. @throws std::logic_error if 400 iterations do not suffice.
-template <class G, class DG>
-double solve_increasing(G&& g, DG&& dg, double lo, double hi, double scale);
+/// \f$g(lo) < 0 \le g(hi)\f$ (end values g_lo, g_hi, used for a secant start); `gd(x)` returns the
+/// pair \f$(g(x), g'(x))\f$. Newton steps inside the bracket, bisection when a step would leave it
+/// or fails to halve the previous one (as in Numerical Recipes' rtsafe). Converges to a bracket of
+/// width \f$4\epsilon(|x_0| + |hi| + 1)\f$ where \f$x_0\f$ is the offset scale.
+/// @throws std::logic_error if 400 iterations do not suffice.
+template <class GD>
+double solve_increasing(GD&& gd, double lo, double hi, double scale, long double g_lo, long double g_hi);
 
 }  // namespace dfchaos
 

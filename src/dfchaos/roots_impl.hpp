@@ -8,25 +8,33 @@
 
 namespace dfchaos {
 
-template <class G, class DG>
-double solve_increasing(G&& g, DG&& dg, double lo, double hi, double scale) {
+template <class GD>
+double solve_increasing(GD&& gd, double lo, double hi, double scale, long double g_lo, long double g_hi) {
   const double tol = 4 * DBL_EPSILON * (std::fabs(scale) + std::fabs(hi) + 1.0);
+  // Start from the secant of the end values (inside the bracket), then Newton's method, with a
+  // bisection whenever a Newton step would leave the bracket or fails to halve the previous step.
   double x = 0.5 * (lo + hi);
+  if (g_lo < 0 && g_hi > 0) {
+    const double sec = static_cast<double>(lo - g_lo * (hi - lo) / (g_hi - g_lo));
+    if (sec > lo && sec < hi) x = sec;
+  }
+  double dx_old = hi - lo, dx = dx_old;
   for (int it = 0; it < 400; ++it) {
+    const auto [g, d] = gd(x);  // value and derivative from one evaluation
+    if (g == 0) return x;
+    if (g < 0) lo = x; else hi = x;
     if (hi - lo <= tol) return hi;
-    const long double gx = g(x);
-    if (gx == 0) return x;
-    if (gx < 0) lo = x; else hi = x;
-    const long double d = dg(x);
-    double next = 0.5 * (lo + hi);
-    if (it % 4 != 3 && d > 0) {
-      const double newton = static_cast<double>(x - gx / d);
-      if (newton > lo && newton < hi) {
-        if (std::fabs(newton - x) <= 0.5 * tol) return newton;
-        next = newton;
-      }
+    const bool newton_ok = d > 0 && std::fabs(2 * g) <= std::fabs(dx_old * d);
+    const double newton = newton_ok ? static_cast<double>(x - g / d) : 0.0;
+    dx_old = dx;
+    if (newton_ok && newton > lo && newton < hi) {
+      dx = x - newton;
+      x = newton;
+      if (std::fabs(dx) <= 0.5 * tol) return x;
+    } else {
+      dx = 0.5 * (hi - lo);
+      x = lo + dx;
     }
-    x = next;
   }
   throw std::logic_error("solve_increasing: no convergence in 400 iterations");
 }

@@ -1,0 +1,114 @@
+#include "dfchaos/symbolic.hpp"
+
+#include <cmath>
+
+#include "dfchaos/errors.hpp"
+#include "dfchaos/return_map.hpp"
+
+namespace dfchaos {
+
+namespace {
+double circle_distance(double a, double b) {
+  const double d = std::fabs(a - b);
+  return std::min(d, two_pi - d);
+}
+}  // namespace
+
+InverseBranch make_inverse_branch(const Parameters& p, const CoveringSegment& J, double top, int check) {
+  const double t2 = *p.t2();
+  InverseBranch g;
+  g.J = J;
+  g.top = top;
+  // From the T = t2 end towards the T >= top end: the first point where T reaches top, and the
+  // last point before it where T = t2. Between them T is continuous (J is a covering segment).
+  double a = J.theta_at_t2, b = J.theta_at_top;
+  for (int it = 0; it < 200 && std::fabs(b - a) > 4e-16 * std::fabs(b); ++it) {  // T(a) < top <= T(b)
+    const double m = 0.5 * (a + b);
+    if (T(p, m) < top) a = m; else b = m;
+  }
+  g.k_at_top = b;
+  double c = J.theta_at_t2, d = b;  // T(c) = t2 < T(d)
+  for (int it = 0; it < 200 && std::fabs(d - c) > 4e-16 * std::fabs(d); ++it) {
+    const double m = 0.5 * (c + d);
+    if (T(p, m) == t2) c = m; else d = m;
+  }
+  g.k_at_t2 = c;
+  // Strict monotonicity on K, checked on a grid.
+  const double sign = g.k_at_top > g.k_at_t2 ? 1.0 : -1.0;
+  double prev = T(p, g.k_at_t2);
+  g.monotone = true;
+  for (int i = 1; i <= check; ++i) {
+    const double v = T(p, g.k_at_t2 + (g.k_at_top - g.k_at_t2) * i / check);
+    if (!(v > prev)) { g.monotone = false; break; }
+    prev = v;
+  }
+  (void)sign;
+  if (!g.monotone) throw GaveUp("make_inverse_branch: T is not monotone on K = [" + format_double(g.k_at_t2) + ", " + format_double(g.k_at_top) + "]");
+  return g;
+}
+
+double inverse(const Parameters& p, const InverseBranch& g, double y) {
+  const double t2 = *p.t2();
+  if (!(y >= t2 && y <= g.top)) throw InvalidParameter("y", "t2 <= y <= top", y);
+  double lo = g.k_at_t2, hi = g.k_at_top;  // T(lo) = t2 <= y <= T(hi), T increasing from lo to hi
+  for (int it = 0; it < 200 && std::fabs(hi - lo) > 2e-16 * std::fabs(hi); ++it) {
+    const double m = 0.5 * (lo + hi);
+    if (m == lo || m == hi) break;
+    if (T(p, m) < y) lo = m; else hi = m;
+  }
+  return std::fabs(T(p, lo) - y) < std::fabs(T(p, hi) - y) ? lo : hi;
+}
+
+namespace detail {
+void check_itinerary_orbit(const Parameters& p, const InverseBranch (&g)[2], ItineraryOrbit& o, bool periodic) {
+  const std::size_t n = o.x.size();
+  o.itinerary_ok = true;
+  o.max_step_residual = 0;
+  o.log_expansion = 0;
+  o.min_separation = INFINITY;
+  for (std::size_t j = 0; j < n; ++j) {
+    const InverseBranch& b = g[o.word[j] == '1' ? 1 : 0];
+    const double lo = std::min(b.k_at_t2, b.k_at_top), hi = std::max(b.k_at_t2, b.k_at_top);
+    if (o.x[j] < lo || o.x[j] > hi) o.itinerary_ok = false;
+    if (j + 1 < n || periodic) o.max_step_residual = std::max(o.max_step_residual, circle_distance(T(p, o.x[j]), o.x[(j + 1) % n]));
+    const double h = 1e-9 * (hi - lo);
+    o.log_expansion += std::log(std::fabs((T(p, o.x[j] + h) - T(p, o.x[j] - h)) / (2 * h)));
+    for (std::size_t k = j + 1; k < n; ++k) o.min_separation = std::min(o.min_separation, std::fabs(o.x[j] - o.x[k]));
+  }
+}
+}  // namespace detail
+
+ItineraryOrbit realise_word(const Parameters& p, const InverseBranch (&g)[2], const std::string& word) {
+  if (word.empty() || word.find_first_not_of("01") != std::string::npos) throw InvalidParameter("word", "a non-empty word over {0, 1}");
+  ItineraryOrbit o;
+  o.word = word;
+  o.x.assign(word.size(), 0.0);
+  double y = 0.5 * (*p.t2() + g[0].top);
+  for (std::size_t j = word.size(); j-- > 0;) {
+    y = inverse(p, g[word[j] == '1' ? 1 : 0], y);
+    o.x[j] = y;
+  }
+  detail::check_itinerary_orbit(p, g, o, false);
+  return o;
+}
+
+ItineraryOrbit periodic_orbit(const Parameters& p, const InverseBranch (&g)[2], const std::string& word) {
+  if (word.empty() || word.find_first_not_of("01") != std::string::npos) throw InvalidParameter("word", "a non-empty word over {0, 1}");
+  ItineraryOrbit o;
+  o.word = word;
+  o.x.assign(word.size(), 0.0);
+  double y = 0.5 * (*p.t2() + g[0].top), prev = NAN;
+  for (int sweep = 0; sweep < 200; ++sweep) {
+    for (std::size_t j = word.size(); j-- > 0;) {
+      y = inverse(p, g[word[j] == '1' ? 1 : 0], y);
+      o.x[j] = y;
+    }
+    if (y == prev) break;
+    prev = y;
+    if (sweep == 199) throw GaveUp("periodic_orbit: no convergence in 200 sweeps for word " + word);
+  }
+  detail::check_itinerary_orbit(p, g, o, true);
+  return o;
+}
+
+}  // namespace dfchaos
