@@ -1,5 +1,6 @@
 #include "dfchaos/superstable.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "dfchaos/errors.hpp"
@@ -38,6 +39,98 @@ SuperstableCheck superstable_check(const Parameters& p, int scan) {
   }
   r.epsilon = lo - t2;
   return r;
+}
+
+namespace {
+
+struct Sample {
+  double r = 0;
+  long long branch = 0;
+  long double w = 0;       // theta2(t2) as an instant, turn 0 = t2's period
+  double bound[4] = {};    // t1, t2, t3, t0 + 2 pi
+};
+
+Sample sample_at(double a, double q, double r) {
+  const Parameters p(a, a / r, q);
+  const MapStep s = return_map_step(p, *p.t2());
+  Sample x;
+  x.r = r;
+  x.branch = s.hit.maxima_before;
+  x.w = static_cast<long double>(*p.t2()) + elapsed(Instant::at_phase(*p.t2()), s.theta2);
+  x.bound[0] = *p.t1();
+  x.bound[1] = *p.t2();
+  x.bound[2] = *p.t3();
+  x.bound[3] = *p.t0() + two_pi;
+  return x;
+}
+
+/// Number of whole turns of (w - boundary) / 2 pi, i.e. which copy of the boundary w is past.
+long long turns_past(const Sample& x, int k) {
+  return static_cast<long long>(std::floor((x.w - x.bound[k]) / two_pi_l));
+}
+
+int condition_at(double a, double q, double r) {
+  const Parameters p(a, a / r, q);
+  const SuperstableCheck c = superstable_check(p, 2);
+  return c.eq21 ? 21 : (c.eq22 ? 22 : 0);
+}
+
+void events_between(double a, double q, const Sample& x, const Sample& y, int depth, std::vector<double>& events) {
+  const bool jump = x.branch != y.branch || std::fabs(static_cast<double>(y.w - x.w)) > 1.0;
+  if (jump) {
+    if (depth > 60 || (y.r - x.r) <= 1e-12 * y.r) {
+      events.push_back(0.5 * (x.r + y.r));
+      return;
+    }
+    const Sample m = sample_at(a, q, 0.5 * (x.r + y.r));
+    events_between(a, q, x, m, depth + 1, events);
+    events_between(a, q, m, y, depth + 1, events);
+    return;
+  }
+  for (int k = 0; k < 4; ++k) {
+    if (turns_past(x, k) == turns_past(y, k)) continue;
+    // One crossing of this boundary (w moves by less than 1 here): bisect on the turn count.
+    Sample lo = x, hi = y;
+    for (int it = 0; it < 80 && (hi.r - lo.r) > 1e-13 * hi.r; ++it) {
+      const Sample m = sample_at(a, q, 0.5 * (lo.r + hi.r));
+      if (m.branch != lo.branch && m.branch != hi.branch) break;
+      if (turns_past(m, k) == turns_past(lo, k)) lo = m; else hi = m;
+    }
+    events.push_back(0.5 * (lo.r + hi.r));
+  }
+}
+
+}  // namespace
+
+std::vector<SuperstableWindow> superstable_windows(double a, double q, double b_lo, double b_hi, int samples) {
+  if (!(b_lo > 0 && b_lo < b_hi)) throw InvalidParameter("b_lo", "0 < b_lo < b_hi", b_lo);
+  if (samples < 2) throw InvalidParameter("samples", "samples >= 2", samples);
+  Parameters(a, b_hi, q).require_return_map();
+  const double r_lo = a / b_hi, r_hi = a / b_lo;
+  std::vector<double> events{r_lo, r_hi};
+  Sample prev = sample_at(a, q, r_lo);
+  for (int i = 1; i < samples; ++i) {
+    const double r = r_lo + (r_hi - r_lo) * i / (samples - 1);
+    const Sample cur = sample_at(a, q, r);
+    events_between(a, q, prev, cur, 0, events);
+    prev = cur;
+  }
+  std::sort(events.begin(), events.end());
+  // Intervals between events, classified at their midpoints, merged when adjacent and alike.
+  std::vector<SuperstableWindow> out;
+  for (std::size_t i = 0; i + 1 < events.size(); ++i) {
+    if (!(events[i + 1] > events[i])) continue;
+    const int cond = condition_at(a, q, 0.5 * (events[i] + events[i + 1]));
+    if (cond == 0) continue;
+    const double b1 = a / events[i + 1], b2 = a / events[i];
+    if (!out.empty() && out.back().condition == cond && out.back().b_lo == b2) {
+      out.back().b_lo = b1;
+      continue;
+    }
+    out.push_back(SuperstableWindow{b1, b2, cond});
+  }
+  std::sort(out.begin(), out.end(), [](const SuperstableWindow& x, const SuperstableWindow& y) { return x.b_lo < y.b_lo; });
+  return out;
 }
 
 }  // namespace dfchaos

@@ -10,6 +10,8 @@
 /// paper writes both as derivatives in \f$\theta\f$ of \f$G_1\f$; the second is of \f$G_2\f$.)
 #pragma once
 
+#include <vector>
+
 #include "dfchaos/parameters.hpp"
 #include "dfchaos/return_map.hpp"
 
@@ -32,5 +34,20 @@ struct SuperstableCheck {
 /// Evaluates Theorem 2 at `p`; epsilon is measured with a scan of `scan` steps over \f$[t_2, t_3)\f$.
 /// @throws InvalidParameter unless the map is defined.
 SuperstableCheck superstable_check(const Parameters& p, int scan = 20000);
+
+/// A maximal interval of \f$b\f$ (at fixed \f$a, q\f$) on which (21) or (22) holds.
+struct SuperstableWindow {
+  double b_lo = 0, b_hi = 0;
+  int condition = 0;       ///< 21 or 22
+};
+
+/// All windows of \f$b \in [b_{lo}, b_{hi}]\f$ where (21) or (22) holds. The end \f$\theta_2(t_2)\f$ of the
+/// first progression, as an unwrapped instant \f$w(r)\f$ of \f$r = a/b\f$, is followed on a grid of
+/// `samples` points uniform in \f$r\f$; each crossing of \f$w\f$ with a boundary \f$t_1, t_2, t_3\f$ or
+/// \f$t_0 + 2\pi\f$ (mod \f$2\pi\f$, all moving with \f$b\f$) between two samples is located by bisection;
+/// where \f$T_1(t_2)\f$ jumps or \f$w\f$ moves by more than 1 between samples, the interval is
+/// bisected down to \f$10^{-12}\f$ relative width and the jump is an event too. Windows are the
+/// intervals between events where the condition holds at the midpoint.
+std::vector<SuperstableWindow> superstable_windows(double a, double q, double b_lo, double b_hi, int samples);
 
 }  // namespace dfchaos
