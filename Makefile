@@ -1,19 +1,42 @@
 # dfchaos — thin front door over CMake. `make help` lists the targets.
 # On a fresh Debian 12 machine `make test` and `make reproduce` each do the whole set-up:
 # they first install the missing Debian packages (scripts/install-deps.sh).
+#
+# The reproduce pipeline is ordinary make dependencies, so a second run redoes only what changed:
+#   build/bin/experiments/X  -> build/stamps/X.ok   (experiment X ran: data/, tables/, claims/)
+#   figures/fig_Y.gp + stamps -> build/figures/fig_Y.tex/.pdf   (gnuplot, cairolatex)
+#   paper/report.tex + figures + tables -> build/paper/report.pdf   (latexmk tracks its own inputs)
 
 BUILD   ?= build
 JOBS    ?= $(shell nproc 2>/dev/null || echo 2)
 BTYPE   ?= RelWithDebInfo
 CMAKE   ?= cmake
+ABS     := $(abspath $(BUILD))
 
-.PHONY: help deps deps-report configure build test reproduce experiments clean
+EXPERIMENTS := $(sort $(basename $(notdir $(wildcard experiments/*.cpp))))
+FIGURES     := $(sort $(basename $(notdir $(wildcard figures/fig_*.gp))))
+STAMPS      := $(EXPERIMENTS:%=$(BUILD)/stamps/%.ok)
+FIGS        := $(FIGURES:%=$(BUILD)/figures/%.tex)
+TEXINPUTS_REPORT := $(CURDIR)/paper:$(ABS)/figures:$(ABS)/tables:
+
+.PHONY: help deps deps-report configure build test reproduce experiments figures report manifest \
+        docs bench clean test-sanitize test-clang check-determinism
 
 help:
 	@echo "dfchaos make targets:"
+	@echo "  make reproduce   install missing packages (with LaTeX, gnuplot), build, run every experiment,"
+	@echo "                   draw every figure, build $(BUILD)/paper/report.pdf (reruns only what changed)"
 	@echo "  make test        install missing packages, build, run every test through CTest"
-	@echo "  make reproduce   install missing packages (with LaTeX, gnuplot), build, run every experiment"
 	@echo "  make build       configure and build into $(BUILD)/ (binaries in $(BUILD)/bin)"
+	@echo "  make experiments run the experiments whose executables changed (data, tables, claims)"
+	@echo "  make figures     draw the figures from $(BUILD)/data into $(BUILD)/figures"
+	@echo "  make report      typeset $(BUILD)/paper/report.pdf from what is already computed"
+	@echo "  make manifest    write $(BUILD)/MANIFEST.sha256 over data and tables"
+	@echo "  make docs        Doxygen HTML of the library and experiments in $(BUILD)/docs"
+	@echo "  make bench       T per second vs the GSL odeiv2 baseline: $(BUILD)/bench/bench.json, tables/bench.tex"
+	@echo "  make test-sanitize  build with ASan+UBSan in $(BUILD)-sanitize and run every test"
+	@echo "  make test-clang  build warning-free with clang++ in $(BUILD)-clang and run every test"
+	@echo "  make check-determinism  rerun every experiment with 1 and with 2 threads; manifests must match"
 	@echo "  make deps        install the packages needed to build and test"
 	@echo "  make clean       remove $(BUILD)/"
 	@echo "Variables: BUILD=$(BUILD) JOBS=$(JOBS) BTYPE=$(BTYPE)"
@@ -25,8 +48,8 @@ deps-report:
 	@bash scripts/install-deps.sh report
 
 configure:
-	@$(CMAKE) -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=$(BTYPE) > $(BUILD).configure.log 2>&1 || { cat $(BUILD).configure.log; exit 1; }
-	@rm -f $(BUILD).configure.log
+	@mkdir -p $(BUILD)
+	@$(CMAKE) -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=$(BTYPE) > $(BUILD)/configure.log 2>&1 || { cat $(BUILD)/configure.log; exit 1; }
 
 build: deps configure
 	@$(CMAKE) --build $(BUILD) -j $(JOBS)
@@ -34,15 +57,71 @@ build: deps configure
 test: build
 	@ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
 
-experiments: build
-	@bash scripts/run-experiments.sh $(BUILD)
+# ---- the reproduce pipeline -------------------------------------------------------------
 
 reproduce: deps-report
-	@echo "== [1/3] build"
+	@echo "== [1/5] build"
 	@$(MAKE) --no-print-directory build
-	@echo "== [2/3] experiments"
-	@bash scripts/run-experiments.sh $(BUILD)
-	@echo "== [3/3] report: not yet part of the pipeline (issue 5)"
+	@echo "== [2/5] experiments ($(words $(EXPERIMENTS)); only those whose executable changed)"
+	@$(MAKE) --no-print-directory -j 2 --output-sync=target experiments
+	@echo "== [3/5] figures ($(words $(FIGURES)))"
+	@$(MAKE) --no-print-directory figures
+	@echo "== [4/5] report"
+	@$(MAKE) --no-print-directory report
+	@echo "== [5/5] manifest"
+	@$(MAKE) --no-print-directory manifest
+	@echo "reproduce: done; read $(BUILD)/paper/report.pdf"
+
+experiments: $(STAMPS)
+
+$(BUILD)/stamps/%.ok: $(BUILD)/bin/experiments/%
+	@mkdir -p $(@D)
+	@echo "-- experiment $*"
+	@$< --out $(BUILD)
+	@touch $@
+
+figures: $(FIGS)
+
+$(BUILD)/figures/%.tex: figures/%.gp figures/style.gp $(STAMPS)
+	@mkdir -p $(@D)
+	@echo "-- figure $*"
+	@cd $(@D) && gnuplot -e "data='$(ABS)/data'; figdir='$(CURDIR)/figures'" $(CURDIR)/$< 2> $*.log \
+	  || { cat $*.log; rm -f $*.tex $*.pdf; exit 1; }
+	@if [ -s $(@D)/$*.log ]; then echo "figure $*: gnuplot warned:"; cat $(@D)/$*.log; rm -f $@; exit 1; fi
+
+$(BUILD)/tables/build-info.tex: $(BUILD)/bin/dfchaos
+	@mkdir -p $(@D)
+	@$< provenance --latex > $@.tmp && mv $@.tmp $@
+
+report: $(FIGS) $(BUILD)/tables/build-info.tex
+	@bash scripts/build-report.sh $(BUILD)
+
+manifest:
+	@cd $(BUILD) && find data tables -type f ! -name '*.tmp' | LC_ALL=C sort | xargs sha256sum > MANIFEST.sha256
+	@echo "manifest: $(BUILD)/MANIFEST.sha256 ($$(wc -l < $(BUILD)/MANIFEST.sha256) files)"
+
+docs: deps-report configure
+	@bash scripts/build-docs.sh $(BUILD)
+
+bench: build
+	@$(BUILD)/bin/bench_return_map --out=$(BUILD)
+
+# ---- reliability checks (issue 7) -----------------------------------------------------------
+
+test-sanitize: deps
+	@$(CMAKE) -S . -B $(BUILD)-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDFCHAOS_SANITIZE=ON > /dev/null
+	@$(CMAKE) --build $(BUILD)-sanitize -j $(JOBS)
+	@ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+	  ctest --test-dir $(BUILD)-sanitize --output-on-failure -j $(JOBS)
+
+test-clang:
+	@bash scripts/install-deps.sh check
+	@CXX=clang++ $(CMAKE) -S . -B $(BUILD)-clang -DCMAKE_BUILD_TYPE=RelWithDebInfo > /dev/null
+	@$(CMAKE) --build $(BUILD)-clang -j $(JOBS)
+	@ctest --test-dir $(BUILD)-clang --output-on-failure -j $(JOBS)
+
+check-determinism: build
+	@bash scripts/check-determinism.sh $(BUILD)
 
 clean:
-	rm -rf $(BUILD)
+	rm -rf $(BUILD) $(BUILD)-sanitize $(BUILD)-clang

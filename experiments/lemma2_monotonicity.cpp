@@ -18,9 +18,9 @@ int main(int argc, char** argv) {
         app.add_option("--q", qa, "q/a (T1 does not depend on it; recorded for completeness)");
       },
       [&](const experiments::Options& o, ExperimentOutput& out) {
-        if (o.fast) n = std::min(n, 500);
         if (n < 10 || n > 10'000'000) throw InvalidParameter("n", "10 <= n <= 10^7", n);
         experiments::require_range("q", qa, 1e-9, 1.0);
+        if (o.fast) n = std::min(n, 500);
         out.parameter("n", std::to_string(n));
         out.parameter("q_over_a", qa);
         const double L0lo = 1.01 * pi, L0hi = 1.5 * pi;

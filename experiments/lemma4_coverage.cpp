@@ -72,12 +72,12 @@ int main(int argc, char** argv) {
         app.add_option("--uniform", uniform, "least density, as points over [t2, 3pi/2]");
       },
       [&](const experiments::Options& o, ExperimentOutput& out) {
-        if (o.fast) { nq = std::min(nq, 3); nb = std::min(nb, 5); ba_min = std::max(ba_min, 1e-4); }
         if (nq < 1 || nq > 10000) throw InvalidParameter("nq", "1 <= nq <= 10000", nq);
         if (nb < 2 || nb > 10000) throw InvalidParameter("nb", "2 <= nb <= 10000", nb);
         experiments::require_range("ba-min", ba_min, 1e-8, 0.01);
         if (scan < 2) throw InvalidParameter("scan", "scan >= 2", scan);
         if (uniform < 0) throw InvalidParameter("uniform", "uniform >= 0", uniform);
+        if (o.fast) { nq = std::min(nq, 3); nb = std::min(nb, 5); ba_min = std::max(ba_min, 1e-4); }
         out.parameter("nq", std::to_string(nq));
         out.parameter("nb", std::to_string(nb));
         out.parameter("ba_min", ba_min);
@@ -92,6 +92,9 @@ int main(int argc, char** argv) {
                     "J1_lo", "J1_hi"});
         Table per_q({"q_over_a", "b0_literal", "b0_covering", "covering_some_max_b", "literal_some_max_b"});
         long long literal_without_covering = 0, points = 0;
+        std::string tex = "\\begin{tabular}{rrrrr}\n\\toprule\n$q/a$ & $b_0/a$ (a) proof's steps & $b_0/a$ (b) covering & "
+                          "largest $b/a$ with (a) & largest $b/a$ with (b)\\\\\n\\midrule\n";
+        double max_b0_lit = 0, max_b0_cov = 0;
         for (int i = 0; i < nq; ++i) {
           const double qa = s0 + (1 - s0) * (i + 0.5) / nq;
           double b0_lit = 0, b0_cov = 0, some_cov = 0, some_lit = 0;
@@ -112,12 +115,21 @@ int main(int argc, char** argv) {
                       cov.holds ? cov.J0.hi : NAN, cov.holds ? cov.J1.lo : NAN, cov.holds ? cov.J1.hi : NAN});
           }
           per_q.row({qa, b0_lit, b0_cov, some_cov, some_lit});
+          max_b0_lit = std::max(max_b0_lit, b0_lit);
+          max_b0_cov = std::max(max_b0_cov, b0_cov);
+          auto f = [](double v) { return v > 0 ? format_significant(v, 3) : std::string("---"); };
+          tex += format_significant(qa, 4) + " & " + f(b0_lit) + " & " + f(b0_cov) + " & " + f(some_lit) + " & " + f(some_cov) + "\\\\\n";
         }
         out.table("grid", grid, "Lemma 4 on a (q/a, b/a) grid: (a) the proof's steps, (b) the covering itself");
         out.table("", per_q, "per q/a: largest grid b/a below which (a) the proof's construction, (b) the covering, holds at every grid "
                              "point; (b) is a lower estimate: a covering is verified when found, but one whose T = t2 arc is "
                              "narrower than the scan can be missed");
 
+        tex += "\\bottomrule\n\\end{tabular}\n";
+        out.latex("lemma4_b0", tex);
+        out.macro("LemmaFourLiteralMaxBzero", max_b0_lit, 2);
+        out.macro("LemmaFourCoveringMaxBzero", max_b0_cov, 2);
+        out.macro("LemmaFourBaMin", ba_min, 2);
         // A reference example for the report.
         const Parameters ref(1.0, 1e-3, 0.85);
         const Lemma4Covering c = lemma4_covering(ref, search);

@@ -31,13 +31,20 @@ int main(int argc, char** argv) {
       argc, argv, "sec3_scenarios", "Section 3: scenarios of the motion between two free flights",
       [&](CLI::App& app) { app.add_option("--n", n, "grid points of theta in [t2, t3) per parameter set"); },
       [&](const experiments::Options& o, ExperimentOutput& out) {
-        if (o.fast) n = std::min(n, 200);
         if (n < 10 || n > 10'000'000) throw InvalidParameter("n", "10 <= n <= 10^7", n);
+        if (o.fast) n = std::min(n, 200);
         out.parameter("n", std::to_string(n));
         const std::vector<std::pair<double, double>> sets = {{0.01, 0.85}, {0.05, 0.85}, {0.1, 0.95},
                                                              {0.002, 0.8}, {0.05, 0.7},  {0.01, 0.6}};
         Table counts({"b_over_a", "q_over_a", "lemma1_holds", "A", "B", "C", "D", "G", "other"});
         Table arcs({"b_over_a", "q_over_a", "scenario", "theta_lo", "theta_hi", "points"});
+        std::string counts_tex;
+        Table phases({"b_over_a", "q_over_a", "t0", "t1", "t2", "t3"});
+        for (const auto& [ba, qa] : sets) {
+          const Parameters p(1.0, ba, qa);
+          phases.row({ba, qa, *p.t0(), *p.t1(), *p.t2(), *p.t3()});
+        }
+        out.table("phases", phases, "the switching phases t0, t1 (zeros of F - q) and t2, t3 (zeros of F) per parameter set");
         std::map<std::string, std::pair<Parameters, double>> example;
         long long stops_inside = 0, progression_ends = 0, other = 0, d_with_lemma1 = 0;
         for (const auto& [ba, qa] : sets) {
@@ -75,6 +82,15 @@ int main(int argc, char** argv) {
           }
           arcs.row({ba, qa, run_sc, run_lo, run_hi, run_n});
           counts.row({ba, qa, static_cast<long long>(lemma1), c["A"], c["B"], c["C"], c["D"], c["G"], c["other"]});
+          counts_tex += format_significant(ba, 3) + " & " + format_significant(qa, 3) + " & " + (lemma1 ? "holds" : "fails");
+          for (const char* k : {"A", "B", "C", "D", "G", "other"}) counts_tex += " & " + std::to_string(c[k]);
+          counts_tex += "\\\\\n";
+        }
+        {
+          std::string tex = "\\begin{tabular}{rrcrrrrrr}\n\\toprule\n$b/a$ & $q/a$ & Lemma 1 & A & B & C & D & grazing & other\\\\\n\\midrule\n";
+          tex += counts_tex;
+          tex += "\\bottomrule\n\\end{tabular}\n";
+          out.latex("sec3_counts", tex);
         }
         out.table("counts", counts, "number of grid phases theta in [t2, t3) per scenario");
         out.table("arcs", arcs, "maximal runs of grid phases with the same scenario");

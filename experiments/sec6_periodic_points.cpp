@@ -4,6 +4,7 @@
 /// the nested segments, and checked step by step.
 #include <cmath>
 
+#include "dfchaos/return_map.hpp"
 #include "dfchaos/symbolic.hpp"
 #include "harness.hpp"
 
@@ -20,8 +21,8 @@ int main(int argc, char** argv) {
         app.add_option("--m-max", m_max, "largest period");
       },
       [&](const experiments::Options& o, ExperimentOutput& out) {
-        if (o.fast) m_max = std::min(m_max, 6);
         if (m_max < 1 || m_max > 200) throw InvalidParameter("m-max", "1 <= m-max <= 200", m_max);
+        if (o.fast) m_max = std::min(m_max, 6);
         const Parameters p(1.0, b, q);
         p.require_return_map();
         out.parameter("b_over_a", b);
@@ -34,7 +35,10 @@ int main(int argc, char** argv) {
 
         Table t({"m", "x0", "max_step_residual", "itinerary_ok", "min_separation", "log_expansion", "literal_Tm_residual"});
         Table orbits({"m", "j", "x_j", "letter"});
+        Table cobweb({"x", "y"});  // the staircase (x_j, x_j) -> (x_j, x_{j+1}) of the period-3 orbit
         int bad = 0, separated = 0;
+        std::string tex = "\\begin{tabular}{rrrrr}\n\\toprule\n$m$ & $p$ (first point) & $\\max_j|T(x_j)-x_{j+1}|$ & "
+                          "$\\ln|(T^m)'(p)|$ & closest points\\\\\n\\midrule\n";
         double worst_res = 0;
         for (int m = 1; m <= m_max; ++m) {
           const std::string w = std::string(static_cast<std::size_t>(m - 1), '0') + "1";
@@ -49,14 +53,48 @@ int main(int argc, char** argv) {
           }
           t.row({static_cast<long long>(m), orb.x[0], orb.max_step_residual, static_cast<long long>(orb.itinerary_ok), orb.min_separation,
                  orb.log_expansion, literal});
+          if (m == 3) {
+            for (int j = 0; j < m; ++j) {
+              const double xj = orb.x[static_cast<std::size_t>(j)], xn = orb.x[static_cast<std::size_t>((j + 1) % m)];
+              cobweb.row({xj, xj}).row({xj, xn});
+            }
+            cobweb.row({orb.x[0], orb.x[0]});
+          }
           for (int j = 0; j < m; ++j) orbits.row({static_cast<long long>(m), static_cast<long long>(j), orb.x[static_cast<std::size_t>(j)], std::string(1, w[static_cast<std::size_t>(j)])});
+          tex += std::to_string(m) + " & " + format_significant(orb.x[0], 16) + " & " + format_significant(orb.max_step_residual, 2) + " & " +
+                 format_significant(orb.log_expansion, 4) + " & " + (m == 1 ? std::string("---") : format_significant(orb.min_separation, 2)) +
+                 "\\\\\n";
           const bool ok = orb.itinerary_ok && orb.max_step_residual < 1e-10 && (std::isnan(literal) || literal < 1e-10);
           if (!ok) ++bad;
           if (m == 1 || orb.min_separation > 1e-12) ++separated;
           worst_res = std::max(worst_res, orb.max_step_residual);
         }
+        // For the cobweb figure: the graph of T at the same parameters, and the segments.
+        Table graph({"theta", "T"});
+        const double t2 = *p.t2(), t3 = *p.t3();
+        const int n_graph = o.fast ? 400 : 20000;
+        for (int i = 0; i < n_graph; ++i) {
+          const double th = t2 + (t3 - t2) * i / n_graph;
+          graph.row({th, T(p, th)});
+        }
+        Table segments({"name", "lo", "hi"});
+        segments.row({std::string("J0"), c.J0.lo, c.J0.hi});
+        segments.row({std::string("J1"), c.J1.lo, c.J1.hi});
+        segments.row({std::string("target"), t2, 1.5 * pi});
+        segments.row({std::string("domain"), t2, t3});
+        out.table("graph", graph, "T on [t2, t3) at " + p.describe());
+        out.table("segments", segments, "the covering segments J0, J1 of Lemma 4 and the target [t2, 3pi/2] they cover");
+        out.macro("SecSixJzeroLo", c.J0.lo, 6);
+        out.macro("SecSixJzeroHi", c.J0.hi, 6);
+        out.macro("SecSixJoneLo", c.J1.lo, 6);
+        out.macro("SecSixJoneHi", c.J1.hi, 6);
+        out.macro("SecSixB", b, 6);
+        out.macro("SecSixQ", q, 6);
+        tex += "\\bottomrule\n\\end{tabular}\n";
+        out.latex("sec6_periodic", tex);
         out.table("", t, "periodic points of T with itinerary (0^(m-1) 1)^infinity at " + p.describe());
         out.table("orbits", orbits, "their orbits");
+        if (cobweb.rows()) out.table("cobweb", cobweb, "cobweb path of the period-3 orbit (itinerary 001)");
 
         Claim per{"sec6.periodic_points", "Section 6, Theorem 1",
                   "For every m up to m-max there is a periodic orbit with itinerary (0^(m-1)1)^infinity: every point lies in its "

@@ -22,9 +22,9 @@ int main(int argc, char** argv) {
         app.add_option("--lap-grid", lap_grid, "grid points for the lap counts of T^n");
       },
       [&](const experiments::Options& o, ExperimentOutput& out) {
-        if (o.fast) { n_max = std::min(n_max, 5); lap_grid = std::min(lap_grid, 20000); }
         if (n_max < 1 || n_max > 20) throw InvalidParameter("n-max", "1 <= n-max <= 20", n_max);
         if (lap_grid < 100 || lap_grid > 100'000'000) throw InvalidParameter("lap-grid", "100 <= lap-grid <= 10^8", lap_grid);
+        if (o.fast) { n_max = std::min(n_max, 5); lap_grid = std::min(lap_grid, 20000); }
         const Parameters p(1.0, b, q);
         p.require_return_map();
         out.parameter("b_over_a", b);

@@ -3,6 +3,7 @@
 #
 #   scripts/install-deps.sh build    compiler, CMake, Eigen, GSL, GoogleTest, CLI11 (for `make test`)
 #   scripts/install-deps.sh report   build + gnuplot, LaTeX, Doxygen (for `make reproduce`)
+#   scripts/install-deps.sh check    build + clang and its OpenMP runtime (for `make test-clang`)
 #
 # Idempotent: a second run finds nothing missing and does nothing. Runs apt-get as
 # root, or through sudo; where neither is possible it prints the exact command and fails.
@@ -14,10 +15,13 @@ build_pkgs=(g++ cmake make pkg-config libeigen3-dev libgsl-dev libgtest-dev libg
 report_pkgs=(gnuplot-nox latexmk texlive-latex-base texlive-latex-recommended
              texlive-latex-extra texlive-fonts-recommended texlive-pictures doxygen poppler-utils)
 
+check_pkgs=(clang libomp-dev)
+
 case "$profile" in
   build)  wanted=("${build_pkgs[@]}") ;;
+  check)  wanted=("${build_pkgs[@]}" "${check_pkgs[@]}") ;;
   report) wanted=("${build_pkgs[@]}" "${report_pkgs[@]}") ;;
-  *) echo "install-deps.sh: profile must be 'build' or 'report', got '$profile'" >&2; exit 2 ;;
+  *) echo "install-deps.sh: profile must be 'build', 'report' or 'check', got '$profile'" >&2; exit 2 ;;
 esac
 
 missing=()

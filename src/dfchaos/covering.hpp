@@ -30,13 +30,14 @@ struct ContinuityLabel {
   long long t1_branch = 0;  ///< NextHit::maxima_before
   long long t3_passed = 0;  ///< \f$\lfloor(\theta_2 - t_3)/2\pi\rfloor\f$, turns counted from \f$\theta\f$
   bool scenario_d = false;  ///< scenario D or D' (T is the constant end of the progression from t0)
+  /// Two phases lie on the same continuity branch of \f$T\f$ only if their labels are equal.
   friend bool operator==(const ContinuityLabel&, const ContinuityLabel&) = default;
 };
 
 /// The label together with the map step it was computed from.
 struct LabelledStep {
-  MapStep step;
-  ContinuityLabel label;
+  MapStep step;            ///< one step of \f$T\f$ from \f$\theta\f$
+  ContinuityLabel label;   ///< the continuity label of that step
 };
 
 /// The continuity label at \f$\theta\f$.
@@ -44,11 +45,12 @@ LabelledStep continuity_label(const Parameters& p, double theta);
 
 /// A closed segment on which \f$T\f$ is continuous and whose image contains \f$[t_2, \text{top}]\f$.
 struct CoveringSegment {
-  double lo = 0, hi = 0;        ///< the segment
+  double lo = 0;                ///< left end of the segment
+  double hi = 0;                ///< right end of the segment
   double theta_at_t2 = 0;       ///< an end where \f$T = t_2\f$
   double theta_at_top = 0;      ///< an end where \f$T \ge\f$ top
-  double T_at_top = 0;
-  ContinuityLabel label;
+  double T_at_top = 0;          ///< \f$T\f$ at theta_at_top (at least top)
+  ContinuityLabel label;        ///< the continuity label shared by the whole segment
   bool verified = false;        ///< labels constant, and no T-jump on the fine grid inside
 };
 
@@ -69,8 +71,9 @@ std::vector<CoveringSegment> covering_segments(const Parameters& p, double lo, d
 /// Lemma 4's conclusion at one parameter set: two disjoint closed segments of \f$[t_2, 3\pi/2]\f$,
 /// each with \f$T\f$ continuous and \f$T(J_i) \supseteq [t_2, 3\pi/2]\f$.
 struct Lemma4Covering {
-  bool holds = false;
-  CoveringSegment J0, J1;       ///< the two leftmost verified segments (when holds)
+  bool holds = false;           ///< whether two disjoint verified covering segments were found
+  CoveringSegment J0;           ///< the leftmost verified segment (when holds)
+  CoveringSegment J1;           ///< the next verified segment, disjoint from J0 (when holds)
   int segments_found = 0;       ///< verified segments found (at most search.max_segments if set)
 };
 Lemma4Covering lemma4_covering(const Parameters& p, const CoveringSearch& search = {});

@@ -17,8 +17,10 @@ class InvalidParameter : public std::invalid_argument {
   /// @param condition  the condition it must satisfy, in words or symbols
   /// @param value      the value that was given
   InvalidParameter(const std::string& parameter, const std::string& condition, double value);
+  /// The same without a value (for conditions on combinations of parameters).
   InvalidParameter(const std::string& parameter, const std::string& condition);
 
+  /// The name of the offending parameter.
   const std::string& parameter() const noexcept { return parameter_; }
 
  private:

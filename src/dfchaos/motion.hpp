@@ -20,12 +20,17 @@ const char* regime_code(Regime r);
 /// \f$x(t_s) = x_s\f$, \f$\dot x(t_s) = v_s\f$, with \f$s = t - t_s\f$:
 /// \f$x(t) = -a\sin t + b s^2 + (v_s + a\cos t_s)s + x_s + a\sin t_s\f$.
 struct FreeMotion {
-  double a, b;
-  Instant start;
-  double x_start, v_start;
+  double a;        ///< forcing amplitude \\f$a\\f$
+  double b;        ///< \\f$b\\f$ (half the constant force)
+  Instant start;   ///< \\f$t_s\\f$
+  double x_start;  ///< \\f$x_s = x(t_s)\\f$
+  double v_start;  ///< \\f$v_s = \\dot x(t_s)\\f$
 
+  /// The motion of this regime through the given state at \\f$t_s\\f$.
   FreeMotion(const Parameters& p, const Instant& start, double x_start, double v_start);
+  /// \\f$x(t)\\f$ by the closed form above.
   double position(const Instant& t) const;
+  /// \\f$\\dot x(t)\\f$ by the closed form above.
   double velocity(const Instant& t) const;
   /// The gap \f$x(t) - y\f$ as a QuadraticPlusHarmonic: its first up-crossing is the next contact.
   /// Starts at rest when the mass starts at the delimiter with zero velocity (Eq. 10).
@@ -36,12 +41,17 @@ struct FreeMotion {
 /// \f$x(t) = -a\sin t + c s^2 + (v_s + a\cos t_s)s + x_s + a\sin t_s\f$ and
 /// \f$\dot x(t) = v_s + 2cs - a(\cos t - \cos t_s)\f$ (Eq. 7 when \f$t_s = t_0\f$, \f$v_s = 0\f$).
 struct ProgressionMotion {
-  double a, c;
-  Instant start;
-  double x_start, v_start;
+  double a;        ///< forcing amplitude \\f$a\\f$
+  double c;        ///< \\f$c = b - q/2\\f$
+  Instant start;   ///< \\f$t_s\\f$
+  double x_start;  ///< \\f$x_s = x(t_s)\\f$
+  double v_start;  ///< \\f$v_s = \\dot x(t_s)\\f$
 
+  /// The motion of this regime through the given state at \\f$t_s\\f$.
   ProgressionMotion(const Parameters& p, const Instant& start, double x_start, double v_start);
+  /// \\f$x(t)\\f$ by the closed form above.
   double position(const Instant& t) const;
+  /// \\f$\\dot x(t)\\f$ by the closed form above.
   double velocity(const Instant& t) const;
   /// \f$-\dot x(t)\f$ as a QuadraticPlusHarmonic: its first up-crossing is where progression stops.
   QuadraticPlusHarmonic minus_velocity() const;

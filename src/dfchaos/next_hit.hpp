@@ -51,7 +51,8 @@ long long maxima_between(const Parameters& p, double theta, const Instant& t);
 /// tangency and \f$T_1(z-0)\f$ the later hit of a flight that just misses.
 struct GrazingPoint {
   double z = 0;                ///< the discontinuity
-  double bracket_lo = 0, bracket_hi = 0;  ///< bisection bracket before the Newton polish
+  double bracket_lo = 0;       ///< left end of the bisection bracket before the Newton polish
+  double bracket_hi = 0;       ///< right end of that bracket
   Instant tangency;            ///< \f$T_1(z)\f$
   double t1_left = 0;          ///< \f$T_1(z - 0)\f$ (value), evaluated at bracket_lo
   double t1_right = 0;         ///< \f$T_1(z)\f$ (value)
@@ -59,7 +60,8 @@ struct GrazingPoint {
   double residual_G1 = 0;      ///< \f$G_1(z, T_1(z))\f$ after the polish
   double residual_dG1 = 0;     ///< \f$\partial_t G_1(z, T_1(z))\f$ (Eq. 14) after the polish
   bool newton_converged = false;  ///< whether 2D Newton (Eigen) refined the bisection result
-  long long maxima_left = 0, maxima_right = 0;  ///< branch labels on either side
+  long long maxima_left = 0;   ///< branch label (maxima of the gap before the hit) left of z
+  long long maxima_right = 0;  ///< the same right of z
 };
 
 /// All discontinuities of \f$T_1\f$ in \f$[lo, hi] \subset [t_2, t_3)\f$, ascending. The branch label

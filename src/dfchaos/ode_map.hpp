@@ -31,13 +31,13 @@ struct OdeMapOptions {
 /// One step of the integrated map.
 struct OdeMapStep {
   double T1 = 0;          ///< the first contact instant
-  double hit_velocity = 0;
+  double hit_velocity = 0; ///< impact velocity at T1
   double T = 0;           ///< phase of the next switch to free flight
   double elapsed = 0;     ///< its instant minus theta
   double penetration = 0; ///< advance of the delimiter
   std::string chain;      ///< regimes visited, as in MapStep::chain
   long steps = 0;         ///< accepted integration steps
-  long rhs_evaluations = 0;
+  long rhs_evaluations = 0; ///< evaluations of the right-hand side
 };
 
 /// One step of the return map by numerical integration, from rest at the delimiter at phase theta.

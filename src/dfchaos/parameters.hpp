@@ -53,15 +53,15 @@ class Parameters {
   /// \f$[0, 2\pi)\f$, \f$t_1 = \pi - \arcsin((q-2b)/a)\f$. They exist iff \f$|q - 2b| < a\f$;
   /// \f$F > q\f$ exactly on the arc \f$(t_0, t_1)\f$.
   std::optional<double> t0() const { return t0_; }
-  std::optional<double> t1() const { return t1_; }
+  std::optional<double> t1() const { return t1_; }  ///< \f$t_1\f$, see t0()
   /// Zeros \f$t_2 = \pi + \arcsin(2b/a)\f$, \f$t_3 = 2\pi - \arcsin(2b/a)\f$ of \f$F\f$.
   /// They exist iff \f$2b < a\f$; \f$F < 0\f$ exactly on \f$(t_2, t_3)\f$.
   std::optional<double> t2() const { return t2_; }
-  std::optional<double> t3() const { return t3_; }
+  std::optional<double> t3() const { return t3_; }  ///< \f$t_3\f$, see t2()
 
   /// \f$t_2\f$ and \f$t_3\f$, demanded: @throws InvalidParameter on `b` unless \f$0 < b < a/2\f$.
   double t2_required() const;
-  double t3_required() const;
+  double t3_required() const;  ///< \f$t_3\f$, demanded as t2_required()
 
   /// Which assumptions of the paper hold.
   Assumptions assumptions() const;

@@ -36,6 +36,7 @@ struct Instant {
   /// The instant in turn 0 with the given phase (any real, reduced mod \f$2\pi\f$).
   static Instant at_phase(double phase) { return from_time(phase); }
 
+  /// Equal turn and equal phase.
   friend bool operator==(const Instant&, const Instant&) = default;
 };
 

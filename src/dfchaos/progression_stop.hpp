@@ -20,7 +20,7 @@ struct ProgressionFromT0 {
   bool stops_in_t1_t2 = false;    ///< Lemma 1's conclusion \f$t_4 \in [t_1, t_2]\f$ (from the root search)
   /// The proof's bound \f$a + a\cos t_0 - (q - 2b)(\pi - t_0) < 0\f$, which implies (8) < 0.
   bool proof_bound = false;
-  double proof_bound_value = 0;
+  double proof_bound_value = 0;   ///< the left-hand side of that bound
   /// Inequality (9) evaluated at this \f$t_0\f$: \f$1 + \cos t_0 - \sin t_0(\pi - t_0) < 0\f$
   /// (equivalent to \f$t_0 > \vartheta_0\f$).
   bool eq9 = false;

@@ -25,9 +25,11 @@ namespace dfchaos {
 
 /// Position of mass and delimiter, velocity of the mass, and regime, at an instant.
 struct MechanicalState {
-  Instant t;
-  Regime regime = Regime::Free;
-  double x = 0, y = 0, v = 0;
+  Instant t;                     ///< the instant
+  Regime regime = Regime::Free;  ///< regime starting at t
+  double x = 0;                  ///< position of the mass
+  double y = 0;                  ///< position of the delimiter
+  double v = 0;                  ///< velocity of the mass
 };
 
 /// Kinds of transition instant in Section 2: *fp* (free to progression by an impact) and *is*
@@ -37,14 +39,17 @@ const char* transition_code(TransitionKind k);  ///< "fp" or "is"
 
 /// One regime change.
 struct Transition {
-  Instant t;
-  Regime from = Regime::Free, to = Regime::Free;
-  TransitionKind kind = TransitionKind::InstantaneousStop;
-  double x = 0, y = 0;  ///< at the transition (x = y: always at the contact)
+  Instant t;                     ///< the instant of the change
+  Regime from = Regime::Free;    ///< regime before
+  Regime to = Regime::Free;      ///< regime after
+  TransitionKind kind = TransitionKind::InstantaneousStop;  ///< fp or is
+  double x = 0;         ///< position of the mass at the transition
+  double y = 0;         ///< position of the delimiter (x = y: always at the contact)
   double v_before = 0;  ///< velocity just before (the impact velocity for fp)
   double v_after = 0;   ///< velocity just after
   bool grazing = false; ///< a free flight touched the delimiter with zero velocity and flew on
   long pieces = 0;      ///< root-search work
+  /// The state just after the transition.
   MechanicalState after() const { return MechanicalState{t, to, x, y, v_after}; }
 };
 

@@ -37,7 +37,7 @@ struct MapStep {
   Instant end;                 ///< \f$\widehat T(\theta)\f$: the instant of the switch to free flight
   double elapsed = 0;          ///< \f$\widehat T(\theta) - \theta\f$
   double penetration = 0;      ///< advance of the delimiter during the step (sum over progressions)
-  Scenario scenario = Scenario::Other;
+  Scenario scenario = Scenario::Other;  ///< the scenario of Section 3 this step followed
   std::string chain;           ///< the regimes visited, e.g. "f>p>s>f"
   int progressions = 0;        ///< number of progression phases
   long pieces = 0;             ///< root-search work (monotone pieces examined)

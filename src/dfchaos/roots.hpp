@@ -34,9 +34,12 @@ namespace dfchaos {
 /// \f$\alpha \ge 0\f$. The polynomial part is kept in long double: for small \f$b/a\f$ its terms
 /// reach \f$10^6 a\f$ and cancel to \f$O(a)\f$ at the root.
 struct QuadraticPlusHarmonic {
-  Instant origin;
-  long double alpha = 0, beta = 0, gamma = 0;
-  double A = 0, B = 0;
+  Instant origin;              ///< \f$s = 0\f$
+  long double alpha = 0;       ///< \f$\alpha\f$, coefficient of \f$s^2\f$
+  long double beta = 0;        ///< \f$\beta\f$, coefficient of \f$s\f$
+  long double gamma = 0;       ///< \f$\gamma\f$, constant term
+  double A = 0;                ///< \f$A\f$, coefficient of \f$\sin t\f$
+  double B = 0;                ///< \f$B\f$, coefficient of \f$\cos t\f$
   /// True when \f$f(\mathrm{origin}) = 0\f$ holds exactly by construction (a motion starting at rest
   /// at the contact). Near such an origin \f$f\f$ is \f$O(u^2)\f$ or \f$O(u^3)\f$, below rounding
   /// noise; the search then takes the direction of departure from the first non-negligible Taylor
@@ -70,7 +73,7 @@ struct UpCrossing {
 /// pieces, whichever comes first; reaching max_pieces throws GaveUp.
 struct SearchLimits {
   long double horizon = std::numeric_limits<long double>::infinity();  ///< max elapsed time
-  long max_pieces = 20'000'000;
+  long max_pieces = 20'000'000;  ///< max monotone pieces examined
 };
 
 /// The first root \f$t > \mathrm{origin}\f$ of \f$f\f$ reached from below, assuming

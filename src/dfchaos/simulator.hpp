@@ -17,16 +17,22 @@ namespace dfchaos {
 struct SimulationEvent {
   double t = 0;      ///< instant (real)
   Instant when;      ///< the same as turn and phase
-  Regime before = Regime::Free, after = Regime::Free;
-  TransitionKind kind = TransitionKind::InstantaneousStop;
-  double x = 0, y = 0;
-  double v_before = 0, v_after = 0;
+  Regime before = Regime::Free;  ///< regime before the event
+  Regime after = Regime::Free;   ///< regime after the event
+  TransitionKind kind = TransitionKind::InstantaneousStop;  ///< fp or is
+  double x = 0;                  ///< position of the mass
+  double y = 0;                  ///< position of the delimiter
+  double v_before = 0;           ///< velocity just before
+  double v_after = 0;            ///< velocity just after
 };
 
 /// A state sampled on a regular time grid.
 struct Sample {
-  double t = 0, x = 0, y = 0, v = 0;
-  Regime regime = Regime::Free;
+  double t = 0;                  ///< time
+  double x = 0;                  ///< position of the mass
+  double y = 0;                  ///< position of the delimiter
+  double v = 0;                  ///< velocity of the mass
+  Regime regime = Regime::Free;  ///< regime at t
 };
 
 /// Bounds and sampling of a simulation.
@@ -38,9 +44,9 @@ struct SimulationOptions {
 
 /// The outcome of a simulation.
 struct Simulation {
-  Regime initial_regime = Regime::Free;
-  std::vector<SimulationEvent> events;
-  std::vector<Sample> samples;
+  Regime initial_regime = Regime::Free;  ///< regime chosen at the initial state
+  std::vector<SimulationEvent> events;   ///< every regime change, in time order
+  std::vector<Sample> samples;           ///< the regular samples (if requested)
   MechanicalState final_state;  ///< at t_end
 };
 

@@ -37,7 +37,8 @@ SuperstableCheck superstable_check(const Parameters& p, int scan = 20000);
 
 /// A maximal interval of \f$b\f$ (at fixed \f$a, q\f$) on which (21) or (22) holds.
 struct SuperstableWindow {
-  double b_lo = 0, b_hi = 0;
+  double b_lo = 0;         ///< left end of the window
+  double b_hi = 0;         ///< right end of the window
   int condition = 0;       ///< 21 or 22
 };
 

@@ -20,10 +20,10 @@ namespace dfchaos {
 
 /// \f$T\f$ restricted to \f$K_\sigma \subset J_\sigma\f$, monotone onto \f$[t_2, \text{top}]\f$, and its inverse.
 struct InverseBranch {
-  CoveringSegment J;
+  CoveringSegment J;      ///< the covering segment \f$J_\sigma\f$
   double k_at_t2 = 0;     ///< end of \f$K\f$ where \f$T = t_2\f$ (the edge of the arc where \f$T \equiv t_2\f$)
   double k_at_top = 0;    ///< end of \f$K\f$ where \f$T = \text{top}\f$
-  double top = 0;
+  double top = 0;         ///< upper end of the covered target \f$[t_2, \text{top}]\f$
   bool monotone = false;  ///< strict monotonicity verified on a grid of K
 };
 

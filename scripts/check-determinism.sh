@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# Determinism: runs every experiment twice into separate folders, once with one OpenMP thread and
+# once with two, and compares the SHA-256 manifests of data/ and tables/ (and, if present, the
+# manifest of the last `make reproduce`). Any difference is printed and fails the check.
+set -euo pipefail
+build=${1:-build}
+abs=$(cd "$build" && pwd)
+manifest() { (cd "$1" && find data tables -type f ! -name '*.tmp' ! -name 'build-info.tex' | LC_ALL=C sort | xargs sha256sum); }
+for t in 1 2; do
+  out="$abs/determinism/threads-$t"
+  rm -rf "$out"
+  mkdir -p "$out"
+  echo "check-determinism: all experiments with OMP_NUM_THREADS=$t"
+  for exe in "$abs"/bin/experiments/*; do
+    OMP_NUM_THREADS=$t "$exe" --out "$out" 2> "$out/$(basename "$exe").log" || { cat "$out/$(basename "$exe").log"; exit 1; }
+  done
+  manifest "$out" > "$out/MANIFEST.sha256"
+done
+status=0
+if ! diff "$abs/determinism/threads-1/MANIFEST.sha256" "$abs/determinism/threads-2/MANIFEST.sha256"; then
+  echo "check-determinism: outputs differ between 1 and 2 threads" >&2
+  status=1
+fi
+if [[ -f "$abs/MANIFEST.sha256" ]]; then
+  if ! diff <(grep -v 'build-info.tex' "$abs/MANIFEST.sha256") "$abs/determinism/threads-1/MANIFEST.sha256"; then
+    echo "check-determinism: outputs differ from the last make reproduce ($abs/MANIFEST.sha256)" >&2
+    status=1
+  fi
+fi
+((status == 0)) && echo "check-determinism: identical manifests ($(wc -l < "$abs/determinism/threads-1/MANIFEST.sha256") files)"
+exit $status
