@@ -21,6 +21,11 @@ struct Set {
   double b, q;
 };
 
+std::string set_name(const ::testing::TestParamInfo<Set>& info) {
+  static const char* const names[] = {"b0_01_q0_85", "b1e_4_q0_95", "b0_05_q0_7"};
+  return names[info.index];
+}
+
 class LongOrbit : public ::testing::TestWithParam<Set> {};
 
 TEST_P(LongOrbit, TenMillionStepsStayFiniteAndInTheArc) {
@@ -56,9 +61,6 @@ INSTANTIATE_TEST_SUITE_P(Sets, LongOrbit,
                          ::testing::Values(Set{0.01, 0.85},    // Lemma 1 holds, chaotic covering
                                            Set{1e-4, 0.95},    // long flights (~10^4 time units)
                                            Set{0.05, 0.7}),    // Lemma 1 fails: scenario D occurs
-                         [](const ::testing::TestParamInfo<Set>& info) {
-                           const char* names[] = {"b0_01_q0_85", "b1e_4_q0_95", "b0_05_q0_7"};
-                           return std::string(names[info.index]);
-                         });
+                         set_name);
 
 }  // namespace
