@@ -19,7 +19,7 @@ STAMPS      := $(EXPERIMENTS:%=$(BUILD)/stamps/%.ok)
 FIGS        := $(FIGURES:%=$(BUILD)/figures/%.tex)
 TEXINPUTS_REPORT := $(CURDIR)/paper:$(ABS)/figures:$(ABS)/tables:
 
-.PHONY: help deps deps-report configure build test reproduce experiments figures report manifest \
+.PHONY: help deps deps-report configure build build-tools test reproduce experiments figures report manifest \
         docs bench clean test-sanitize test-clang check-determinism
 
 help:
@@ -54,14 +54,18 @@ configure:
 build: deps configure
 	@$(CMAKE) --build $(BUILD) -j $(JOBS)
 
+# Only what the reproduction needs: the library, the dfchaos tool and the experiments.
+build-tools: deps configure
+	@$(CMAKE) --build $(BUILD) -j $(JOBS) --target reproduce_tools
+
 test: build
 	@ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
 
 # ---- the reproduce pipeline -------------------------------------------------------------
 
 reproduce: deps-report
-	@echo "== [1/5] build"
-	@$(MAKE) --no-print-directory build
+	@echo "== [1/5] build (library, dfchaos tool, experiments)"
+	@$(MAKE) --no-print-directory build-tools
 	@echo "== [2/5] experiments ($(words $(EXPERIMENTS)); only those whose executable changed)"
 	@$(MAKE) --no-print-directory -j 2 --output-sync=target experiments
 	@echo "== [3/5] figures ($(words $(FIGURES)))"
@@ -103,7 +107,8 @@ manifest:
 docs: deps-report configure
 	@bash scripts/build-docs.sh $(BUILD)
 
-bench: build
+bench: deps configure
+	@$(CMAKE) --build $(BUILD) -j $(JOBS) --target bench_return_map
 	@$(BUILD)/bin/bench_return_map --out=$(BUILD)
 
 # ---- reliability checks (issue 7) -----------------------------------------------------------
@@ -120,7 +125,7 @@ test-clang:
 	@$(CMAKE) --build $(BUILD)-clang -j $(JOBS)
 	@ctest --test-dir $(BUILD)-clang --output-on-failure -j $(JOBS)
 
-check-determinism: build
+check-determinism: build-tools
 	@bash scripts/check-determinism.sh $(BUILD)
 
 clean:

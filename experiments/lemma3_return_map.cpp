@@ -12,13 +12,6 @@
 
 using namespace dfchaos;
 
-namespace {
-double circle_distance(double x, double y) {
-  const double d = std::fabs(x - y);
-  return std::min(d, two_pi - d);
-}
-}  // namespace
-
 int main(int argc, char** argv) {
   int n = 4000, ode_every = 40;
   return experiments::run(

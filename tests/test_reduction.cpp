@@ -17,10 +17,6 @@ namespace {
 constexpr int kSteps = 150;
 constexpr double kPhaseTol = 1e-10;
 
-double circle_distance(double x, double y) {
-  const double d = std::fabs(x - y);
-  return std::min(d, 2 * M_PI - d);
-}
 
 /// Simulates `steps` steps of T from rest at th0 and checks each free start of the simulator against
 /// one step of T from the previous simulated free start (one-step consistency: no chaotic

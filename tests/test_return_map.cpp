@@ -15,10 +15,6 @@ namespace {
 constexpr double kOdeAgreement = 1e-7;  // exact T vs integrated T (event tolerance 1e-12)
 constexpr double kAccuracy = 1e-9;      // |T - T_ref|, the accuracy promised for b/a in [1e-5, 0.2]
 
-double circle_distance(double x, double y) {
-  const double d = std::fabs(x - y);
-  return std::min(d, 2 * M_PI - d);
-}
 }  // namespace
 
 class AgainstIntegration : public ::testing::TestWithParam<std::pair<double, double>> {};

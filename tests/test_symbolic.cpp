@@ -10,13 +10,6 @@
 
 using namespace dfchaos;
 
-namespace {
-double circle_distance(double x, double y) {
-  const double d = std::fabs(x - y);
-  return std::min(d, 2 * M_PI - d);
-}
-}  // namespace
-
 class Symbolic : public ::testing::Test {
  protected:
   void SetUp() override {

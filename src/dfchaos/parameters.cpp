@@ -4,6 +4,7 @@
 #include <gsl/gsl_roots.h>
 
 #include <cfloat>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -118,6 +119,11 @@ std::string Parameters::describe() const {
 }
 
 // ---- phase.hpp ------------------------------------------------------------------------------
+
+double circle_distance(double x, double y) {
+  const double d = std::fabs(std::fmod(x - y, two_pi));
+  return std::min(d, two_pi - d);
+}
 
 double wrap_phase(double t) {
   long double r = std::fmod(static_cast<long double>(t), two_pi_l);

@@ -23,6 +23,9 @@ inline constexpr double pi = 3.141592653589793238462643383279;
 /// Reduces any finite real \f$t\f$ to its phase \f$t \bmod 2\pi \in [0, 2\pi)\f$.
 double wrap_phase(double t);
 
+/// Distance of two phases on the circle, \f$\min_k |x - y + 2\pi k| \in [0, \pi]\f$.
+double circle_distance(double x, double y);
+
 /// An instant \f$t = 2\pi\,\mathrm{turn} + \mathrm{phase}\f$, \f$\mathrm{phase} \in [0, 2\pi)\f$.
 struct Instant {
   std::int64_t turn = 0;  ///< number of whole forcing periods

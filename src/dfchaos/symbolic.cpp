@@ -7,13 +7,6 @@
 
 namespace dfchaos {
 
-namespace {
-double circle_distance(double a, double b) {
-  const double d = std::fabs(a - b);
-  return std::min(d, two_pi - d);
-}
-}  // namespace
-
 InverseBranch make_inverse_branch(const Parameters& p, const CoveringSegment& J, double top, int check) {
   const double t2 = *p.t2();
   InverseBranch g;
