@@ -31,6 +31,12 @@ inline int run(int argc, char** argv, const std::string& name, const std::string
   app.add_option("--out", o.out, "output root (default build)");
   app.add_flag("--fast", o.fast, "smoke mode: coarse grids");
   add_options(app);
+  // An empty value would be read as 0 by the option parser: refuse it whatever the option.
+  for (int i = 1; i < argc; ++i)
+    if (argv[i][0] == '\0') {
+      std::fprintf(stderr, "%s: error: %s: empty value (a number is required)\n", name.c_str(), i > 1 ? argv[i - 1] : "argument");
+      return 2;
+    }
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

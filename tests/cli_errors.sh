@@ -31,6 +31,8 @@ expect_ok() {  # expect_ok HEADER-REGEX ARGS...
 
 P=(--a 1 --b 0.01 --q 0.85)
 expect_error "--a"    map --a x --b 0.01 --q 0.85 --theta 4
+expect_error "--a"    map --a "" --b 0.01 --q 0.85 --theta 4
+expect_error "--steps" orbit --a 1 --b 0.01 --q 0.85 --theta0 4 --steps ""
 expect_error "a:"     map --a nan --b 0.01 --q 0.85 --theta 4
 expect_error "a:"     map --a 0 --b 0.01 --q 0.85 --theta 4
 expect_error "a:"     map --a -1 --b 0.01 --q 0.85 --theta 4

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Bad-input battery for every experiment: for each numeric option its --help lists, a non-number,
-# NaN, infinities and a negative value (and, for integer options, a huge one) must give exit
+# an empty string, NaN, infinities and a negative value (for counts also zero and huge values; for
+# the model's b and q also zero, and b >= a/2) must give exit
 # status 2, exactly one line on stderr naming the option, nothing on stdout, and no output file at
 # all (outputs are written only at the end, atomically). Usage: experiment_errors.sh BIN_DIR
 set -u
@@ -17,8 +18,12 @@ for exe in "$dir"/*; do
   for entry in "${opts[@]}"; do
     opt=${entry%% *}
     type=${entry##* }
-    values=(x nan inf -inf -1)
-    [[ $type == INT ]] && values+=(1e300 99999999999999999999)
+    values=(x nan inf -inf -1 "")
+    # zero: an empty grid or count (except options for which 0 is meaningful)
+    [[ $type == INT && $opt != --transient && $opt != --uniform ]] && values+=(0 1e300 99999999999999999999)
+    # the parameters of the model: zero, and b >= a/2 (no return map)
+    [[ $opt == --b || $opt == --q ]] && values+=(0)
+    [[ $opt == --b ]] && values+=(0.5 0.7)
     for v in "${values[@]}"; do
       checks=$((checks + 1))
       out="$tmp/out-$name"

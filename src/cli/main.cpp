@@ -100,6 +100,12 @@ int main(int argc, char** argv) {
       return 2;
     }
   }
+  // An empty value would be read as 0 by the option parser: refuse it whatever the option.
+  for (int i = 1; i < argc; ++i)
+    if (argv[i][0] == '\0') {
+      std::fprintf(stderr, "dfchaos: error: %s: empty value (a number is required)\n", i > 1 ? argv[i - 1] : "argument");
+      return 2;
+    }
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
