@@ -4,11 +4,13 @@
 set -u
 cli=$1
 fails=0
+checks=0
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
 expect_error() {  # expect_error NAME-IN-MESSAGE ARGS...
   local name=$1; shift
+  checks=$((checks + 1))
   "$cli" "$@" >"$tmp/out" 2>"$tmp/err"
   local rc=$?
   local lines; lines=$(wc -l <"$tmp/err")
@@ -21,6 +23,7 @@ expect_error() {  # expect_error NAME-IN-MESSAGE ARGS...
 }
 expect_ok() {  # expect_ok HEADER-REGEX ARGS...
   local pat=$1; shift
+  checks=$((checks + 1))
   if ! "$cli" "$@" >"$tmp/out" 2>"$tmp/err" || ! head -n 3 "$tmp/out" | grep -qE "$pat"; then
     echo "FAIL: dfchaos $* should succeed with /$pat/: $(head -c 300 "$tmp/err")"
     fails=$((fails + 1))
@@ -69,6 +72,7 @@ expect_ok "^n	theta	scenario	elapsed	penetration	time	y$" orbit "${P[@]}" --thet
 expect_ok "^t	phase	before	after	kind" simulate "${P[@]}" --x0 0 --y0 0 --v0 0 --t0 4 --t-end 100 --sample 1
 expect_ok "^quantity	value" info "${P[@]}"
 
+checks=$((checks + 1))
 [[ $(wc -l < <("$cli" map "${P[@]}" --grid 3.5 4.5 7)) -eq 8 ]] || { echo "FAIL: --grid N gives N rows"; fails=$((fails + 1)); }
-echo "$((fails == 0 ? 1 : 0)) passed, $fails failed"
+echo "$((checks - fails)) passed, $fails failed"
 exit $((fails > 0))
