@@ -17,7 +17,6 @@ EXPERIMENTS := $(sort $(basename $(notdir $(wildcard experiments/*.cpp))))
 FIGURES     := $(sort $(basename $(notdir $(wildcard figures/fig_*.gp))))
 STAMPS      := $(EXPERIMENTS:%=$(BUILD)/stamps/%.ok)
 FIGS        := $(FIGURES:%=$(BUILD)/figures/%.tex)
-TEXINPUTS_REPORT := $(CURDIR)/paper:$(ABS)/figures:$(ABS)/tables:
 
 .PHONY: help deps deps-report configure build build-tools test reproduce experiments figures report manifest \
         docs bench clean test-sanitize test-clang check-determinism
@@ -97,7 +96,7 @@ $(BUILD)/tables/build-info.tex: $(BUILD)/bin/dfchaos
 	@mkdir -p $(@D)
 	@$< provenance --latex > $@.tmp && mv $@.tmp $@
 
-report: $(FIGS) $(BUILD)/tables/build-info.tex
+report: $(FIGS) $(BUILD)/tables/build-info.tex $(wildcard $(BUILD)/bench/bench.tex)
 	@bash scripts/build-report.sh $(BUILD)
 
 manifest:

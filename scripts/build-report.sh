@@ -32,8 +32,11 @@ for g in "$root"/figures/fig_*.gp; do
   fi
 done
 
-export TEXINPUTS="$root/paper:$abs/figures:$abs/tables:"
-if ! (cd "$root/paper" && latexmk -pdf -interaction=nonstopmode -halt-on-error -file-line-error \
+export TEXINPUTS="$root/paper:$abs/figures:$abs/tables:$abs/bench:"
+force=()
+# latexmk does not know of a table that did not exist at its last run (the optional bench table)
+if [[ -f "$abs/bench/bench.tex" && -f "$out/report.pdf" && "$abs/bench/bench.tex" -nt "$out/report.pdf" ]]; then force=(-g); fi
+if ! (cd "$root/paper" && latexmk "${force[@]}" -pdf -interaction=nonstopmode -halt-on-error -file-line-error \
         -outdir="$out" report.tex > "$out/latexmk.out" 2>&1); then
   rm -f "$out/report.fdb_latexmk"   # so that the next run retries instead of reporting a stale state
   echo "build-report: LaTeX failed; the first errors:" >&2
