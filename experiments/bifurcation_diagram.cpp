@@ -22,7 +22,7 @@ int main(int argc, char** argv) {
   double q_fixed = 0.85, b_fixed = 0.01;
   return experiments::run(
       argc, argv, "bifurcation_diagram", "orbit diagrams of T with the Lyapunov exponent",
-      [&](CLI::App& app) {
+      [&](experiments::OptionSet& app) {
         app.add_option("--nb", nb, "values of b/a, log-spaced in [1e-3, 0.2]");
         app.add_option("--nq", nq, "values of q/a in [0.5, 0.99]");
         app.add_option("--transient", transient, "steps discarded");

@@ -13,7 +13,7 @@ int main(int argc, char** argv) {
   int samples = 100000;
   return experiments::run(
       argc, argv, "eq1_vartheta0", "vartheta0 of Eq. (1), uniqueness and the paper's digits",
-      [&](CLI::App& app) { app.add_option("--samples", samples, "grid points on (0, pi/2] for the uniqueness scan"); },
+      [&](experiments::OptionSet& app) { app.add_option("--samples", samples, "grid points on (0, pi/2] for the uniqueness scan"); },
       [&](const experiments::Options& o, ExperimentOutput& out) {
         if (samples < 10 || samples > 100'000'000) throw InvalidParameter("samples", "10 <= samples <= 10^8", samples);
         if (o.fast) samples = std::min(samples, 2000);

@@ -14,7 +14,7 @@ int main(int argc, char** argv) {
   double ba_min = 1e-5;
   return experiments::run(
       argc, argv, "lemma1_progression_stop", "Lemma 1: where the progression from rest at t0 stops",
-      [&](CLI::App& app) {
+      [&](experiments::OptionSet& app) {
         app.add_option("--nq", nq, "grid points of q/a in (0, 1)");
         app.add_option("--nb", nb, "grid points of b/a, log-spaced in [ba-min, 0.49]");
         app.add_option("--ba-min", ba_min, "smallest b/a");

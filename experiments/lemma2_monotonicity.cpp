@@ -13,7 +13,7 @@ int main(int argc, char** argv) {
   double qa = 0.85;
   return experiments::run(
       argc, argv, "lemma2_monotonicity", "Lemma 2: monotonicity and discontinuities of T1 on L0",
-      [&](CLI::App& app) {
+      [&](experiments::OptionSet& app) {
         app.add_option("--n", n, "dense grid points on L0 for the monotonicity check");
         app.add_option("--q", qa, "q/a (T1 does not depend on it; recorded for completeness)");
       },

@@ -16,7 +16,7 @@ int main(int argc, char** argv) {
   int n = 4000, ode_every = 40;
   return experiments::run(
       argc, argv, "lemma3_return_map", "Lemma 3: the return map T",
-      [&](CLI::App& app) {
+      [&](experiments::OptionSet& app) {
         app.add_option("--n", n, "grid points of theta in [t2, t3)");
         app.add_option("--ode-every", ode_every, "cross-check every k-th point by numerical integration");
       },

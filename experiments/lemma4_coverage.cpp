@@ -64,7 +64,7 @@ int main(int argc, char** argv) {
   double ba_min = 1e-6;
   return experiments::run(
       argc, argv, "lemma4_coverage", "Lemma 4: covering segments J0, J1, and b0 for the proof and for the statement",
-      [&](CLI::App& app) {
+      [&](experiments::OptionSet& app) {
         app.add_option("--nq", nq, "grid points of q/a in (sin vartheta0, 1)");
         app.add_option("--nb", nb, "grid points of b/a, log-spaced in [ba-min, 0.045]");
         app.add_option("--ba-min", ba_min, "smallest b/a");

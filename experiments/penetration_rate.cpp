@@ -53,7 +53,7 @@ int main(int argc, char** argv) {
   double q_fixed = 0.85;
   return experiments::run(
       argc, argv, "penetration_rate", "mean advance of the delimiter per unit time (drilling rate)",
-      [&](CLI::App& app) {
+      [&](experiments::OptionSet& app) {
         app.add_option("--nb", nb, "values of b/a (log-spaced in [1e-4, 0.3]) on the line");
         app.add_option("--plane-n", plane_n, "grid size per axis of the (q/a, b/a) plane");
         app.add_option("--starts", starts, "initial phases per parameter value");

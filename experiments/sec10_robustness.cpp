@@ -113,7 +113,7 @@ int main(int argc, char** argv) {
   int n = 400, n_check = 200;
   return experiments::run(
       argc, argv, "sec10_robustness", "Section 10: the covering of Lemma 4 under a smooth perturbation of the force",
-      [&](CLI::App& app) {
+      [&](experiments::OptionSet& app) {
         app.add_option("--b", b, "b/a (a = 1)");
         app.add_option("--q", q, "q/a");
         app.add_option("--n", n, "grid points per widened segment");

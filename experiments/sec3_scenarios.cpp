@@ -29,7 +29,7 @@ int main(int argc, char** argv) {
   int n = 4000;
   return experiments::run(
       argc, argv, "sec3_scenarios", "Section 3: scenarios of the motion between two free flights",
-      [&](CLI::App& app) { app.add_option("--n", n, "grid points of theta in [t2, t3) per parameter set"); },
+      [&](experiments::OptionSet& app) { app.add_option("--n", n, "grid points of theta in [t2, t3) per parameter set"); },
       [&](const experiments::Options& o, ExperimentOutput& out) {
         if (n < 10 || n > 10'000'000) throw InvalidParameter("n", "10 <= n <= 10^7", n);
         if (o.fast) n = std::min(n, 200);

@@ -12,7 +12,7 @@ int main(int argc, char** argv) {
   int n = 4000;
   return experiments::run(
       argc, argv, "sec4_next_hit", "Section 4: T1 and Eqs. (12), (13), (16)",
-      [&](CLI::App& app) { app.add_option("--n", n, "grid points of theta"); },
+      [&](experiments::OptionSet& app) { app.add_option("--n", n, "grid points of theta"); },
       [&](const experiments::Options& o, ExperimentOutput& out) {
         if (n < 10 || n > 10'000'000) throw InvalidParameter("n", "10 <= n <= 10^7", n);
         if (o.fast) n = std::min(n, 200);

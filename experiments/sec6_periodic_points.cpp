@@ -15,7 +15,7 @@ int main(int argc, char** argv) {
   int m_max = 20;
   return experiments::run(
       argc, argv, "sec6_periodic_points", "Section 6: periodic points of every period with itinerary (0..01)",
-      [&](CLI::App& app) {
+      [&](experiments::OptionSet& app) {
         app.add_option("--b", b, "b/a (a = 1)");
         app.add_option("--q", q, "q/a");
         app.add_option("--m-max", m_max, "largest period");

@@ -15,7 +15,7 @@ int main(int argc, char** argv) {
   int n_max = 12, lap_grid = 400000;
   return experiments::run(
       argc, argv, "sec7_symbolic", "Section 7: symbolic dynamics on J0, J1",
-      [&](CLI::App& app) {
+      [&](experiments::OptionSet& app) {
         app.add_option("--b", b, "b/a (a = 1)");
         app.add_option("--q", q, "q/a");
         app.add_option("--n-max", n_max, "longest word length");

@@ -31,7 +31,7 @@ int main(int argc, char** argv) {
   double periods = 60;
   return experiments::run(
       argc, argv, "sec9_regimes", "Remark of Section 9: eventual regimes outside b < a/2, by the full simulator",
-      [&](CLI::App& app) { app.add_option("--periods", periods, "forcing periods simulated per initial state"); },
+      [&](experiments::OptionSet& app) { app.add_option("--periods", periods, "forcing periods simulated per initial state"); },
       [&](const experiments::Options& o, ExperimentOutput& out) {
         experiments::require_range("periods", periods, 10, 1e5);
         if (o.fast) periods = std::min(periods, 20.0);

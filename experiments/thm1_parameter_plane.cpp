@@ -19,7 +19,7 @@ int main(int argc, char** argv) {
   int nq = 100, nb = 100;
   return experiments::run(
       argc, argv, "thm1_parameter_plane", "Theorems 1 and 2 over the (q/a, b/a) plane",
-      [&](CLI::App& app) {
+      [&](experiments::OptionSet& app) {
         app.add_option("--nq", nq, "grid points of q/a in (sin vartheta0, 1)");
         app.add_option("--nb", nb, "grid points of b/a, log-spaced in [1e-4, 0.1]");
       },

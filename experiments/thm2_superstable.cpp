@@ -14,7 +14,7 @@ int main(int argc, char** argv) {
   std::vector<double> qas{0.85, 0.95, 0.6};
   return experiments::run(
       argc, argv, "thm2_superstable", "Theorem 2: superstable fixed point t2, windows in b/a",
-      [&](CLI::App& app) {
+      [&](experiments::OptionSet& app) {
         app.add_option("--samples", samples, "samples of theta2(t2), uniform in a/b, for the window search");
         app.add_option("--grid", grid_points, "independent grid points (uniform in a/b) for the cross-check");
         app.add_option("--q", qas, "values of q/a");
