@@ -19,6 +19,7 @@ rm -f "$pages"/*.md
 } > "$pages/experiments.md"
 for src in "$root"/experiments/*.cpp; do
   name=$(basename "$src" .cpp)
+  [[ $name == harness ]] && continue  # the shared shell, not an experiment
   brief=$(grep -m1 '@brief' "$src" | sed 's|.*@brief *||')
   echo "- @subpage exp_$name — $brief" >> "$pages/experiments.md"
   {
