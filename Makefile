@@ -32,7 +32,7 @@ help:
 	@echo "  make report      typeset $(BUILD)/paper/report.pdf from what is already computed"
 	@echo "  make manifest    write $(BUILD)/MANIFEST.sha256 over data and tables"
 	@echo "  make docs        Doxygen HTML of the library and experiments in $(BUILD)/docs"
-	@echo "  make bench       T per second vs the GSL odeiv2 baseline: $(BUILD)/bench/bench.json, tables/bench.tex"
+	@echo "  make bench       T per second vs the GSL odeiv2 baseline: $(BUILD)/bench/bench.json, bench.tex"
 	@echo "  make test-sanitize  build with ASan+UBSan in $(BUILD)-sanitize and run every test"
 	@echo "  make test-clang  build warning-free with clang++ in $(BUILD)-clang and run every test"
 	@echo "  make check-determinism  rerun every experiment with 1 and with 2 threads; manifests must match"

@@ -126,7 +126,8 @@ double circle_distance(double x, double y) {
 }
 
 double wrap_phase(double t) {
-  long double r = std::fmod(static_cast<long double>(t), two_pi_l);
+  // fmod is exact and returns t itself when |t| < 2 pi: skip the (slow) long double fmod then.
+  long double r = std::fabs(t) < two_pi ? static_cast<long double>(t) : std::fmod(static_cast<long double>(t), two_pi_l);
   if (r < 0) r += two_pi_l;
   double d = static_cast<double>(r);
   if (d >= two_pi) d = 0.0;
@@ -134,6 +135,9 @@ double wrap_phase(double t) {
 }
 
 Instant Instant::from_time(double t) {
+  // Fast path (no long double division): a time already inside [0, 2 pi) is its own phase. The
+  // general formula below gives bit-identical results there (k = 0, or k = 1 and an exact undo).
+  if (t >= 0 && t < two_pi) return Instant{0, t};
   const long double tl = t;
   const long double k = std::floor(tl / two_pi_l);
   long double r = tl - k * two_pi_l;
@@ -155,6 +159,11 @@ bool before(const Instant& x, const Instant& y) {
 
 Instant advance(const Instant& t, long double delta) {
   const long double total = static_cast<long double>(t.phase) + delta;
+  // Fast path, bit-identical to the general formula: the sum stays inside the same turn.
+  if (total >= 0 && total < two_pi_l) {
+    const double ph = static_cast<double>(total);
+    if (ph < two_pi) return Instant{t.turn, ph};
+  }
   const long double k = std::floor(total / two_pi_l);
   long double r = total - k * two_pi_l;
   std::int64_t turn = t.turn + static_cast<std::int64_t>(k);

@@ -1,6 +1,7 @@
 #include "dfchaos/roots.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -22,17 +23,28 @@ long double QuadraticPlusHarmonic::curvature_at(double phi) const {
 long double QuadraticPlusHarmonic::value(const Instant& t) const { return value_at(elapsed(origin, t), t.phase); }
 long double QuadraticPlusHarmonic::slope(const Instant& t) const { return slope_at(elapsed(origin, t), t.phase); }
 
+namespace {
+
+/// The zeros of \f$f''\f$ on one period, ascending, into out[0..1]; returns how many (0 or 2).
+/// A sin t + B cos t = R sin(t + delta), delta = atan2(B, A); zeros of f'' solve sin(t+delta) = 2 alpha / R.
+int inflection_phases_into(const QuadraticPlusHarmonic& f, double out[2]) {
+  const double R = std::hypot(f.A, f.B);
+  if (R == 0) return 0;
+  const double w = static_cast<double>(2 * f.alpha) / R;
+  if (!(std::fabs(w) < 1)) return 0;  // f'' keeps one sign (tangency at most): f' monotone
+  const double delta = std::atan2(f.B, f.A), s = std::asin(w);
+  out[0] = wrap_phase(s - delta);
+  out[1] = wrap_phase(pi - s - delta);
+  if (out[1] < out[0]) std::swap(out[0], out[1]);
+  return 2;
+}
+
+}  // namespace
+
 std::vector<double> QuadraticPlusHarmonic::inflection_phases() const {
-  // A sin t + B cos t = R sin(t + delta), delta = atan2(B, A); zeros of f'' solve sin(t+delta) = 2 alpha / R.
-  const double R = std::hypot(A, B);
-  std::vector<double> out;
-  if (R == 0) return out;
-  const double w = static_cast<double>(2 * alpha) / R;
-  if (!(std::fabs(w) < 1)) return out;  // f'' keeps one sign (tangency at most): f' monotone
-  const double delta = std::atan2(B, A), s = std::asin(w);
-  out = {wrap_phase(s - delta), wrap_phase(pi - s - delta)};
-  std::sort(out.begin(), out.end());
-  return out;
+  double buf[2];
+  const int n = inflection_phases_into(*this, buf);
+  return std::vector<double>(buf, buf + n);
 }
 
 namespace {
@@ -91,17 +103,24 @@ std::optional<UpCrossing> first_upcrossing(const QuadraticPlusHarmonic& f, const
   if (!std::isfinite(static_cast<double>(limit)))
     throw GaveUp("first_upcrossing: no horizon and no root bound; the search would not end");
 
-  std::vector<double> breaks = f.inflection_phases();
+  // The piece boundaries on one period: the inflections and 0 (a fixed array: this runs once per
+  // evaluation of T1, and a heap allocation here cost more than the arithmetic).
+  std::array<double, 3> break_buf{};
+  const int n_inflections = inflection_phases_into(f, break_buf.data());
   // An inflection computed a few ulp away from the origin's phase (the origin *is* an inflection,
   // e.g. a start at rest at t2) would leave a sliver piece whose rounded slope has no meaning:
   // snap such a break onto the origin.
-  for (double& b : breaks) {
-    const double d = std::fabs(b - f.origin.phase);
-    if (std::min(d, two_pi - d) < 1e-12) b = f.origin.phase;
+  for (int i = 0; i < n_inflections; ++i) {
+    const double d = std::fabs(break_buf[i] - f.origin.phase);
+    if (std::min(d, two_pi - d) < 1e-12) break_buf[i] = f.origin.phase;
   }
-  breaks.push_back(0.0);
-  std::sort(breaks.begin(), breaks.end());
-  breaks.erase(std::unique(breaks.begin(), breaks.end()), breaks.end());
+  // 0 first (phases lie in [0, 2 pi)), then the inflections in ascending order (the snap may
+  // have swapped two inflections that were within 1e-12 of each other).
+  if (n_inflections == 2 && break_buf[1] < break_buf[0]) std::swap(break_buf[0], break_buf[1]);
+  for (int i = n_inflections; i > 0; --i) break_buf[i] = break_buf[i - 1];
+  break_buf[0] = 0.0;
+  const auto breaks_begin = break_buf.begin();
+  const auto breaks_end = std::unique(break_buf.begin(), break_buf.begin() + n_inflections + 1);
 
   Instant cursor = f.origin;
   long double s_cursor = 0;
@@ -141,8 +160,8 @@ std::optional<UpCrossing> first_upcrossing(const QuadraticPlusHarmonic& f, const
       throw GaveUp("first_upcrossing: gave up after " + std::to_string(limits.max_pieces) + " monotone pieces");
 
     // The piece [cursor, end]: up to the next inflection or period boundary, the limit, or the window.
-    auto next = std::upper_bound(breaks.begin(), breaks.end(), cursor.phase);
-    Instant end = next == breaks.end() ? Instant{cursor.turn + 1, 0.0} : Instant{cursor.turn, *next};
+    auto next = std::upper_bound(breaks_begin, breaks_end, cursor.phase);
+    Instant end = next == breaks_end ? Instant{cursor.turn + 1, 0.0} : Instant{cursor.turn, *next};
     long double s_end = elapsed(f.origin, end);
     long double cut = limit;
     if (we > 0 && ws > s_cursor) cut = std::min(cut, ws);
@@ -168,12 +187,45 @@ std::optional<UpCrossing> first_upcrossing(const QuadraticPlusHarmonic& f, const
                                                  2 * f.alpha - static_cast<long double>(f.A * sn + f.B * cs)};
     };
 
+    auto crossing_at = [&](double u) {
+      UpCrossing r;
+      r.t = advance(cursor, u);
+      r.s = s0 + u;
+      r.slope = static_cast<double>(der(u));
+      r.pieces = pieces;
+      return r;
+    };
     if (L > 0) {
-      const long double d0 = der(0), d1 = der(L);
+      // Value and slope at both ends (one sine-cosine evaluation each).
+      const auto [f_end, d1] = val_der(L);
+      const auto [f_start_computed, d0] = val_der(0);
+      const long double f_start = left_known_negative ? -1.0L : f_start_computed;
+      // On a piece f' is monotone, so f is increasing, decreasing, convex with one minimum or
+      // concave with one maximum. Two shortcuts avoid the split point m below:
+      // (1) f(0) < 0 <= f(L): in every one of these shapes there is exactly one up-crossing in
+      //     (0, L], with f < 0 before it and f >= 0 after it, so the sign bracket [0, L] is valid
+      //     (the solver bisects where f' < 0).
+      if (f_start < 0 && f_end >= 0) return crossing_at(solve_increasing(val_der, 0, L, phi0, f_start, f_end));
+      // (2) f < 0 at both ends: only a concave piece can rise above 0 in between. Its graph lies
+      //     below the tangent lines at both ends, so its maximum is at most where the tangents
+      //     cross; the piece is skipped when that bound is negative beyond a rounding margin (the
+      //     terms of f are up to alpha s^2 in size).
+      bool skip = false;
+      if (f_start < 0 && f_end < 0) {
+        if (!(d0 > 0 && d1 < 0)) {
+          skip = true;
+        } else {
+          const long double s_far = s0 + L;
+          const long double margin = 1e-12L * (R + f.alpha * s_far * s_far + std::fabs(f.beta) * s_far + std::fabs(f.gamma) + 1);
+          const long double u_cross = std::clamp((f_end - d1 * L - f_start) / (d0 - d1), 0.0L, static_cast<long double>(L));
+          skip = std::min(f_start + d0 * u_cross, f_end + d1 * (u_cross - L)) < -margin;
+        }
+      }
+      // The general case: split at the zero m of f' and look for a crossing from below in each
+      // monotone part.
       double sub[3] = {0, L, L};
       int nsub = 1;
-      if ((d0 > 0 && d1 < 0) || (d0 < 0 && d1 > 0)) {
-        // f' is monotone on the piece: its single zero m splits it into two monotone parts.
+      if (!skip && ((d0 > 0 && d1 < 0) || (d0 < 0 && d1 > 0))) {
         const double m = d0 > 0 ? solve_increasing(
                                       [&](double u) {
                                         const auto [d, c] = der_curv(u);
@@ -184,22 +236,15 @@ std::optional<UpCrossing> first_upcrossing(const QuadraticPlusHarmonic& f, const
         sub[1] = m;
         nsub = 2;
       }
-      for (int i = 0; i < nsub; ++i) {
+      for (int i = 0; i < nsub && !skip; ++i) {
         const double u0 = sub[i], u1 = sub[i + 1];
         const long double dl = (i == 0) ? d0 : 0.0L, dr = (i + 1 == nsub) ? d1 : 0.0L;
         if (!(dl + dr > 0) || u1 <= u0) continue;  // f decreasing (or constant) here: no crossing from below
-        if (val(u1) < 0) continue;  // (evaluated twice when it is a root bracket: cheap next to the solve)
-        double u;
-        const long double f1 = val(u1);
-        const long double f0 = (u0 == 0 && left_known_negative) ? -1.0L : val(u0);
-        if (f0 >= 0) u = u0;  // a start not strictly below zero
-        else u = solve_increasing(val_der, u0, u1, phi0, f0, f1);
-        UpCrossing r;
-        r.t = advance(cursor, u);
-        r.s = s0 + u;
-        r.slope = static_cast<double>(der(u));
-        r.pieces = pieces;
-        return r;
+        const long double f1 = u1 == L ? f_end : val(u1);
+        if (f1 < 0) continue;
+        const long double f0 = u0 == 0 ? f_start : val(u0);
+        if (f0 >= 0) return crossing_at(u0);  // a start not strictly below zero
+        return crossing_at(solve_increasing(val_der, u0, u1, phi0, f0, f1));
       }
     }
     cursor = end;
