@@ -3,10 +3,13 @@
 // located by bisection on dG1/dt, must show no contact before the computed T1.
 #include <gtest/gtest.h>
 
+#include <cfloat>
 #include <cmath>
+#include <utility>
 
 #include "dfchaos/motion.hpp"
 #include "dfchaos/next_hit.hpp"
+#include "dfchaos/roots.hpp"
 #include "test_support.hpp"
 
 using namespace dfchaos;
@@ -116,4 +119,33 @@ TEST(FirstRoot, RegressionStartAtRestExactlyAtT2IsNotARoot) {
     const NextHit h = next_hit(p, *p.t2());
     EXPECT_GT(h.theta1 - *p.t2(), 1.0) << "b/a=" << ba;
   }
+}
+
+TEST(SolveIncreasing, RegressionConvergedNewtonStopsWithoutBisecting) {
+  // Bug fixed: once converged, the last Newton correction (a few ulp) landed on the bracket end
+  // that the same iteration had just moved to x, was rejected as leaving the bracket, and the
+  // solver bisected ~50 more times. Newton from a secant start needs well under 12 evaluations on
+  // these smooth increasing functions; the root must still be right to the stated tolerance.
+  int worst = 0;
+  for (int k = 0; k < 400; ++k) {
+    const double c = 0.5 + 3.0 * k / 400;  // roots spread over (0, 4)
+    int evaluations = 0;
+    auto gd = [&](double x) {
+      ++evaluations;
+      return std::pair<long double, long double>{static_cast<long double>(x) - c + 0.3L * std::sin(x), 1.0L + 0.3L * std::cos(x)};
+    };
+    const double lo = 0, hi = 4;
+    const double root = solve_increasing(gd, lo, hi, 0.0, gd(lo).first, gd(hi).first);
+    evaluations -= 2;  // the two end values above
+    worst = std::max(worst, evaluations);
+    // Reference: plain bisection in long double to the last bit.
+    long double a = lo, b = hi;
+    for (int it = 0; it < 200 && b - a > 0; ++it) {
+      const long double m = 0.5L * (a + b);
+      if (m <= a || m >= b) break;
+      if (m - c + 0.3L * std::sin(static_cast<double>(m)) < 0) a = m; else b = m;
+    }
+    EXPECT_NEAR(root, static_cast<double>(b), 4 * DBL_EPSILON * (hi + 1)) << "c=" << c;
+  }
+  EXPECT_LE(worst, 12);
 }
