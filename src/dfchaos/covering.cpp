@@ -37,6 +37,46 @@ bool verify_segment(const Parameters& p, CoveringSegment& s, int n) {
   return max_step <= 0.5 * (s.T_at_top - *p.t2()) || n < 4;
 }
 
+/// Looks for a phase with T = t2 on [lo, hi] (one continuity branch, label `label`) by a
+/// golden-section minimisation of T: on a branch T >= t2, equal to t2 exactly on the arcs where the
+/// progression ends before t2 (scenario B). Those arcs can be far narrower than any grid step
+/// (widths of 1e-6 and less at small b/a), while T falls towards them continuously, so following
+/// the descent finds them where sampling does not. Points of another branch count as +infinity.
+/// Bounded: 60 evaluations. Returns NaN when no such phase was met.
+double t2_arc_by_descent(const Parameters& p, double lo, double hi, const ContinuityLabel& label) {
+  const double t2 = *p.t2();
+  constexpr double kGolden = 0.6180339887498949;
+  auto value = [&](double th, bool& at_t2) {
+    const LabelledStep l = continuity_label(p, th);
+    at_t2 = l.label == label && l.step.T == t2;
+    return l.label == label ? l.step.T : INFINITY;
+  };
+  bool hit = false;
+  double x1 = hi - kGolden * (hi - lo), x2 = lo + kGolden * (hi - lo);
+  double f1 = value(x1, hit);
+  if (hit) return x1;
+  double f2 = value(x2, hit);
+  if (hit) return x2;
+  for (int it = 0; it < 58 && x1 < x2; ++it) {
+    if (f1 <= f2) {  // the minimum lies in [lo, x2]
+      hi = x2;
+      x2 = x1;
+      f2 = f1;
+      x1 = hi - kGolden * (hi - lo);
+      f1 = value(x1, hit);
+      if (hit) return x1;
+    } else {  // in [x1, hi]
+      lo = x1;
+      x1 = x2;
+      f1 = f2;
+      x2 = lo + kGolden * (hi - lo);
+      f2 = value(x2, hit);
+      if (hit) return x2;
+    }
+  }
+  return NAN;
+}
+
 }  // namespace
 
 std::vector<CoveringSegment> covering_segments(const Parameters& p, double lo, double hi, double top,
@@ -58,6 +98,26 @@ std::vector<CoveringSegment> covering_segments(const Parameters& p, double lo, d
   ContinuityLabel run_label;
   bool have_run = false;
   double th_t2 = NAN, th_top = NAN, T_top = NAN;  // latest grid points of the current run
+  // A candidate is complete when the current run has a phase with T = t2 and one with T >= top.
+  auto close_segment = [&]() {
+    CoveringSegment s;
+    s.lo = std::min(th_t2, th_top);
+    s.hi = std::max(th_t2, th_top);
+    s.theta_at_t2 = th_t2;
+    s.theta_at_top = th_top;
+    s.T_at_top = T_top;
+    s.label = run_label;
+    s.verified = verify_segment(p, s, search.verify);
+    th_t2 = th_top = NAN;  // the next segment starts after this one: disjoint
+    if (s.verified) out.push_back(s);
+    return s.verified && search.max_segments > 0 && static_cast<int>(out.size()) >= search.max_segments;
+  };
+  // The arc where T = t2 often sits at an end of a run, where T plunges to t2 within a small
+  // fraction of a grid step just before the label changes (or rises from it just after). When a
+  // run has reached the top but not t2, those end gaps are searched by descent (once each).
+  double prev_th = NAN;               // the previous sample
+  double gap_start_lo = NAN;          // the gap before the current run's first sample
+  bool start_gap_open = false;        // that gap not yet searched, and no segment formed in this run
   for (std::size_t c = 0; c + 1 < cuts.size(); ++c) {
     // At least search.scan points per branch, and at least the density of a uniform grid of
     // search.uniform points on [lo, hi] (wide branches near t2 hold narrow arcs where T = t2).
@@ -67,10 +127,19 @@ std::vector<CoveringSegment> covering_segments(const Parameters& p, double lo, d
       const double th = cuts[c] + (cuts[c + 1] - cuts[c]) * j / m;
       const LabelledStep l = continuity_label(p, th);
       if (!have_run || !(l.label == run_label)) {
+        // The run ends: if it reached the top but not t2, look for the arc between its last sample
+        // and this one (points of the new label do not count).
+        if (have_run && search.descend && std::isnan(th_t2) && !std::isnan(th_top) && !std::isnan(prev_th)) {
+          th_t2 = t2_arc_by_descent(p, prev_th, th, run_label);
+          if (!std::isnan(th_t2) && close_segment()) return out;
+        }
         run_label = l.label;
         have_run = true;
         th_t2 = th_top = NAN;
+        gap_start_lo = prev_th;
+        start_gap_open = !std::isnan(prev_th);
       }
+      prev_th = th;
       if (l.step.T == t2) {
         th_t2 = th;
       } else if (l.step.T < t2 + 0.05 * (top - t2)) {
@@ -87,21 +156,18 @@ std::vector<CoveringSegment> covering_segments(const Parameters& p, double lo, d
           }
         }
       }
-      if (l.step.T >= top) { th_top = th; T_top = l.step.T; }
-      if (!std::isnan(th_t2) && !std::isnan(th_top)) {
-        CoveringSegment s;
-        s.lo = std::min(th_t2, th_top);
-        s.hi = std::max(th_t2, th_top);
-        s.theta_at_t2 = th_t2;
-        s.theta_at_top = th_top;
-        s.T_at_top = T_top;
-        s.label = run_label;
-        s.verified = verify_segment(p, s, search.verify);
-        th_t2 = th_top = NAN;  // the next segment starts after this one: disjoint
-        if (s.verified) {
-          out.push_back(s);
-          if (search.max_segments > 0 && static_cast<int>(out.size()) >= search.max_segments) return out;
+      if (l.step.T >= top) {
+        th_top = th;
+        T_top = l.step.T;
+        // The top is reached but no t2 yet: the arc may hide in the gap before the run's first sample.
+        if (std::isnan(th_t2) && start_gap_open && search.descend) {
+          start_gap_open = false;
+          th_t2 = t2_arc_by_descent(p, gap_start_lo, th, run_label);
         }
+      }
+      if (!std::isnan(th_t2) && !std::isnan(th_top)) {
+        start_gap_open = false;
+        if (close_segment()) return out;
       }
     }
   }

@@ -60,6 +60,7 @@ struct CoveringSearch {
   int uniform = 8000;           ///< and at least the density of this many points spread over [lo, hi]
   int verify = 400;             ///< fine-grid points inside each segment found
   int refine = 32;              ///< local points on each side where T comes within 5% of t2 (narrow B arcs)
+  bool descend = true;          ///< then a golden-section descent of T there (arcs narrower than the local grid)
   int max_segments = 0;         ///< stop after this many verified segments (0: find all)
 };
 
