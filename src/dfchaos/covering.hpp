@@ -15,7 +15,10 @@
 /// point with \f$T = t_2\f$ and a point with \f$T \ge 3\pi/2\f$ satisfies \f$T(J) \supseteq [t_2, 3\pi/2]\f$
 /// (intermediate values; \f$T \ge t_2\f$ everywhere). They are searched for among grid points of
 /// one label run — a fixed number of points in each continuity branch of \f$T_1\f$, whose ends are
-/// known in closed form — and each one found is re-checked on a finer grid inside it.
+/// known in closed form — and each one found is re-checked on a finer grid inside it. Arcs where
+/// \f$T = t_2\f$ can be much narrower than the grid step, and \f$T\f$ often plunges onto one just
+/// before its label changes; a run that reaches \f$3\pi/2\f$ without a sample at \f$t_2\f$ therefore
+/// has the gaps at its two ends searched by a golden-section descent of \f$T\f$.
 #pragma once
 
 #include <vector>
@@ -60,7 +63,7 @@ struct CoveringSearch {
   int uniform = 8000;           ///< and at least the density of this many points spread over [lo, hi]
   int verify = 400;             ///< fine-grid points inside each segment found
   int refine = 32;              ///< local points on each side where T comes within 5% of t2 (narrow B arcs)
-  bool descend = true;          ///< then a golden-section descent of T there (arcs narrower than the local grid)
+  bool descend = true;          ///< descend T into the end gaps of runs that reach the top without t2
   int max_segments = 0;         ///< stop after this many verified segments (0: find all)
 };
 
