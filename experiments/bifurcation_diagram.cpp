@@ -31,10 +31,10 @@ int main(int argc, char** argv) {
         app.add_option("--b", b_fixed, "b/a of the q/a sweep");
       },
       [&](const experiments::Options& o, ExperimentOutput& out) {
-        if (nb < 2 || nb > 100000) throw InvalidParameter("nb", "2 <= nb <= 10^5", nb);
-        if (nq < 2 || nq > 100000) throw InvalidParameter("nq", "2 <= nq <= 10^5", nq);
-        if (transient < 0 || transient > 10'000'000) throw InvalidParameter("transient", "0 <= transient <= 10^7", transient);
-        if (keep < 1 || keep > 10000) throw InvalidParameter("keep", "1 <= keep <= 10^4", keep);
+        experiments::require_count("nb", nb, 2, 100000);
+        experiments::require_count("nq", nq, 2, 100000);
+        experiments::require_count("transient", transient, 0, 10'000'000);
+        experiments::require_count("keep", keep, 1, 10000);
         experiments::require_range("q", q_fixed, 0.5, 0.999);
         experiments::require_range("b", b_fixed, 1e-5, 0.2);
         if (o.fast) { nb = std::min(nb, 12); nq = std::min(nq, 12); transient = std::min(transient, 50); keep = std::min(keep, 16); }

@@ -15,7 +15,7 @@ int main(int argc, char** argv) {
       argc, argv, "eq1_vartheta0", "vartheta0 of Eq. (1), uniqueness and the paper's digits",
       [&](experiments::OptionSet& app) { app.add_option("--samples", samples, "grid points on (0, pi/2] for the uniqueness scan"); },
       [&](const experiments::Options& o, ExperimentOutput& out) {
-        if (samples < 10 || samples > 100'000'000) throw InvalidParameter("samples", "10 <= samples <= 10^8", samples);
+        experiments::require_count("samples", samples, 10, 100'000'000);
         if (o.fast) samples = std::min(samples, 2000);
         out.parameter("samples", std::to_string(samples));
         const double v = vartheta0(), s = std::sin(v), r = eq1_residual(v);

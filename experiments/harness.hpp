@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "dfchaos/covering.hpp"
 #include "dfchaos/errors.hpp"
 #include "dfchaos/io.hpp"
 
@@ -49,6 +50,20 @@ inline void require_positive(const char* name, double v) {
 inline void require_range(const char* name, double v, double lo, double hi) {
   if (!std::isfinite(v) || v < lo || v > hi)
     throw InvalidParameter(name, format_double(lo) + " <= " + name + " <= " + format_double(hi), v);
+}
+
+/// Rejects a count (grid size, step number, ...) outside [lo, hi]. @throws InvalidParameter.
+inline void require_count(const char* name, long long v, long long lo, long long hi) {
+  if (v < lo || v > hi)
+    throw InvalidParameter(name, std::to_string(lo) + " <= " + name + " <= " + std::to_string(hi), static_cast<double>(v));
+}
+
+/// Lemma 4's covering at p, for the experiments that build on it (Sections 6, 7 and 10).
+/// @throws InvalidParameter (naming b) when no covering is found: those experiments need one.
+inline Lemma4Covering lemma4_covering_or_reject(const Parameters& p) {
+  Lemma4Covering c = lemma4_covering(p);
+  if (!c.holds) throw InvalidParameter("b", "a parameter set where the covering of Lemma 4 holds (none found at " + p.describe() + ")");
+  return c;
 }
 
 }  // namespace dfchaos::experiments

@@ -20,8 +20,8 @@ int main(int argc, char** argv) {
         app.add_option("--ba-min", ba_min, "smallest b/a");
       },
       [&](const experiments::Options& o, ExperimentOutput& out) {
-        if (nq < 2 || nq > 100000) throw InvalidParameter("nq", "2 <= nq <= 100000", nq);
-        if (nb < 2 || nb > 100000) throw InvalidParameter("nb", "2 <= nb <= 100000", nb);
+        experiments::require_count("nq", nq, 2, 100000);
+        experiments::require_count("nb", nb, 2, 100000);
         experiments::require_range("ba-min", ba_min, 1e-9, 0.1);
         if (o.fast) { nq = std::min(nq, 20); nb = std::min(nb, 13); }
         out.parameter("nq", std::to_string(nq));

@@ -18,7 +18,7 @@ int main(int argc, char** argv) {
         app.add_option("--q", qa, "q/a (T1 does not depend on it; recorded for completeness)");
       },
       [&](const experiments::Options& o, ExperimentOutput& out) {
-        if (n < 10 || n > 10'000'000) throw InvalidParameter("n", "10 <= n <= 10^7", n);
+        experiments::require_count("n", n, 10, 10'000'000);
         experiments::require_range("q", qa, 1e-9, 1.0);
         if (o.fast) n = std::min(n, 500);
         out.parameter("n", std::to_string(n));

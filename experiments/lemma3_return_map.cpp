@@ -21,7 +21,7 @@ int main(int argc, char** argv) {
         app.add_option("--ode-every", ode_every, "cross-check every k-th point by numerical integration");
       },
       [&](const experiments::Options& o, ExperimentOutput& out) {
-        if (n < 10 || n > 10'000'000) throw InvalidParameter("n", "10 <= n <= 10^7", n);
+        experiments::require_count("n", n, 10, 10'000'000);
         if (ode_every < 1) throw InvalidParameter("ode-every", "ode-every >= 1", ode_every);
         if (o.fast) { n = std::min(n, 200); ode_every = std::max(ode_every, 20); }
         out.parameter("n", std::to_string(n));

@@ -72,8 +72,8 @@ int main(int argc, char** argv) {
         app.add_option("--uniform", uniform, "least density, as points over [t2, 3pi/2]");
       },
       [&](const experiments::Options& o, ExperimentOutput& out) {
-        if (nq < 1 || nq > 10000) throw InvalidParameter("nq", "1 <= nq <= 10000", nq);
-        if (nb < 2 || nb > 10000) throw InvalidParameter("nb", "2 <= nb <= 10000", nb);
+        experiments::require_count("nq", nq, 1, 10000);
+        experiments::require_count("nb", nb, 2, 10000);
         experiments::require_range("ba-min", ba_min, 1e-8, 0.01);
         if (scan < 2) throw InvalidParameter("scan", "scan >= 2", scan);
         if (uniform < 0) throw InvalidParameter("uniform", "uniform >= 0", uniform);

@@ -62,11 +62,11 @@ int main(int argc, char** argv) {
         app.add_option("--q", q_fixed, "q/a of the line");
       },
       [&](const experiments::Options& o, ExperimentOutput& out) {
-        if (nb < 2 || nb > 10000) throw InvalidParameter("nb", "2 <= nb <= 10^4", nb);
-        if (plane_n < 2 || plane_n > 1000) throw InvalidParameter("plane-n", "2 <= plane-n <= 1000", plane_n);
-        if (starts < 1 || starts > 1000) throw InvalidParameter("starts", "1 <= starts <= 1000", starts);
-        if (steps < 10 || steps > 100'000'000) throw InvalidParameter("steps", "10 <= steps <= 10^8", static_cast<double>(steps));
-        if (transient < 0 || transient > 100'000'000) throw InvalidParameter("transient", "0 <= transient <= 10^8", static_cast<double>(transient));
+        experiments::require_count("nb", nb, 2, 10000);
+        experiments::require_count("plane-n", plane_n, 2, 1000);
+        experiments::require_count("starts", starts, 1, 1000);
+        experiments::require_count("steps", steps, 10, 100'000'000);
+        experiments::require_count("transient", transient, 0, 100'000'000);
         experiments::require_range("q", q_fixed, 0.5, 0.999);
         if (o.fast) { nb = std::min(nb, 6); plane_n = std::min(plane_n, 4); starts = std::min(starts, 2); steps = std::min(steps, 100LL); }
         out.parameter("nb", std::to_string(nb));

@@ -120,8 +120,8 @@ int main(int argc, char** argv) {
         app.add_option("--n-check", n_check, "phases of the eps = 0 validation");
       },
       [&](const experiments::Options& o, ExperimentOutput& out) {
-        if (n < 20 || n > 100000) throw InvalidParameter("n", "20 <= n <= 10^5", n);
-        if (n_check < 2 || n_check > 100000) throw InvalidParameter("n-check", "2 <= n-check <= 10^5", n_check);
+        experiments::require_count("n", n, 20, 100000);
+        experiments::require_count("n-check", n_check, 2, 100000);
         const Parameters p(1.0, b, q);
         p.require_return_map();
         if (o.fast) { n = std::min(n, 60); n_check = std::min(n_check, 20); }
@@ -144,8 +144,7 @@ int main(int argc, char** argv) {
         }
         out.table("validation", val, "eps = 0: the integrated perturbed map against the exact T");
 
-        const Lemma4Covering c = lemma4_covering(p);
-        if (!c.holds) throw InvalidParameter("b", "a parameter set where the covering of Lemma 4 holds (none at " + p.describe() + ")");
+        const Lemma4Covering c = experiments::lemma4_covering_or_reject(p);
         const std::vector<double> epsilons = o.fast ? std::vector<double>{0, 1e-3, 1e-1}
                                                     : std::vector<double>{0, 1e-4, 3e-4, 1e-3, 3e-3, 1e-2, 3e-2, 1e-1, 3e-1};
         Table table({"eps", "t2_eps", "J0_covers", "J0_u", "J0_w", "J1_covers", "J1_u", "J1_w"});

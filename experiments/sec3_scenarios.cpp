@@ -31,7 +31,7 @@ int main(int argc, char** argv) {
       argc, argv, "sec3_scenarios", "Section 3: scenarios of the motion between two free flights",
       [&](experiments::OptionSet& app) { app.add_option("--n", n, "grid points of theta in [t2, t3) per parameter set"); },
       [&](const experiments::Options& o, ExperimentOutput& out) {
-        if (n < 10 || n > 10'000'000) throw InvalidParameter("n", "10 <= n <= 10^7", n);
+        experiments::require_count("n", n, 10, 10'000'000);
         if (o.fast) n = std::min(n, 200);
         out.parameter("n", std::to_string(n));
         const std::vector<std::pair<double, double>> sets = {{0.01, 0.85}, {0.05, 0.85}, {0.1, 0.95},

@@ -14,7 +14,7 @@ int main(int argc, char** argv) {
       argc, argv, "sec4_next_hit", "Section 4: T1 and Eqs. (12), (13), (16)",
       [&](experiments::OptionSet& app) { app.add_option("--n", n, "grid points of theta"); },
       [&](const experiments::Options& o, ExperimentOutput& out) {
-        if (n < 10 || n > 10'000'000) throw InvalidParameter("n", "10 <= n <= 10^7", n);
+        experiments::require_count("n", n, 10, 10'000'000);
         if (o.fast) n = std::min(n, 200);
         out.parameter("n", std::to_string(n));
         const double qa = 0.85;

@@ -21,15 +21,14 @@ int main(int argc, char** argv) {
         app.add_option("--m-max", m_max, "largest period");
       },
       [&](const experiments::Options& o, ExperimentOutput& out) {
-        if (m_max < 1 || m_max > 200) throw InvalidParameter("m-max", "1 <= m-max <= 200", m_max);
+        experiments::require_count("m-max", m_max, 1, 200);
         if (o.fast) m_max = std::min(m_max, 6);
         const Parameters p(1.0, b, q);
         p.require_return_map();
         out.parameter("b_over_a", b);
         out.parameter("q_over_a", q);
         out.parameter("m_max", std::to_string(m_max));
-        const Lemma4Covering c = lemma4_covering(p);
-        if (!c.holds) throw InvalidParameter("b", "a parameter set where the covering of Lemma 4 holds (none found at " + p.describe() + ")");
+        const Lemma4Covering c = experiments::lemma4_covering_or_reject(p);
         const InverseBranch g[2] = {make_inverse_branch(p, c.J0), make_inverse_branch(p, c.J1)};
         const double gap = std::min(std::fabs(g[1].k_at_t2 - g[0].k_at_t2), std::fabs(g[1].k_at_top - g[0].k_at_top));
 

@@ -22,16 +22,15 @@ int main(int argc, char** argv) {
         app.add_option("--lap-grid", lap_grid, "grid points for the lap counts of T^n");
       },
       [&](const experiments::Options& o, ExperimentOutput& out) {
-        if (n_max < 1 || n_max > 20) throw InvalidParameter("n-max", "1 <= n-max <= 20", n_max);
-        if (lap_grid < 100 || lap_grid > 100'000'000) throw InvalidParameter("lap-grid", "100 <= lap-grid <= 10^8", lap_grid);
+        experiments::require_count("n-max", n_max, 1, 20);
+        experiments::require_count("lap-grid", lap_grid, 100, 100'000'000);
         if (o.fast) { n_max = std::min(n_max, 5); lap_grid = std::min(lap_grid, 20000); }
         const Parameters p(1.0, b, q);
         p.require_return_map();
         out.parameter("b_over_a", b);
         out.parameter("q_over_a", q);
         out.parameter("n_max", std::to_string(n_max));
-        const Lemma4Covering c = lemma4_covering(p);
-        if (!c.holds) throw InvalidParameter("b", "a parameter set where the covering of Lemma 4 holds (none found at " + p.describe() + ")");
+        const Lemma4Covering c = experiments::lemma4_covering_or_reject(p);
         const InverseBranch g[2] = {make_inverse_branch(p, c.J0), make_inverse_branch(p, c.J1)};
 
         Table words({"n", "words", "realised", "max_step_residual"});

@@ -24,8 +24,8 @@ int main(int argc, char** argv) {
         app.add_option("--nb", nb, "grid points of b/a, log-spaced in [1e-4, 0.1]");
       },
       [&](const experiments::Options& o, ExperimentOutput& out) {
-        if (nq < 1 || nq > 2000) throw InvalidParameter("nq", "1 <= nq <= 2000", nq);
-        if (nb < 2 || nb > 2000) throw InvalidParameter("nb", "2 <= nb <= 2000", nb);
+        experiments::require_count("nq", nq, 1, 2000);
+        experiments::require_count("nb", nb, 2, 2000);
         if (o.fast) { nq = std::min(nq, 8); nb = std::min(nb, 8); }
         out.parameter("nq", std::to_string(nq));
         out.parameter("nb", std::to_string(nb));

@@ -20,8 +20,8 @@ int main(int argc, char** argv) {
         app.add_option("--q", qas, "values of q/a");
       },
       [&](const experiments::Options& o, ExperimentOutput& out) {
-        if (samples < 2 || samples > 10'000'000) throw InvalidParameter("samples", "2 <= samples <= 10^7", samples);
-        if (grid_points < 2 || grid_points > 10'000'000) throw InvalidParameter("grid", "2 <= grid <= 10^7", grid_points);
+        experiments::require_count("samples", samples, 2, 10'000'000);
+        experiments::require_count("grid", grid_points, 2, 10'000'000);
         for (double q : qas) experiments::require_range("q", q, 0.003, 1.0 - 1e-12);
         if (o.fast) { samples = std::min(samples, 500); grid_points = std::min(grid_points, 400); }
         out.parameter("samples", std::to_string(samples));

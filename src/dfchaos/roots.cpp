@@ -223,28 +223,30 @@ std::optional<UpCrossing> first_upcrossing(const QuadraticPlusHarmonic& f, const
       }
       // The general case: split at the zero m of f' and look for a crossing from below in each
       // monotone part.
-      double sub[3] = {0, L, L};
-      int nsub = 1;
-      if (!skip && ((d0 > 0 && d1 < 0) || (d0 < 0 && d1 > 0))) {
-        const double m = d0 > 0 ? solve_increasing(
-                                      [&](double u) {
-                                        const auto [d, c] = der_curv(u);
-                                        return std::pair<long double, long double>{-d, -c};
-                                      },
-                                      0, L, phi0, -d0, -d1)
-                                : solve_increasing(der_curv, 0, L, phi0, d0, d1);
-        sub[1] = m;
-        nsub = 2;
-      }
-      for (int i = 0; i < nsub && !skip; ++i) {
-        const double u0 = sub[i], u1 = sub[i + 1];
-        const long double dl = (i == 0) ? d0 : 0.0L, dr = (i + 1 == nsub) ? d1 : 0.0L;
-        if (!(dl + dr > 0) || u1 <= u0) continue;  // f decreasing (or constant) here: no crossing from below
-        const long double f1 = u1 == L ? f_end : val(u1);
-        if (f1 < 0) continue;
-        const long double f0 = u0 == 0 ? f_start : val(u0);
-        if (f0 >= 0) return crossing_at(u0);  // a start not strictly below zero
-        return crossing_at(solve_increasing(val_der, u0, u1, phi0, f0, f1));
+      if (!skip) {
+        double sub[3] = {0, L, L};
+        int nsub = 1;
+        if ((d0 > 0 && d1 < 0) || (d0 < 0 && d1 > 0)) {
+          const double m = d0 > 0 ? solve_increasing(
+                                        [&](double u) {
+                                          const auto [d, c] = der_curv(u);
+                                          return std::pair<long double, long double>{-d, -c};
+                                        },
+                                        0, L, phi0, -d0, -d1)
+                                  : solve_increasing(der_curv, 0, L, phi0, d0, d1);
+          sub[1] = m;
+          nsub = 2;
+        }
+        for (int i = 0; i < nsub; ++i) {
+          const double u0 = sub[i], u1 = sub[i + 1];
+          const long double dl = (i == 0) ? d0 : 0.0L, dr = (i + 1 == nsub) ? d1 : 0.0L;
+          if (!(dl + dr > 0) || u1 <= u0) continue;  // f decreasing (or constant) here: no crossing from below
+          const long double f1 = u1 == L ? f_end : val(u1);
+          if (f1 < 0) continue;
+          const long double f0 = u0 == 0 ? f_start : val(u0);
+          if (f0 >= 0) return crossing_at(u0);  // a start not strictly below zero
+          return crossing_at(solve_increasing(val_der, u0, u1, phi0, f0, f1));
+        }
       }
     }
     cursor = end;
