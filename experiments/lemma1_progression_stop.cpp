@@ -2,6 +2,7 @@
 /// @brief Lemma 1: a progression from rest at \f$t_0\f$ stops in \f$[t_1, t_2]\f$ when \f$b < b_0(q)\f$.
 /// Measures \f$b_0(q)\f$ on a grid, beside the proof's sufficient condition and the threshold
 /// \f$q = a\sin\vartheta_0\f$, and says what happens below the threshold (Scenario D).
+#include <algorithm>
 #include <cmath>
 
 #include "dfchaos/progression_stop.hpp"
@@ -120,6 +121,7 @@ int main(int argc, char** argv) {
 
         // b0 at selected q/a, for the report.
         std::string tex = "\\begin{tabular}{rrrr}\n\\toprule\n$q/a$ & $b_0/a$ (Lemma 1) & $b_0/a$ (proof's bound) & ratio\\\\\n\\midrule\n";
+        double ratio_min = INFINITY, ratio_max = 0;  // b0 over the proof's bound, over the rows
         for (double qa : {0.73, 0.75, 0.8, 0.85, 0.9, 0.95, 0.99}) {
           auto thr = [&](auto pred) {
             double lo = 0, hi = std::min(0.49, qa / 2);
@@ -135,10 +137,16 @@ int main(int argc, char** argv) {
           const double bb = thr([](const Parameters& p) { return progression_from_t0(p).proof_bound; });
           tex += format_significant(qa, 3) + " & " + format_significant(b0, 4) + " & " + format_significant(bb, 4) + " & " +
                  (bb > 0 ? format_significant(b0 / bb, 3) : std::string("---")) + "\\\\\n";
+          if (bb > 0) {
+            ratio_min = std::min(ratio_min, b0 / bb);
+            ratio_max = std::max(ratio_max, b0 / bb);
+          }
           if (qa == 0.85) { out.macro("LemmaOneBzeroAtEightyFive", b0, 4); out.macro("LemmaOneBoundAtEightyFive", bb, 4); }
         }
         tex += "\\bottomrule\n\\end{tabular}\n";
         out.latex("lemma1_b0", tex);
+        out.macro("LemmaOneRatioMin", ratio_min, 3);
+        out.macro("LemmaOneRatioMax", ratio_max, 3);
         out.macro("LemmaOneBaMin", ba_min, 3);
         out.macro("LemmaOneThreshold", s0, 6);
         out.macro("LemmaOneReentries", std::to_string(non_interval));
