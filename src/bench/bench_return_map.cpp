@@ -16,7 +16,9 @@
 #include <vector>
 
 #include "dfchaos/errors.hpp"
-#include "dfchaos/io.hpp"
+#include "kit/output.hpp"
+#include "kit/json.hpp"
+#include "kit/format.hpp"
 #include "dfchaos/ode_map.hpp"
 #include "dfchaos/phase.hpp"
 #include "dfchaos/return_map.hpp"
@@ -24,6 +26,7 @@
 namespace {
 
 using namespace dfchaos;
+using namespace dfchaos::kit;
 
 constexpr double kQ = 0.85;
 const std::vector<double> kRatios = {1e-1, 1e-2, 1e-3, 1e-4, 1e-5, 1e-6};

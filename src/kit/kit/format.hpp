@@ -1,0 +1,26 @@
+/// @file format.hpp
+/// @brief Number and text formatting shared by every output: significant digits, LaTeX numbers,
+/// LaTeX escapes.
+#pragma once
+
+#include <string>
+
+#include "dfchaos/errors.hpp"
+
+namespace dfchaos::kit {
+
+/// Round-trip exact %.17g (from the core: every output prints numbers this way).
+using dfchaos::format_double;
+
+/// A number with the given count of significant digits (printf's %.*g).
+std::string format_significant(double x, int digits);
+
+/// A number in exponent notation ("1.4e-13") as LaTeX (\f$1.4\times10^{-13}\f$); any other text
+/// unchanged. Applied to every macro value, so that the report typesets numbers properly.
+std::string latex_number(const std::string& text);
+
+/// Escapes text for LaTeX (the ten special characters, and < > | which the default font encoding
+/// would print as other glyphs), so that statements and parameter values can be typeset verbatim.
+std::string latex_escape(const std::string& text);
+
+}  // namespace dfchaos::kit

@@ -1,0 +1,93 @@
+/// @file output.hpp
+/// @brief Everything an experiment writes, collected in memory and written at the end as a whole:
+/// data tables (build/data), LaTeX tables and macros (build/tables), claims (build/claims).
+///
+/// **All or nothing.** Every file is first written to a uniquely named temporary file beside its
+/// target (so that concurrent runs never collide); only when all of them are complete are they
+/// renamed into place. A failure on the way (a bad path, a full disk) removes the temporaries and
+/// leaves the previous outputs untouched.
+#pragma once
+
+#include <deque>
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "kit/claim.hpp"
+#include "kit/table.hpp"
+
+namespace dfchaos::kit {
+
+/// A file-system failure while writing outputs. `bad_path()` is true when the output location
+/// itself is unusable (not a directory, not creatable: bad input, exit 2) and false when writing
+/// failed (disk full, I/O error: exit 1).
+class OutputError : public std::runtime_error {
+ public:
+  OutputError(const std::string& what, bool bad_path) : std::runtime_error(what), bad_path_(bad_path) {}
+  bool bad_path() const { return bad_path_; }  ///< the path is unusable (as opposed to a failed write)
+
+ private:
+  bool bad_path_;
+};
+
+/// Writes a set of files as a whole: each through a unique temporary name, renamed only when all
+/// are written. @throws OutputError (temporaries removed) on any failure.
+void write_all_or_nothing(const std::vector<std::pair<std::filesystem::path, std::string>>& files);
+
+/// Writes one file atomically (write_all_or_nothing of one file).
+void write_atomically(const std::filesystem::path& path, const std::string& content);
+
+/// Checks that `root` can hold outputs: it is a directory or can be created as one.
+/// @throws OutputError with bad_path() true otherwise.
+void require_output_root(const std::filesystem::path& root);
+
+/// The outputs of one experiment run, written below an output root (usually build/):
+/// `data/NAME[-PART].tsv`, `tables/FILE.tex`, `tables/NAME-macros.tex`, `claims/NAME.json`, and
+/// for the report `tables/NAME-claims.tex` (one `\dfcsetverdict{id}{verdict}` and one
+/// `\dfcclaimrow{id}{reference}{statement}{verdict}` per claim, and `\dfcclaiminfo{id}{kind}{origin}`)
+/// and `tables/NAME-params.tex` (one `\dfcparamrow{key}{value}` per run parameter).
+class Output {
+ public:
+  /// Outputs of experiment `name` below `root`.
+  Output(std::string name, std::filesystem::path root);
+
+  /// Records a run parameter (goes into every header and the claims file).
+  void parameter(const std::string& key, const std::string& value);
+  void parameter(const std::string& key, double value);  ///< the same, a number in %.17g
+
+  /// Adds a data table, written to `data/NAME.tsv` (part empty) or `data/NAME-PART.tsv`.
+  void table(const std::string& part, const Table& t, const std::string& description);
+  /// Adds a LaTeX fragment, written to `tables/FILE.tex`.
+  void latex(const std::string& file, const std::string& tex);
+  /// Adds a macro `\dfcNAME{value}` (NAME: letters only), written to `tables/EXPERIMENT-macros.tex`.
+  void macro(const std::string& name, const std::string& value);
+  /// The same, a number rounded to the given significant digits.
+  void macro(const std::string& name, double value, int significant_digits);
+  /// Adds a claim and returns it for the chained calls that give its evidence and verdict. The
+  /// reference stays valid for the life of the Output.
+  Claim& claim(std::string id, std::string reference, EvidenceKind kind, std::string statement);
+
+  /// Files written so far as (path below the root, kind), for the declared-output check.
+  const std::vector<std::pair<std::string, std::string>>& written() const { return written_; }
+
+  /// Writes all files (all or nothing); prints one line per claim to stderr.
+  /// @return 0 when every claim marked expected holds (or is inconclusive), 1 otherwise (after
+  ///         saying which failed, one line each).
+  /// @throws std::logic_error if a claim has no verdict; OutputError on a file-system failure.
+  int finish() const;
+
+  const std::string& name() const { return name_; }  ///< the experiment's name
+
+ private:
+  std::string name_;
+  std::filesystem::path root_;
+  std::vector<std::pair<std::string, std::string>> parameters_;
+  std::vector<std::pair<std::filesystem::path, std::string>> files_;
+  std::vector<std::pair<std::string, std::string>> written_;
+  std::vector<std::pair<std::string, std::string>> macros_;
+  std::deque<Claim> claims_;
+  std::string header() const;
+};
+
+}  // namespace dfchaos::kit

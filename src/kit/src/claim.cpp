@@ -1,0 +1,100 @@
+#include "kit/claim.hpp"
+
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+namespace dfchaos::kit {
+
+const char* evidence_kind_name(EvidenceKind k) {
+  switch (k) {
+    case EvidenceKind::Analytic: return "analytic";
+    case EvidenceKind::Sampled: return "sampled";
+    case EvidenceKind::Certified: return "certified";
+    case EvidenceKind::PrecisionLimited: return "precision-limited";
+  }
+  return "?";
+}
+
+const char* origin_name(Origin o) { return o == Origin::Paper ? "paper" : "ours"; }
+
+const char* verdict_name(Verdict v) {
+  switch (v) {
+    case Verdict::Holds: return "holds";
+    case Verdict::Fails: return "fails";
+    case Verdict::Inconclusive: return "inconclusive";
+    case Verdict::Undecided: return "undecided";
+  }
+  return "?";
+}
+
+Claim::Claim(std::string id, std::string reference, EvidenceKind kind, std::string statement)
+    : id_(std::move(id)), reference_(std::move(reference)), statement_(std::move(statement)), kind_(kind) {
+  if (id_.empty()) throw std::logic_error("claim id must not be empty");
+  for (char ch : id_)
+    if (!(std::isalnum(static_cast<unsigned char>(ch)) || ch == '.' || ch == '_'))
+      throw std::logic_error("claim id must use letters, digits, '.' and '_' only: " + id_);
+}
+
+Claim& Claim::ours() {
+  origin_ = Origin::Ours;
+  return *this;
+}
+Claim& Claim::not_expected() {
+  expected_ = false;
+  return *this;
+}
+Claim& Claim::parameter(const std::string& key, Json value) {
+  parameters_.set(key, std::move(value));
+  return *this;
+}
+Claim& Claim::evidence(const std::string& key, Json value) {
+  evidence_.set(key, std::move(value));
+  return *this;
+}
+Claim& Claim::tolerance(double tol) {
+  has_tolerance_ = true;
+  tolerance_ = tol;
+  evidence_.set("tolerance", tol);
+  return *this;
+}
+Claim& Claim::holds(bool verdict) {
+  if (verdict_ == Verdict::Inconclusive) return *this;  // precision-limited stays inconclusive
+  verdict_ = verdict ? Verdict::Holds : Verdict::Fails;
+  return *this;
+}
+Claim& Claim::at_most(const std::string& name, double measured, double tol) {
+  evidence(name, measured);
+  tolerance(tol);
+  return holds(std::fabs(measured) <= tol);
+}
+Claim& Claim::inconclusive(const std::string& reason) {
+  kind_ = EvidenceKind::PrecisionLimited;
+  verdict_ = Verdict::Inconclusive;
+  evidence_.set("inconclusive_because", reason);
+  return *this;
+}
+
+std::string Claim::statement() const {
+  const auto at = statement_.find("{tol}");
+  if (at == std::string::npos) {
+    if (has_tolerance_) throw std::logic_error("claim " + id_ + ": a tolerance is set but the statement has no {tol}");
+    return statement_;
+  }
+  if (!has_tolerance_) throw std::logic_error("claim " + id_ + ": the statement has {tol} but no tolerance is set");
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", tolerance_);
+  return statement_.substr(0, at) + buf + statement_.substr(at + 5);
+}
+
+Json Claim::to_json() const {
+  Json j = Json::object();
+  j.set("id", id_).set("reference", reference_).set("statement", statement());
+  j.set("origin", origin_name(origin_)).set("evidence_kind", evidence_kind_name(kind_));
+  j.set("parameters", parameters_).set("evidence", evidence_);
+  j.set("verdict", verdict_name(verdict_)).set("expected_to_hold", expected_);
+  return j;
+}
+
+}  // namespace dfchaos::kit

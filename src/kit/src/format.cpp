@@ -1,0 +1,46 @@
+#include "kit/format.hpp"
+
+#include <cstdio>
+#include <cstdlib>
+
+namespace dfchaos::kit {
+
+std::string format_significant(double x, int digits) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*g", digits, x);
+  return buf;
+}
+
+std::string latex_number(const std::string& text) {
+  // Only a whole number in exponent notation is rewritten, e.g. "1.4e-13" -> 1.4 x 10^{-13}.
+  char* end = nullptr;
+  std::strtod(text.c_str(), &end);
+  const auto e = text.find_first_of("eE");
+  if (text.empty() || end != text.c_str() + text.size() || e == std::string::npos) return text;
+  const std::string mantissa = text.substr(0, e);
+  const int exponent = std::atoi(text.c_str() + e + 1);
+  const std::string power = "10^{" + std::to_string(exponent) + "}";
+  return "\\ensuremath{" + (mantissa == "1" ? power : mantissa + "\\times " + power) + "}";
+}
+
+std::string latex_escape(const std::string& text) {
+  std::string out;
+  for (char ch : text) {
+    switch (ch) {
+      case '\\': out += "\\textbackslash{}"; break;
+      case '^': out += "\\textasciicircum{}"; break;
+      case '~': out += "\\textasciitilde{}"; break;
+      case '<': out += "$<$"; break;
+      case '>': out += "$>$"; break;
+      case '|': out += "$|$"; break;
+      case '&': case '%': case '$': case '#': case '_': case '{': case '}':
+        out += '\\';
+        out += ch;
+        break;
+      default: out += ch;
+    }
+  }
+  return out;
+}
+
+}  // namespace dfchaos::kit

@@ -1,0 +1,193 @@
+#include "kit/output.hpp"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cctype>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <random>
+#include <stdexcept>
+#include <system_error>
+
+#include "dfchaos/errors.hpp"
+#include "kit/format.hpp"
+#include "kit/provenance.hpp"
+
+namespace dfchaos::kit {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+/// A temporary name beside `path` that no other process or call uses: pid, a counter, and a random tag.
+fs::path unique_temporary(const fs::path& path) {
+  static std::atomic<unsigned long> counter{0};
+  static const unsigned long tag = std::random_device{}();
+  char buf[96];
+  std::snprintf(buf, sizeof buf, ".tmp.%ld.%lu.%lx", static_cast<long>(::getpid()), counter++, tag);
+  return fs::path(path.string() + buf);
+}
+
+/// Writes content to a new file `tmp`. @throws OutputError (after removing tmp).
+void write_file(const fs::path& tmp, const std::string& content) {
+  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+  if (fd < 0) {
+    const int err = errno;
+    const bool bad_path = err == ENOTDIR || err == ENOENT || err == EACCES || err == EROFS || err == EISDIR || err == EPERM;
+    throw OutputError("cannot create " + tmp.parent_path().string() + "/" + tmp.filename().string() + ": " + std::strerror(err), bad_path);
+  }
+  std::size_t done = 0;
+  while (done < content.size()) {
+    const ssize_t w = ::write(fd, content.data() + done, content.size() - done);
+    if (w < 0) {
+      if (errno == EINTR) continue;
+      const int err = errno;
+      ::close(fd);
+      ::unlink(tmp.c_str());
+      throw OutputError("cannot write " + tmp.string() + ": " + std::strerror(err), false);
+    }
+    done += static_cast<std::size_t>(w);
+  }
+  if (::close(fd) != 0) {
+    const int err = errno;
+    ::unlink(tmp.c_str());
+    throw OutputError("cannot write " + tmp.string() + ": " + std::strerror(err), false);
+  }
+}
+
+}  // namespace
+
+void require_output_root(const fs::path& root) {
+  std::error_code ec;
+  if (fs::exists(root, ec) && !fs::is_directory(root, ec))
+    throw OutputError("out: must be a directory (" + root.string() + " exists and is not one)", true);
+  fs::create_directories(root, ec);
+  if (ec) throw OutputError("out: cannot create the directory " + root.string() + " (" + ec.message() + ")", true);
+}
+
+void write_all_or_nothing(const std::vector<std::pair<fs::path, std::string>>& files) {
+  std::vector<fs::path> temporaries;
+  auto discard = [&] {
+    for (const auto& t : temporaries) ::unlink(t.c_str());
+  };
+  try {
+    for (const auto& [path, content] : files) {
+      if (path.has_parent_path()) {
+        std::error_code ec;
+        if (fs::exists(path.parent_path(), ec) && !fs::is_directory(path.parent_path(), ec))
+          throw OutputError("cannot write into " + path.parent_path().string() + ": not a directory", true);
+        fs::create_directories(path.parent_path(), ec);
+        if (ec) throw OutputError("cannot create the directory " + path.parent_path().string() + " (" + ec.message() + ")", true);
+      }
+      const fs::path tmp = unique_temporary(path);
+      write_file(tmp, content);
+      temporaries.push_back(tmp);
+    }
+  } catch (...) {
+    discard();
+    throw;
+  }
+  // Every file is complete: rename them into place (a rename within a directory does not fail for
+  // lack of space; should one fail anyway, the rest are not renamed and their temporaries removed).
+  for (std::size_t k = 0; k < files.size(); ++k) {
+    if (std::rename(temporaries[k].c_str(), files[k].first.c_str()) != 0) {
+      const int err = errno;
+      for (std::size_t r = k; r < files.size(); ++r) ::unlink(temporaries[r].c_str());
+      throw OutputError("cannot rename into " + files[k].first.string() + ": " + std::strerror(err), false);
+    }
+  }
+}
+
+void write_atomically(const fs::path& path, const std::string& content) { write_all_or_nothing({{path, content}}); }
+
+Output::Output(std::string name, fs::path root) : name_(std::move(name)), root_(std::move(root)) {}
+
+void Output::parameter(const std::string& key, const std::string& value) { parameters_.emplace_back(key, value); }
+void Output::parameter(const std::string& key, double value) { parameters_.emplace_back(key, format_double(value)); }
+
+std::string Output::header() const {
+  std::string h = "# experiment: " + name_ + "\n# dfchaos " + version() + " (" + git_hash() + "), " + compiler_id() + "\n";
+  for (const auto& [k, v] : parameters_) h += "# " + k + " = " + v + "\n";
+  return h;
+}
+
+void Output::table(const std::string& part, const Table& t, const std::string& description) {
+  const std::string file = part.empty() ? name_ : name_ + "-" + part;
+  files_.emplace_back(root_ / "data" / (file + ".tsv"), header() + "# " + description + "\n" + t.render());
+  written_.emplace_back("data", part);
+}
+
+void Output::latex(const std::string& file, const std::string& tex) {
+  files_.emplace_back(root_ / "tables" / (file + ".tex"), "% generated by experiment " + name_ + "; do not edit\n" + tex);
+  written_.emplace_back("latex", file);
+}
+
+void Output::macro(const std::string& name, const std::string& value) {
+  if (name.empty()) throw std::logic_error("macro name must not be empty");
+  for (char ch : name)
+    if (!std::isalpha(static_cast<unsigned char>(ch))) throw std::logic_error("macro name must be letters only: " + name);
+  for (const auto& [k, v] : macros_)
+    if (k == name) throw std::logic_error("macro defined twice: " + name);
+  macros_.emplace_back(name, value);
+}
+void Output::macro(const std::string& name, double value, int digits) { macro(name, format_significant(value, digits)); }
+
+Claim& Output::claim(std::string id, std::string reference, EvidenceKind kind, std::string statement) {
+  for (const auto& c : claims_)
+    if (c.id() == id) throw std::logic_error("claim defined twice: " + id);
+  claims_.emplace_back(std::move(id), std::move(reference), kind, std::move(statement));
+  return claims_.back();
+}
+
+int Output::finish() const {
+  for (const auto& c : claims_)
+    if (c.verdict() == Verdict::Undecided) throw std::logic_error("claim " + c.id() + " has no verdict (a bug in the experiment)");
+  auto files = files_;
+  if (!macros_.empty()) {
+    std::string tex = "% generated by experiment " + name_ + "; do not edit\n";
+    for (const auto& [k, v] : macros_) tex += "\\newcommand{\\dfc" + k + "}{" + latex_number(v) + "}\n";
+    files.emplace_back(root_ / "tables" / (name_ + "-macros.tex"), tex);
+  }
+  Json doc = Json::object();
+  doc.set("experiment", name_);
+  doc.set("version", std::string(version()));
+  doc.set("git", std::string(git_hash()));
+  doc.set("compiler", compiler_id());
+  Json params = Json::object();
+  for (const auto& [k, v] : parameters_) params.set(k, v);
+  doc.set("run_parameters", params);
+  Json list = Json::array();
+  int failed_expected = 0;
+  for (const auto& c : claims_) {
+    list.push(c.to_json());
+    if (c.expected() && c.verdict() == Verdict::Fails) ++failed_expected;
+  }
+  doc.set("claims", list);
+  files.emplace_back(root_ / "claims" / (name_ + ".json"), doc.dump());
+
+  std::string rows = "% generated by experiment " + name_ + "; do not edit\n";
+  for (const auto& c : claims_) {
+    const char* verdict = verdict_name(c.verdict());
+    rows += "\\dfcsetverdict{" + c.id() + "}{" + verdict + "}{" + evidence_kind_name(c.kind()) + "}{" + origin_name(c.origin()) + "}\n";
+    rows += "\\dfcclaimrow{" + c.id() + "}{" + latex_escape(c.reference()) + "}{" + latex_escape(c.statement()) + "}{" + verdict +
+            "}{" + evidence_kind_name(c.kind()) + "}{" + origin_name(c.origin()) + "}\n";
+  }
+  files.emplace_back(root_ / "tables" / (name_ + "-claims.tex"), rows);
+  std::string prow = "% generated by experiment " + name_ + "; do not edit\n";
+  for (const auto& [k, v] : parameters_) prow += "\\dfcparamrow{" + latex_escape(k) + "}{" + latex_escape(v) + "}\n";
+  files.emplace_back(root_ / "tables" / (name_ + "-params.tex"), prow);
+  write_all_or_nothing(files);
+  for (const auto& c : claims_) {
+    const char* v = c.verdict() == Verdict::Holds ? "holds" : c.verdict() == Verdict::Fails ? "FAILS" : "incon.";
+    std::fprintf(stderr, "  %-6s %-30s %-18s %s\n", v, c.id().c_str(), evidence_kind_name(c.kind()), c.reference().c_str());
+  }
+  for (const auto& c : claims_)
+    if (c.expected() && c.verdict() == Verdict::Fails)
+      std::fprintf(stderr, "%s: claim %s (%s) expected to hold but fails\n", name_.c_str(), c.id().c_str(), c.reference().c_str());
+  return failed_expected ? 1 : 0;
+}
+
+}  // namespace dfchaos::kit
