@@ -13,7 +13,7 @@ BTYPE   ?= RelWithDebInfo
 CMAKE   ?= cmake
 ABS     := $(abspath $(BUILD))
 
-EXPERIMENTS := $(filter-out harness,$(sort $(basename $(notdir $(wildcard experiments/*.cpp)))))
+EXPERIMENTS := $(sort $(basename $(notdir $(wildcard experiments/*.cpp))))
 FIGURES     := $(sort $(basename $(notdir $(wildcard figures/fig_*.gp))))
 STAMPS      := $(EXPERIMENTS:%=$(BUILD)/stamps/%.ok)
 FIGS        := $(FIGURES:%=$(BUILD)/figures/%.tex)

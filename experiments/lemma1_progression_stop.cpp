@@ -6,149 +6,120 @@
 #include <cmath>
 
 #include "dfchaos/progression_stop.hpp"
-#include "harness.hpp"
+#include "kit/experiment.hpp"
+#include "kit/format.hpp"
+#include "kit/grid.hpp"
 
 using namespace dfchaos;
+using namespace dfchaos::kit;
 
-int main(int argc, char** argv) {
-  int nq = 400, nb = 241;
-  double ba_min = 1e-5;
-  return experiments::run(
-      argc, argv, "lemma1_progression_stop", "Lemma 1: where the progression from rest at t0 stops",
-      [&](experiments::OptionSet& app) {
-        app.add_option("--nq", nq, "grid points of q/a in (0, 1)");
-        app.add_option("--nb", nb, "grid points of b/a, log-spaced in [ba-min, 0.49]");
-        app.add_option("--ba-min", ba_min, "smallest b/a");
-      },
-      [&](const experiments::Options& o, ExperimentOutput& out) {
-        experiments::require_count("nq", nq, 2, 100000);
-        experiments::require_count("nb", nb, 2, 100000);
-        experiments::require_range("ba-min", ba_min, 1e-9, 0.1);
-        if (o.fast) { nq = std::min(nq, 20); nb = std::min(nb, 13); }
-        out.parameter("nq", std::to_string(nq));
-        out.parameter("nb", std::to_string(nb));
-        out.parameter("ba_min", ba_min);
-        const double s0 = std::sin(vartheta0());
-        auto ba_at = [&](int j) { return ba_min * std::pow(0.49 / ba_min, static_cast<double>(j) / (nb - 1)); };
+const Experiment experiment{
+    .title = "Lemma 1: where the progression from rest at t0 stops",
+    .paper = {"Lemma 1", "Eq. (7)", "Eq. (8)", "Eq. (9)"},
+    .tests = {"test_reduction"},
+    .options = {count("nq", 400, "grid points of q/a in (0, 1)").range(2, 100000).fast_value(20),
+                count("nb", 241, "grid points of b/a, log-spaced in [ba-min, 0.49]").range(2, 100000).fast_value(13),
+                real("ba-min", 1e-5, "smallest b/a").range(1e-9, 0.1)},
+    .outputs = {data("", "per q/a: largest grid b/a below which Lemma 1 holds at every grid point, and the same for the proof's bound"),
+                data("grid", "Lemma 1 on a (q/a, b/a) grid (every few q/a)"),
+                latex("lemma1_b0", "b0 of Lemma 1 and of the proof's bound at selected q/a")},
+    .body = [](Run& run) {
+      const int nq = run.count_int("nq"), nb = run.count_int("nb");
+      const double ba_min = run.real("ba-min");
+      const double s0 = std::sin(vartheta0());
+      const Axis q_axis = Axis::centres(0, 1, nq), b_axis = Axis::log(ba_min, 0.49, nb);
 
-        Table curve({"q_over_a", "b0_lemma1", "b0_proof_bound", "holds_at_smallest_b", "outcome_at_smallest_b"});
-        Table grid({"q_over_a", "b_over_a", "lemma1_holds", "eq8_velocity_at_t2", "proof_bound", "t4", "next"});
-        int mismatch_eq8 = 0, bound_without_lemma = 0, above_threshold_fail = 0, below_threshold_hold = 0, non_interval = 0;
-        int n_above = 0;
-        double worst_margin = INFINITY;
-        for (int i = 0; i < nq; ++i) {
-          const double qa = (i + 0.5) / nq;
-          double b0 = 0, b0_bound = 0;
-          bool still = true, still_bound = true, seen_fail = false;
-          std::string outcome_small;
-          bool holds_small = false;
-          for (int j = 0; j < nb; ++j) {
-            const double ba = ba_at(j);
-            if (!(qa > 2 * ba) || !(std::fabs(qa - 2 * ba) < 1)) { still = still_bound = false; continue; }
-            const Parameters p(1.0, ba, qa);
-            const ProgressionFromT0 r = progression_from_t0(p);
-            // Second method: the sign of Eq. (8) must agree with the root search.
-            if ((r.eq8_velocity_at_t2 <= 0) != r.stops_in_t1_t2) ++mismatch_eq8;
-            if (r.proof_bound && !r.stops_in_t1_t2) ++bound_without_lemma;
-            if (r.stops_in_t1_t2 && seen_fail) ++non_interval;
-            if (!r.stops_in_t1_t2) seen_fail = true;
-            if (still && r.stops_in_t1_t2) b0 = ba; else still = false;
-            if (still_bound && r.proof_bound) b0_bound = ba; else still_bound = false;
-            if (j == 0) {
-              holds_small = r.stops_in_t1_t2;
-              outcome_small = r.stops_in_t1_t2 ? "stops in [t1,t2]" : (r.next == Regime::Free ? "flies from [t2,t3): scenario D" : "stops again: repeats for ever");
-            }
-            if (i % std::max(1, nq / 40) == 0)
-              grid.row({qa, ba, static_cast<long long>(r.stops_in_t1_t2), r.eq8_velocity_at_t2, r.proof_bound_value, r.t4_value,
-                        std::string(r.repeats_for_ever ? "repeats" : regime_code(r.next))});
+      Table curve({"q_over_a", "b0_lemma1", "b0_proof_bound", "holds_at_smallest_b", "outcome_at_smallest_b"});
+      Table grid({"q_over_a", "b_over_a", "lemma1_holds", "eq8_velocity_at_t2", "proof_bound", "t4", "next"});
+      int mismatch_eq8 = 0, bound_without_lemma = 0, above_threshold_fail = 0, below_threshold_hold = 0, non_interval = 0;
+      int n_above = 0;
+      for (int i = 0; i < nq; ++i) {
+        const double qa = q_axis[i];
+        double b0 = 0, b0_bound = 0;
+        bool still = true, still_bound = true, seen_fail = false;
+        std::string outcome_small;
+        bool holds_small = false;
+        for (int j = 0; j < nb; ++j) {
+          const double ba = b_axis[j];
+          if (!(qa > 2 * ba) || !(std::fabs(qa - 2 * ba) < 1)) { still = still_bound = false; continue; }
+          const Parameters p(1.0, ba, qa);
+          const ProgressionFromT0 r = progression_from_t0(p);
+          // Second method: the sign of Eq. (8) must agree with the root search.
+          if ((r.eq8_velocity_at_t2 <= 0) != r.stops_in_t1_t2) ++mismatch_eq8;
+          if (r.proof_bound && !r.stops_in_t1_t2) ++bound_without_lemma;
+          if (r.stops_in_t1_t2 && seen_fail) ++non_interval;
+          if (!r.stops_in_t1_t2) seen_fail = true;
+          if (still && r.stops_in_t1_t2) b0 = ba; else still = false;
+          if (still_bound && r.proof_bound) b0_bound = ba; else still_bound = false;
+          if (j == 0) {
+            holds_small = r.stops_in_t1_t2;
+            outcome_small = r.stops_in_t1_t2 ? "stops in [t1,t2]" : (r.next == Regime::Free ? "flies from [t2,t3): scenario D" : "stops again: repeats for ever");
           }
-          if (qa > s0) {
-            ++n_above;
-            if (!holds_small) ++above_threshold_fail;
-            else worst_margin = std::min(worst_margin, qa - s0);
-          } else if (holds_small) {
-            ++below_threshold_hold;
-          }
-          // Refine both thresholds by bisection between the last grid point that holds and the next.
-          auto refine = [&](double lo, auto pred) {
-            if (lo <= 0) return 0.0;
-            double hi = lo * std::pow(0.49 / ba_min, 1.0 / (nb - 1));
-            if (!(qa > 2 * hi) || pred(Parameters(1.0, hi, qa))) return lo;
-            for (int k = 0; k < 60; ++k) {
-              const double mid = 0.5 * (lo + hi);
-              if (pred(Parameters(1.0, mid, qa))) lo = mid; else hi = mid;
-            }
-            return lo;
-          };
-          b0 = refine(b0, [](const Parameters& p) { return progression_from_t0(p).stops_in_t1_t2; });
-          b0_bound = refine(b0_bound, [](const Parameters& p) { return progression_from_t0(p).proof_bound; });
-          curve.row({qa, b0, b0_bound, static_cast<long long>(holds_small), outcome_small});
+          if (i % std::max(1, nq / 40) == 0)
+            grid.row({qa, ba, static_cast<long long>(r.stops_in_t1_t2), r.eq8_velocity_at_t2, r.proof_bound_value, r.t4_value,
+                      std::string(r.repeats_for_ever ? "repeats" : regime_code(r.next))});
         }
-        out.table("", curve, "per q/a: largest grid b/a below which Lemma 1 holds at every grid point, and the same for the proof's bound");
-        out.table("grid", grid, "Lemma 1 on a (q/a, b/a) grid (every few q/a)");
-
-        Claim agree{"lemma1.eq8_agrees", "Lemma 1, Eq. (8)", "The sign of the velocity at t2 (Eq. 8) and the root search agree on whether the progression stops by t2."};
-        agree.evidence.set("mismatches", mismatch_eq8);
-        agree.holds = mismatch_eq8 == 0;
-        out.claim(agree);
-
-        Claim bound{"lemma1.proof_bound_sufficient", "Lemma 1, proof",
-                    "Wherever the proof's bound a + a cos t0 - (q-2b)(pi - t0) < 0 holds, the progression does stop in [t1, t2]."};
-        bound.evidence.set("violations", bound_without_lemma);
-        bound.holds = bound_without_lemma == 0;
-        out.claim(bound);
-
-        Claim small{"lemma1.small_b", "Lemma 1",
-                    "For every grid q/a above sin(vartheta0), the progression from rest at t0 stops in [t1, t2] at the smallest b/a of the grid."};
-        small.parameters.set("b_over_a", ba_min);
-        small.evidence.set("q_points_above_threshold", n_above).set("failures", above_threshold_fail);
-        small.holds = above_threshold_fail == 0;
-        out.claim(small);
-
-        Claim sharp{"lemma1.threshold_sharp", "Lemma 1, Eq. (9)",
-                    "Below q/a = sin(vartheta0) Lemma 1 fails even for the smallest b/a: the threshold of (2) is sharp for this step of the proof."};
-        sharp.evidence.set("q_points_below_threshold_where_it_holds", below_threshold_hold);
-        sharp.holds = below_threshold_hold == 0;
-        sharp.expected = false;
-        out.claim(sharp);
-
-        Claim interval{"lemma1.b0_interval", "Lemma 1",
-                       "At each q/a the b/a where Lemma 1 holds form an initial interval (0, b0): it never holds again above a failure."};
-        interval.evidence.set("reentries", non_interval);
-        interval.holds = non_interval == 0;
-        interval.expected = false;
-        out.claim(interval);
-
-        // b0 at selected q/a, for the report.
-        std::string tex = "\\begin{tabular}{rrrr}\n\\toprule\n$q/a$ & $b_0/a$ (Lemma 1) & $b_0/a$ (proof's bound) & ratio\\\\\n\\midrule\n";
-        double ratio_min = INFINITY, ratio_max = 0;  // b0 over the proof's bound, over the rows
-        for (double qa : {0.73, 0.75, 0.8, 0.85, 0.9, 0.95, 0.99}) {
-          auto thr = [&](auto pred) {
-            double lo = 0, hi = std::min(0.49, qa / 2);
-            if (!pred(Parameters(1.0, ba_min, qa))) return 0.0;
-            lo = ba_min;
-            for (int k = 0; k < 60; ++k) {
-              const double mid = 0.5 * (lo + hi);
-              if (mid < qa / 2 && pred(Parameters(1.0, mid, qa))) lo = mid; else hi = mid;
-            }
-            return lo;
-          };
-          const double b0 = thr([](const Parameters& p) { return progression_from_t0(p).stops_in_t1_t2; });
-          const double bb = thr([](const Parameters& p) { return progression_from_t0(p).proof_bound; });
-          tex += format_significant(qa, 3) + " & " + format_significant(b0, 4) + " & " + format_significant(bb, 4) + " & " +
-                 (bb > 0 ? format_significant(b0 / bb, 3) : std::string("---")) + "\\\\\n";
-          if (bb > 0) {
-            ratio_min = std::min(ratio_min, b0 / bb);
-            ratio_max = std::max(ratio_max, b0 / bb);
-          }
-          if (qa == 0.85) { out.macro("LemmaOneBzeroAtEightyFive", b0, 4); out.macro("LemmaOneBoundAtEightyFive", bb, 4); }
+        if (qa > s0) {
+          ++n_above;
+          if (!holds_small) ++above_threshold_fail;
+        } else if (holds_small) {
+          ++below_threshold_hold;
         }
-        tex += "\\bottomrule\n\\end{tabular}\n";
-        out.latex("lemma1_b0", tex);
-        out.macro("LemmaOneRatioMin", ratio_min, 3);
-        out.macro("LemmaOneRatioMax", ratio_max, 3);
-        out.macro("LemmaOneBaMin", ba_min, 3);
-        out.macro("LemmaOneThreshold", s0, 6);
-        out.macro("LemmaOneReentries", std::to_string(non_interval));
-      });
-}
+        // Refine both thresholds by bisection between the last grid point that holds and the next.
+        const double grid_ratio = std::pow(0.49 / ba_min, 1.0 / (nb - 1));
+        if (b0 > 0) b0 = lemma1_threshold(qa, b0, b0 * grid_ratio, Lemma1Criterion::StopsInT1T2);
+        if (b0_bound > 0) b0_bound = lemma1_threshold(qa, b0_bound, b0_bound * grid_ratio, Lemma1Criterion::ProofBound);
+        curve.row({qa, b0, b0_bound, static_cast<long long>(holds_small), outcome_small});
+      }
+      run.table("", curve);
+      run.table("grid", grid);
+
+      run.out.claim("lemma1.eq8_agrees", "Lemma 1, Eq. (8)", EvidenceKind::Sampled,
+                    "The sign of the velocity at t2 (Eq. 8) and the root search agree on whether the progression stops by t2.")
+          .ours()
+          .evidence("mismatches", mismatch_eq8)
+          .holds(mismatch_eq8 == 0);
+      run.out.claim("lemma1.proof_bound_sufficient", "Lemma 1, proof", EvidenceKind::Sampled,
+                    "Wherever the proof's bound a + a cos t0 - (q-2b)(pi - t0) < 0 holds, the progression does stop in [t1, t2].")
+          .evidence("violations", bound_without_lemma)
+          .holds(bound_without_lemma == 0);
+      run.out.claim("lemma1.small_b", "Lemma 1", EvidenceKind::Sampled,
+                    "For every grid q/a above sin(vartheta0), the progression from rest at t0 stops in [t1, t2] at the smallest b/a of the grid.")
+          .parameter("b_over_a", ba_min)
+          .evidence("q_points_above_threshold", n_above).evidence("failures", above_threshold_fail)
+          .holds(above_threshold_fail == 0);
+      run.out.claim("lemma1.threshold_sharp", "Lemma 1, Eq. (9)", EvidenceKind::Sampled,
+                    "Below q/a = sin(vartheta0) Lemma 1 fails even for the smallest b/a: the threshold of (2) is sharp for this step of the proof.")
+          .ours().not_expected()
+          .evidence("q_points_below_threshold_where_it_holds", below_threshold_hold)
+          .holds(below_threshold_hold == 0);
+      run.out.claim("lemma1.b0_interval", "Lemma 1", EvidenceKind::Sampled,
+                    "At each q/a the b/a where Lemma 1 holds form an initial interval (0, b0): it never holds again above a failure.")
+          .ours().not_expected()
+          .evidence("reentries", non_interval)
+          .holds(non_interval == 0);
+
+      // b0 at selected q/a, for the report.
+      LatexTable tex("rrrr", {"$q/a$", "$b_0/a$ (Lemma 1)", "$b_0/a$ (proof's bound)", "ratio"});
+      double ratio_min = INFINITY, ratio_max = 0;  // b0 over the proof's bound, over the rows
+      for (double qa : {0.73, 0.75, 0.8, 0.85, 0.9, 0.95, 0.99}) {
+        const double hi = std::min(0.49, qa / 2);
+        const double b0 = lemma1_threshold(qa, ba_min, hi, Lemma1Criterion::StopsInT1T2);
+        const double bb = lemma1_threshold(qa, ba_min, hi, Lemma1Criterion::ProofBound);
+        tex.row({format_significant(qa, 3), format_significant(b0, 4), format_significant(bb, 4),
+                 bb > 0 ? format_significant(b0 / bb, 3) : std::string("---")});
+        if (bb > 0) {
+          ratio_min = std::min(ratio_min, b0 / bb);
+          ratio_max = std::max(ratio_max, b0 / bb);
+        }
+        if (qa == 0.85) { run.out.macro("LemmaOneBzeroAtEightyFive", b0, 4); run.out.macro("LemmaOneBoundAtEightyFive", bb, 4); }
+      }
+      run.latex("lemma1_b0", tex.render());
+      run.out.macro("LemmaOneRatioMin", ratio_min, 3);
+      run.out.macro("LemmaOneRatioMax", ratio_max, 3);
+      run.out.macro("LemmaOneBaMin", ba_min, 3);
+      run.out.macro("LemmaOneThreshold", s0, 6);
+      run.out.macro("LemmaOneReentries", std::to_string(non_interval));
+    }};
+
+DFCHAOS_EXPERIMENT_MAIN(experiment)

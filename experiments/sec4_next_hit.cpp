@@ -1,147 +1,147 @@
 /// @file sec4_next_hit.cpp
 /// @brief Section 4: the next-hit map T1 (Eq. 11); the sign claims made about Eq. (12); the flight
 /// time asymptotics behind Eq. (13); and Eq. (16) at the computed discontinuities.
+#include <algorithm>
 #include <cmath>
 
 #include "dfchaos/next_hit.hpp"
-#include "harness.hpp"
+#include "kit/experiment.hpp"
+#include "kit/format.hpp"
 
 using namespace dfchaos;
+using namespace dfchaos::kit;
 
-int main(int argc, char** argv) {
-  int n = 4000;
-  return experiments::run(
-      argc, argv, "sec4_next_hit", "Section 4: T1 and Eqs. (12), (13), (16)",
-      [&](experiments::OptionSet& app) { app.add_option("--n", n, "grid points of theta"); },
-      [&](const experiments::Options& o, ExperimentOutput& out) {
-        experiments::require_count("n", n, 10, 10'000'000);
-        if (o.fast) n = std::min(n, 200);
-        out.parameter("n", std::to_string(n));
-        const double qa = 0.85;
-        out.parameter("q_over_a", qa);
+const Experiment experiment{
+    .title = "Section 4: T1 and Eqs. (12), (13), (16)",
+    .paper = {"Eq. (11)", "Eq. (12)", "Eq. (13)", "Eq. (14)", "Eq. (16)", "Section 4"},
+    .tests = {"test_first_root", "test_next_hit"},
+    .options = {count("n", 4000, "grid points of theta").range(10, 10'000'000).fast_value(200)},
+    .outputs = {data("T1-*", "T1 on [t2, t3) at one b/a"),
+                data("asymptotics", "Eq. (13): C = flight / ((a/b)|cos theta|) over theta in [t2, 3pi/2); flights for cos theta > 0"),
+                data("eq16", "Eq. (16) at every discontinuity of T1 on [t2, 3pi/2]"),
+                data("eq16-summary", "Eq. (16): largest |cos theta1 + cos theta| and its product with the flight time")},
+    .body = [](Run& run) {
+      const int n = run.count_int("n");
+      const double qa = 0.85;
+      run.out.parameter("q_over_a", qa);
+      constexpr double kClosedFormTolerance = 1e-10;  // |z (grazing search) - z (closed form)|
+      constexpr double kCosSumTolerance = 1e-12;       // |cos theta1 + cos theta| "zero to rounding"
 
-        // The graph of T1 at two values of b/a.
-        for (double ba : {0.05, 0.01}) {
-          const Parameters p(1.0, ba, qa);
-          Table t({"theta", "T1", "flight", "hit_velocity", "branch"});
-          for (int i = 0; i < n; ++i) {
-            const double th = *p.t2() + (*p.t3() - *p.t2()) * i / n;
-            const NextHit h = next_hit(p, th);
-            t.row({th, h.theta1, h.theta1 - th, h.hit_velocity, h.maxima_before});
+      // The graph of T1 at two values of b/a.
+      for (double ba : {0.05, 0.01}) {
+        const Parameters p(1.0, ba, qa);
+        Table t({"theta", "T1", "flight", "hit_velocity", "branch"});
+        for (int i = 0; i < n; ++i) {
+          const double th = *p.t2() + (*p.t3() - *p.t2()) * i / n;
+          const NextHit h = next_hit(p, th);
+          t.row({th, h.theta1, h.theta1 - th, h.hit_velocity, h.maxima_before});
+        }
+        run.out.table(ba == 0.05 ? "T1-b0.05" : "T1-b0.01", t, "T1 on [t2, t3) at " + p.describe());
+      }
+
+      // Eq. (12): the right-hand side's second derivative at t = theta is -sin(theta); the left's is
+      // 2b/a. It is larger iff sin(theta) < -2b/a, i.e. F(theta) < 0: true on (t2, t3).
+      // Eq. (13): flight time against (a/b)|cos theta| on [t2, 3 pi/2).
+      Table asym({"b_over_a", "C_min", "theta_at_C_min", "C_max", "max_flight_cos_positive", "min_second_derivative_gap"});
+      bool second_ok = true, short_ok = true, starts_below = true;
+      double C_floor = INFINITY;
+      const std::vector<double> bas = run.fast() ? std::vector<double>{1e-2, 1e-4} : std::vector<double>{1e-1, 1e-2, 1e-3, 1e-4, 1e-5, 1e-6};
+      for (double ba : bas) {
+        const Parameters p(1.0, ba, qa);
+        double Cmin = INFINITY, Cmax = 0, thmin = 0, maxflight = 0, gap = INFINITY;
+        for (int i = 0; i < n; ++i) {
+          const double th = *p.t2() + (*p.t3() - *p.t2()) * (i + 0.5) / n;
+          const NextHit h = next_hit(p, th);
+          const double flight = h.theta1 - th;
+          gap = std::min(gap, -std::sin(th) - 2 * ba);
+          if (!(G1(p, th, Instant::at_phase(th + 1e-3)) < 0)) starts_below = false;
+          if (std::cos(th) < 0) {
+            const double C = flight / (std::fabs(std::cos(th)) / ba);
+            if (C < Cmin) { Cmin = C; thmin = th; }
+            Cmax = std::max(Cmax, C);
+          } else if (th > 1.5 * pi) {
+            maxflight = std::max(maxflight, flight);
           }
-          out.table(ba == 0.05 ? "T1-b0.05" : "T1-b0.01", t, "T1 on [t2, t3) at " + p.describe());
         }
+        if (gap < 0) second_ok = false;
+        if (!(maxflight < two_pi)) short_ok = false;
+        C_floor = std::min(C_floor, Cmin);
+        asym.row({ba, Cmin, thmin, Cmax, maxflight, gap});
+        if (ba == 1e-6) run.out.macro("EqThirteenCminSmallest", Cmin, 6);
+      }
+      run.table("asymptotics", asym);
 
-        // Eq. (12): the right-hand side's second derivative at t = theta is -sin(theta); the left's is
-        // 2b/a. It is larger iff sin(theta) < -2b/a, i.e. F(theta) < 0: true on (t2, t3).
-        // Eq. (13): flight time against (a/b)|cos theta| on [t2, 3 pi/2).
-        Table asym({"b_over_a", "C_min", "theta_at_C_min", "C_max", "max_flight_cos_positive", "min_second_derivative_gap"});
-        bool second_ok = true, short_ok = true, starts_below = true;
-        double C_floor = INFINITY;
-        const std::vector<double> bas = o.fast ? std::vector<double>{1e-2, 1e-4} : std::vector<double>{1e-1, 1e-2, 1e-3, 1e-4, 1e-5, 1e-6};
-        for (double ba : bas) {
-          const Parameters p(1.0, ba, qa);
-          double Cmin = INFINITY, Cmax = 0, thmin = 0, maxflight = 0, gap = INFINITY;
-          for (int i = 0; i < n; ++i) {
-            const double th = *p.t2() + (*p.t3() - *p.t2()) * (i + 0.5) / n;
-            const NextHit h = next_hit(p, th);
-            const double flight = h.theta1 - th;
-            gap = std::min(gap, -std::sin(th) - 2 * ba);
-            if (!(G1(p, th, Instant::at_phase(th + 1e-3)) < 0)) starts_below = false;
-            if (std::cos(th) < 0) {
-              const double C = flight / (std::fabs(std::cos(th)) / ba);
-              if (C < Cmin) { Cmin = C; thmin = th; }
-              Cmax = std::max(Cmax, C);
-            } else if (th > 1.5 * pi) {
-              maxflight = std::max(maxflight, flight);
-            }
-          }
-          if (gap < 0) second_ok = false;
-          if (!(maxflight < two_pi)) short_ok = false;
-          C_floor = std::min(C_floor, Cmin);
-          asym.row({ba, Cmin, thmin, Cmax, maxflight, gap});
-          if (ba == 1e-6) out.macro("EqThirteenCminSmallest", Cmin, 6);
+      run.out.claim("eq12.second_derivative", "Eq. (12)", EvidenceKind::Sampled,
+                    "At t = theta the right-hand side of (12) has the larger second derivative for every theta in [t2, t3): "
+                    "-sin(theta) >= 2b/a there (the paper's stated reason, sin(theta) <= -b/a, is not enough by itself).")
+          .evidence("all_b_over_a_ok", second_ok)
+          .holds(second_ok);
+      run.out.claim("eq12.flight_starts_below", "Eq. (12)", EvidenceKind::Sampled, "Just after theta the mass is behind the delimiter (G1 < 0).")
+          .holds(starts_below);
+      run.out.claim("eq12.short_flight", "Section 4", EvidenceKind::Sampled,
+                    "For theta in (3pi/2, t3), where cos(theta) > 0, the flight lasts less than 2 pi.")
+          .evidence("holds_for_all_b_over_a", short_ok)
+          .holds(short_ok);
+      run.out.claim("eq13.bound", "Eq. (13)", EvidenceKind::Sampled,
+                    "The flight time is at least C (a/b)|cos theta| with a C > 0 independent of theta and of small b/a "
+                    "(the paper writes cos theta, negative on this range; |cos theta| is meant).")
+          .evidence("C_min_over_all_b_over_a", C_floor)
+          .holds(C_floor > 0.5);
+      run.out.macro("EqThirteenCfloor", C_floor, 4);
+
+      // Eq. (16) at the discontinuities: (cos theta1 + cos theta)(theta1 - theta) stays bounded;
+      // Eq. (14) bounds it by 4 exactly.
+      Table t16({"b_over_a", "z", "theta1", "flight", "cos_sum", "cos_sum_times_flight"});
+      Table s16({"b_over_a", "discontinuities", "max_abs_cos_sum", "max_abs_product"});
+      double worst = 0, worst_sum = 0;
+      for (double ba : run.fast() ? std::vector<double>{0.05} : std::vector<double>{0.05, 0.01, 0.002}) {
+        const Parameters p(1.0, ba, qa);
+        const auto z = grazing_points(p, *p.t2() + 1e-9, 1.5 * pi, run.fast() ? 200 : 2000);
+        double mc = 0, mp = 0;
+        for (const auto& g : z) {
+          const double f = g.t1_right - g.z, cs = std::cos(g.tangency.phase) + std::cos(g.z);
+          t16.row({ba, g.z, g.t1_right, f, cs, cs * f});
+          mc = std::max(mc, std::fabs(cs));
+          mp = std::max(mp, std::fabs(cs * f));
         }
-        out.table("asymptotics", asym, "Eq. (13): C = flight / ((a/b)|cos theta|) over theta in [t2, 3pi/2); flights for cos theta > 0");
+        worst = std::max(worst, mp);
+        worst_sum = std::max(worst_sum, mc);
+        s16.row({ba, static_cast<long long>(z.size()), mc, mp});
+      }
+      run.table("eq16", t16);
+      run.table("eq16-summary", s16);
+      run.out.claim("eq16.bounded", "Eq. (16)", EvidenceKind::Sampled,
+                    "At every discontinuity cos(theta1) + cos(theta) = O(1/(theta1 - theta)); measured: the product stays below 4 "
+                    "(in fact the sum vanishes to rounding: see eq16.exact).")
+          .evidence("max_abs_product", worst)
+          .holds(worst <= 4 + 1e-9);
+      run.out.macro("EqSixteenMaxProduct", format_significant(worst, 2));
+      // All discontinuities of T1 on [t2, t3): the numerical finder against the closed form.
+      long long mismatch = 0, right_of_three_halves = 0;
+      for (double ba : run.fast() ? std::vector<double>{0.05} : std::vector<double>{0.2, 0.05, 0.01, 0.001}) {
+        const Parameters p(1.0, ba, qa);
+        const int scan = run.fast() ? 200 : 4000;
+        right_of_three_halves += static_cast<long long>(grazing_points(p, 1.5 * pi, *p.t3() - 1e-9, scan).size());
+        const auto z = grazing_points(p, *p.t2() + 1e-12, 1.5 * pi, scan);
+        const auto c = symmetric_tangencies(p, *p.t2() + 1e-12, 1.5 * pi);
+        if (z.size() != c.size()) ++mismatch;
+        else
+          for (std::size_t k = 0; k < z.size(); ++k)
+            if (std::fabs(z[k].z - c[k].z) > kClosedFormTolerance) ++mismatch;
+      }
+      run.out.claim("t1.discontinuities_closed_form", "Section 4, Eq. (14) (beyond)", EvidenceKind::Sampled,
+                    "T1 is continuous on (3pi/2, t3); on [t2, 3pi/2] its discontinuities are exactly the solutions of "
+                    "2z - (a/b) cos z = (2k+1) pi.")
+          .ours()
+          .evidence("discontinuities_right_of_3pi_2", right_of_three_halves).evidence("parameter_sets_with_mismatch", mismatch)
+          .evidence("z_tolerance", kClosedFormTolerance)
+          .holds(right_of_three_halves == 0 && mismatch == 0);
+      run.out.claim("eq16.exact", "Eq. (16) (beyond)", EvidenceKind::Analytic,
+                    "At every discontinuity found on [t2, 3pi/2], cos(theta1) = -cos(theta) to rounding: the remainder in (16) is zero.")
+          .ours()
+          .evidence("max_abs_cos_sum", worst_sum).evidence("tolerance", kCosSumTolerance)
+          .holds(worst_sum < kCosSumTolerance);
+      run.out.macro("EqSixteenMaxCosSum", format_significant(worst_sum, 2));
+    }};
 
-        Claim c12{"eq12.second_derivative", "Eq. (12)",
-                  "At t = theta the right-hand side of (12) has the larger second derivative for every theta in [t2, t3): "
-                  "-sin(theta) >= 2b/a there (the paper's stated reason, sin(theta) <= -b/a, is not enough by itself)."};
-        c12.evidence.set("all_b_over_a_ok", second_ok);
-        c12.holds = second_ok;
-        out.claim(c12);
-
-        Claim c12b{"eq12.flight_starts_below", "Eq. (12)", "Just after theta the mass is behind the delimiter (G1 < 0)."};
-        c12b.holds = starts_below;
-        out.claim(c12b);
-
-        Claim c12c{"eq12.short_flight", "Section 4",
-                   "For theta in (3pi/2, t3), where cos(theta) > 0, the flight lasts less than 2 pi."};
-        c12c.evidence.set("holds_for_all_b_over_a", short_ok);
-        c12c.holds = short_ok;
-        out.claim(c12c);
-
-        Claim c13{"eq13.bound", "Eq. (13)",
-                  "The flight time is at least C (a/b)|cos theta| with a C > 0 independent of theta and of small b/a "
-                  "(the paper writes cos theta, negative on this range; |cos theta| is meant)."};
-        c13.evidence.set("C_min_over_all_b_over_a", C_floor);
-        c13.holds = C_floor > 0.5;
-        out.claim(c13);
-        out.macro("EqThirteenCfloor", C_floor, 4);
-
-        // Eq. (16) at the discontinuities: (cos theta1 + cos theta)(theta1 - theta) stays bounded;
-        // Eq. (14) bounds it by 4 exactly.
-        Table t16({"b_over_a", "z", "theta1", "flight", "cos_sum", "cos_sum_times_flight"});
-        Table s16({"b_over_a", "discontinuities", "max_abs_cos_sum", "max_abs_product"});
-        double worst = 0, worst_sum = 0;
-        for (double ba : o.fast ? std::vector<double>{0.05} : std::vector<double>{0.05, 0.01, 0.002}) {
-          const Parameters p(1.0, ba, qa);
-          const auto z = grazing_points(p, *p.t2() + 1e-9, 1.5 * pi, o.fast ? 200 : 2000);
-          double mc = 0, mp = 0;
-          for (const auto& g : z) {
-            const double f = g.t1_right - g.z, cs = std::cos(g.tangency.phase) + std::cos(g.z);
-            t16.row({ba, g.z, g.t1_right, f, cs, cs * f});
-            mc = std::max(mc, std::fabs(cs));
-            mp = std::max(mp, std::fabs(cs * f));
-          }
-          worst = std::max(worst, mp);
-          worst_sum = std::max(worst_sum, mc);
-          s16.row({ba, static_cast<long long>(z.size()), mc, mp});
-        }
-        out.table("eq16", t16, "Eq. (16) at every discontinuity of T1 on [t2, 3pi/2]");
-        out.table("eq16-summary", s16, "Eq. (16): largest |cos theta1 + cos theta| and its product with the flight time");
-        Claim c16{"eq16.bounded", "Eq. (16)",
-                  "At every discontinuity cos(theta1) + cos(theta) = O(1/(theta1 - theta)); measured: the product stays below 4 "
-                  "(in fact the sum vanishes to rounding: see eq16.exact)."};
-        c16.evidence.set("max_abs_product", worst);
-        c16.holds = worst <= 4 + 1e-9;
-        out.claim(c16);
-        out.macro("EqSixteenMaxProduct", format_significant(worst, 2));
-        // All discontinuities of T1 on [t2, t3): the numerical finder against the closed form.
-        long long mismatch = 0, right_of_three_halves = 0;
-        for (double ba : o.fast ? std::vector<double>{0.05} : std::vector<double>{0.2, 0.05, 0.01, 0.001}) {
-          const Parameters p(1.0, ba, qa);
-          const int scan = o.fast ? 200 : 4000;
-          right_of_three_halves += static_cast<long long>(grazing_points(p, 1.5 * pi, *p.t3() - 1e-9, scan).size());
-          const auto z = grazing_points(p, *p.t2() + 1e-12, 1.5 * pi, scan);
-          const auto c = symmetric_tangencies(p, *p.t2() + 1e-12, 1.5 * pi);
-          if (z.size() != c.size()) ++mismatch;
-          else
-            for (std::size_t k = 0; k < z.size(); ++k)
-              if (std::fabs(z[k].z - c[k].z) > 1e-10) ++mismatch;
-        }
-        Claim all{"t1.discontinuities_closed_form", "Section 4, Eq. (14) (beyond)",
-                  "T1 is continuous on (3pi/2, t3); on [t2, 3pi/2] its discontinuities are exactly the solutions of "
-                  "2z - (a/b) cos z = (2k+1) pi."};
-        all.evidence.set("discontinuities_right_of_3pi_2", right_of_three_halves).set("parameter_sets_with_mismatch", mismatch);
-        all.holds = right_of_three_halves == 0 && mismatch == 0;
-        out.claim(all);
-
-        Claim exact{"eq16.exact", "Eq. (16) (beyond)",
-                    "At every discontinuity found on [t2, 3pi/2], cos(theta1) = -cos(theta) to rounding: the remainder in (16) is zero."};
-        exact.evidence.set("max_abs_cos_sum", worst_sum);
-        exact.holds = worst_sum < 1e-12;
-        out.claim(exact);
-        out.macro("EqSixteenMaxCosSum", format_significant(worst_sum, 2));
-      });
-}
+DFCHAOS_EXPERIMENT_MAIN(experiment)

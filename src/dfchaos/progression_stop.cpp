@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "dfchaos/bisect.hpp"
 #include "dfchaos/errors.hpp"
 #include "dfchaos/regime_chain.hpp"
 
@@ -29,6 +30,17 @@ ProgressionFromT0 progression_from_t0(const Parameters& p) {
   r.next = phase_in_arc(r.t4.phase, t2, t3) ? Regime::Free : Regime::Stop;
   r.repeats_for_ever = r.next == Regime::Stop && phase_in_arc(r.t4.phase, t3, t0);
   return r;
+}
+
+double lemma1_threshold(double q_over_a, double lo, double hi, Lemma1Criterion criterion) {
+  auto holds = [&](double ba) {
+    if (!(ba < q_over_a / 2)) return false;
+    const ProgressionFromT0 r = progression_from_t0(Parameters(1.0, ba, q_over_a));
+    return criterion == Lemma1Criterion::StopsInT1T2 ? r.stops_in_t1_t2 : r.proof_bound;
+  };
+  if (!holds(lo)) return 0.0;
+  if (holds(hi)) return hi;
+  return bisect(holds, lo, hi, BisectStop{60, 0, 0}).first;
 }
 
 }  // namespace dfchaos

@@ -34,4 +34,19 @@ struct ProgressionFromT0 {
 /// @throws InvalidParameter unless \f$t_0, t_2\f$ exist (\f$|q - 2b| < a\f$, \f$2b < a\f$) and \f$q > 2b\f$.
 ProgressionFromT0 progression_from_t0(const Parameters& p);
 
+/// Which statement a threshold of Lemma 1 is about.
+enum class Lemma1Criterion {
+  StopsInT1T2,  ///< Lemma 1's conclusion: the progression from rest at \f$t_0\f$ stops in \f$[t_1, t_2]\f$
+  ProofBound    ///< the proof's sufficient bound \f$a + a\cos t_0 - (q-2b)(\pi - t_0) < 0\f$
+};
+
+/// The threshold \f$b_0(q)\f$ of Lemma 1 (with \f$a = 1\f$): the boundary in \f$b/a\f$ between
+/// `lo`, where the criterion holds, and `hi`, where it fails, located by bisection (60 halvings,
+/// dfchaos::bisect). A b/a at or above \f$q/(2a)\f$ counts as failing (no return map there).
+/// Assumes the criterion holds on an initial interval \f$(0, b_0)\f$ (checked on a grid by the
+/// experiment lemma1_progression_stop).
+/// @return 0 if the criterion fails at `lo`; `hi` if it holds there too; the boundary otherwise
+///         (the last b/a of the bisection where it holds).
+double lemma1_threshold(double q_over_a, double lo, double hi, Lemma1Criterion criterion);
+
 }  // namespace dfchaos

@@ -32,12 +32,15 @@ enum class Verdict { Undecided, Holds, Fails, Inconclusive };
 /// "holds", "fails", "inconclusive" ("undecided" for the error state).
 const char* verdict_name(Verdict v);
 
+/// A tolerance as written in a statement: %g with the exponent's leading zeros dropped ("1e-8").
+std::string format_tolerance(double tol);
+
 /// One claim. Built by chaining: \code
 ///   out.claim("eq1.residual", "Eq. (1)", EvidenceKind::Analytic,
 ///             "The computed vartheta0 satisfies Eq. (1) to within {tol}.")
 ///      .at_most("residual", std::fabs(r), 1e-15);
 /// \endcode
-/// The placeholder `{tol}` in the statement is replaced by the tolerance actually used (%g), so
+/// The placeholder `{tol}` in the statement is replaced by the tolerance actually used (format_tolerance), so
 /// the statement cannot drift from the check.
 class Claim {
  public:

@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "dfchaos/errors.hpp"
 #include "kit/claim.hpp"
 #include "kit/options.hpp"
 #include "kit/output.hpp"

@@ -76,6 +76,21 @@ Claim& Claim::inconclusive(const std::string& reason) {
   return *this;
 }
 
+std::string format_tolerance(double tol) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", tol);
+  std::string t = buf;
+  // "1e-08" -> "1e-8": the exponent as one writes it.
+  const auto e = t.find('e');
+  if (e != std::string::npos) {
+    std::size_t k = e + 1;
+    if (k < t.size() && (t[k] == '-' || t[k] == '+')) ++k;
+    while (k + 1 < t.size() && t[k] == '0') t.erase(k, 1);
+    if (t[e + 1] == '+') t.erase(e + 1, 1);
+  }
+  return t;
+}
+
 std::string Claim::statement() const {
   const auto at = statement_.find("{tol}");
   if (at == std::string::npos) {
@@ -83,9 +98,7 @@ std::string Claim::statement() const {
     return statement_;
   }
   if (!has_tolerance_) throw std::logic_error("claim " + id_ + ": the statement has {tol} but no tolerance is set");
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", tolerance_);
-  return statement_.substr(0, at) + buf + statement_.substr(at + 5);
+  return statement_.substr(0, at) + format_tolerance(tolerance_) + statement_.substr(at + 5);
 }
 
 Json Claim::to_json() const {
