@@ -18,7 +18,7 @@ FIGURES     := $(sort $(basename $(notdir $(wildcard figures/fig_*.gp))))
 STAMPS      := $(EXPERIMENTS:%=$(BUILD)/stamps/%.ok)
 FIGS        := $(FIGURES:%=$(BUILD)/figures/%.tex)
 
-.PHONY: help deps deps-report configure build build-tools test reproduce experiments figures report manifest \
+.PHONY: help deps deps-report configure build build-tools test reproduce experiments figures report manifest claims-map \
         docs bench clean test-sanitize test-clang check-determinism
 
 help:
@@ -30,6 +30,7 @@ help:
 	@echo "  make experiments run the experiments whose executables changed (data, tables, claims)"
 	@echo "  make figures     draw the figures from $(BUILD)/data into $(BUILD)/figures"
 	@echo "  make report      typeset $(BUILD)/paper/report.pdf from what is already computed"
+	@echo "  make claims-map  the claims map (paper item -> experiment -> claims -> figures -> tests): $(BUILD)/claims-map.md"
 	@echo "  make manifest    write $(BUILD)/MANIFEST.sha256 over data and tables"
 	@echo "  make docs        Doxygen HTML of the library and experiments in $(BUILD)/docs"
 	@echo "  make bench       T per second vs the GSL odeiv2 baseline: $(BUILD)/bench/bench.json, bench.tex"
@@ -98,6 +99,9 @@ $(BUILD)/tables/build-info.tex: $(BUILD)/bin/dfchaos
 
 report: $(FIGS) $(BUILD)/tables/build-info.tex $(wildcard $(BUILD)/bench/bench.tex)
 	@bash scripts/build-report.sh $(BUILD)
+
+claims-map: $(STAMPS)
+	@python3 scripts/claims_map.py $(BUILD) .
 
 manifest:
 	@cd $(BUILD) && find data tables -type f ! -name '*.tmp' | LC_ALL=C sort | xargs sha256sum > MANIFEST.sha256

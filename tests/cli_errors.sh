@@ -33,7 +33,7 @@ expect_ok() {  # expect_ok HEADER-REGEX ARGS...
 }
 
 P=(--a 1 --b 0.01 --q 0.85)
-expect_error "--a"    map --a x --b 0.01 --q 0.85 --theta 4
+expect_error "a:"     map --a x --b 0.01 --q 0.85 --theta 4
 expect_error "--a"    map --a "" --b 0.01 --q 0.85 --theta 4
 expect_error "--steps" orbit --a 1 --b 0.01 --q 0.85 --theta0 4 --steps ""
 expect_error "a:"     map --a nan --b 0.01 --q 0.85 --theta 4
@@ -48,7 +48,7 @@ expect_error "q:"     map --a 1 --b 0.01 --q -2 --theta 4
 expect_error "theta:" map "${P[@]}" --theta 1.0
 expect_error "theta:" map "${P[@]}" --theta 4.0 7.0
 expect_error "theta:" map "${P[@]}" --theta nan
-expect_error "theta:" orbit "${P[@]}" --theta0 6.5 --steps 3
+expect_error "theta0:" orbit "${P[@]}" --theta0 6.5 --steps 3
 expect_error "theta"  map "${P[@]}"
 expect_error "--theta" map "${P[@]}" --theta
 expect_error "grid N" map "${P[@]}" --grid 3.5 4 0
@@ -57,12 +57,19 @@ expect_error "grid HI" map "${P[@]}" --grid 4 3.5 10
 expect_error "grid LO" map "${P[@]}" --grid 1 3.5 10
 expect_error "--grid" map "${P[@]}" --grid 3.5 4
 expect_error "steps"  orbit "${P[@]}" --theta0 4 --steps 0
-expect_error "--steps" orbit "${P[@]}" --theta0 4 --steps many
+expect_error "steps:" orbit "${P[@]}" --theta0 4 --steps many
 expect_error "x0:"    simulate "${P[@]}" --x0 1 --y0 0 --v0 0 --t0 0 --t-end 10
 expect_error "t-end:" simulate "${P[@]}" --x0 0 --y0 0 --v0 0 --t0 10 --t-end 0
 expect_error "v0:"    simulate "${P[@]}" --x0 0 --y0 0 --v0 nan --t0 0 --t-end 10
 expect_error "sample:" simulate "${P[@]}" --x0 0 --y0 0 --v0 0 --t0 0 --t-end 10 --sample -1
 expect_error "--t-end" simulate "${P[@]}" --x0 0 --y0 0 --v0 0 --t0 0
+expect_error "steps:" orbit "${P[@]}" --theta0 4 --steps 1.5e8
+expect_error "steps:" orbit "${P[@]}" --theta0 4 --steps 2.5
+expect_error "arc:"   map "${P[@]}" --arc 0
+expect_error "arc:"   map "${P[@]}" --arc 1e8
+expect_error "arc:"   map "${P[@]}" --arc x
+expect_error "--arc"  map "${P[@]}" --arc 3 --theta 4
+expect_error "max-events:" simulate "${P[@]}" --x0 0 --y0 0 --v0 0 --t0 0 --t-end 10 --max-events 0
 expect_error "frobnicate" frobnicate "${P[@]}"
 expect_error "--bogus" map "${P[@]}" --theta 4 --bogus 1
 expect_error "subcommand" 
@@ -72,6 +79,9 @@ expect_ok "^n	theta	scenario	elapsed	penetration	time	y$" orbit "${P[@]}" --thet
 expect_ok "^t	phase	before	after	kind" simulate "${P[@]}" --x0 0 --y0 0 --v0 0 --t0 4 --t-end 100 --sample 1
 expect_ok "^quantity	value" info "${P[@]}"
 
+expect_ok "^n	theta" orbit "${P[@]}" --theta0 3.5 --steps 1e1
+checks=$((checks + 1))
+[[ $(wc -l < <("$cli" map "${P[@]}" --arc 5)) -eq 6 ]] || { echo "FAIL: --arc N gives N rows"; fails=$((fails + 1)); }
 checks=$((checks + 1))
 [[ $(wc -l < <("$cli" map "${P[@]}" --grid 3.5 4.5 7)) -eq 8 ]] || { echo "FAIL: --grid N gives N rows"; fails=$((fails + 1)); }
 echo "$((checks - fails)) passed, $fails failed"

@@ -1,0 +1,63 @@
+#include "cli.hpp"
+
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+
+#include "dfchaos/errors.hpp"
+#include "kit/options.hpp"
+
+namespace dfchaos::cli {
+
+void ModelOptions::add_to(CLI::App* app) {
+  app->add_option("--a", a, "forcing amplitude, a > 0")->required()->type_name("FLOAT");
+  app->add_option("--b", b, "half the constant force, 0 < b < a/2 for the return map")->required()->type_name("FLOAT");
+  app->add_option("--q", q, "maximal dry-friction force, q > 2b for the return map")->required()->type_name("FLOAT");
+}
+
+Parameters ModelOptions::model() const { return Parameters(number("a", a), number("b", b), number("q", q)); }
+
+double number(const std::string& name, const std::string& text) { return kit::parse_number(name, text, false); }
+
+long long count(const std::string& name, const std::string& text, long long lo, long long hi) {
+  const double v = kit::parse_number(name, text, true);
+  if (v < static_cast<double>(lo) || v > static_cast<double>(hi))
+    throw InvalidParameter(name, std::to_string(lo) + " <= " + name + " <= " + std::to_string(hi), v);
+  return static_cast<long long>(v);
+}
+
+std::string num(double x) { return format_double(x); }
+
+Writer::Writer() { buffer_.reserve(1 << 16); }
+Writer::~Writer() {
+  try {
+    flush();
+  } catch (...) {
+  }
+}
+
+void Writer::row(const std::vector<std::string>& cells) {
+  for (std::size_t k = 0; k < cells.size(); ++k) {
+    if (k) buffer_ += '\t';
+    buffer_ += cells[k];
+  }
+  buffer_ += '\n';
+  if (buffer_.size() >= (1 << 16)) flush();
+}
+
+void Writer::line(const std::string& text) {
+  buffer_ += text;
+  buffer_ += '\n';
+  if (buffer_.size() >= (1 << 16)) flush();
+}
+
+void Writer::flush() {
+  if (!buffer_.empty()) {
+    const std::size_t n = std::fwrite(buffer_.data(), 1, buffer_.size(), stdout);
+    buffer_.clear();
+    if (n == 0 || std::ferror(stdout)) throw WriteFailed(std::string("cannot write the output: ") + std::strerror(errno));
+  }
+  if (std::fflush(stdout) != 0) throw WriteFailed(std::string("cannot write the output: ") + std::strerror(errno));
+}
+
+}  // namespace dfchaos::cli

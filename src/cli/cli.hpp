@@ -1,0 +1,69 @@
+/// @file cli.hpp
+/// @brief What the subcommands of the `dfchaos` tool share: the model options (a, b, q), strict
+/// number parsing (one line naming the option, exit 2), a buffered writer that streams rows to
+/// stdout and notices a failed write, and progress on stderr.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <memory>
+
+#include <cstdio>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "dfchaos/parameters.hpp"
+
+namespace dfchaos::cli {
+
+/// A subcommand: its CLI11 app and what runs it once parsed (returns the exit status).
+struct Command {
+  CLI::App* app = nullptr;
+  std::function<int()> run;
+};
+
+/// The model options --a --b --q, as typed (parsed by model()).
+struct ModelOptions {
+  std::string a, b, q;
+  /// Registers --a, --b, --q (required) on a subcommand.
+  void add_to(CLI::App* app);
+  /// The parameters. @throws InvalidParameter naming a, b or q.
+  Parameters model() const;
+};
+
+/// A number option: the whole text must be a finite number. @throws InvalidParameter naming it.
+double number(const std::string& name, const std::string& text);
+/// A count option in [lo, hi]; "1e8" is accepted. @throws InvalidParameter naming it.
+long long count(const std::string& name, const std::string& text, long long lo, long long hi);
+
+/// Rows streamed to stdout through a large buffer; a failed write (a closed pipe, a full disk)
+/// throws WriteFailed instead of passing silently.
+class Writer {
+ public:
+  Writer();
+  ~Writer();
+  void row(const std::vector<std::string>& cells);  ///< one tab-separated line
+  void line(const std::string& text);               ///< one line as given
+  void flush();                                     ///< @throws WriteFailed
+
+ private:
+  std::string buffer_;
+};
+
+/// A write to stdout failed.
+struct WriteFailed : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+/// Formats a double as every output does (%.17g).
+std::string num(double x);
+
+/// The subcommands (cmd_*.cpp).
+Command add_info(CLI::App& app);
+Command add_map(CLI::App& app);
+Command add_orbit(CLI::App& app);
+Command add_simulate(CLI::App& app);
+Command add_provenance(CLI::App& app);
+
+}  // namespace dfchaos::cli

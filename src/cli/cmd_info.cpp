@@ -1,0 +1,37 @@
+#include <cmath>
+
+#include "cli.hpp"
+
+namespace dfchaos::cli {
+
+Command add_info(CLI::App& app) {
+  auto* cmd = app.add_subcommand("info", "the phases t0..t3, vartheta0 and which of the paper's assumptions hold");
+  auto m = std::make_shared<ModelOptions>();
+  m->add_to(cmd);
+  cmd->footer(
+      "Output: a table 'quantity value'. t0 < t1 are the zeros of F - q, t2 < t3 the zeros of F = a sin t + 2b on [0, 2 pi) "
+      "(Section 2); vartheta0 solves Eq. (1); the assumptions are Eq. (2) (a > 0, 0 < b < a/2, a sin(vartheta0) < q < a) "
+      "and Eq. (23) (a > 0, b > 0, 0 < q < a).");
+  return {cmd, [m] {
+            const Parameters p = m->model();
+            Writer w;
+            auto opt = [](const std::optional<double>& v) { return v ? num(*v) : std::string("undefined"); };
+            w.row({"quantity", "value"});
+            w.row({"a", num(p.a())});
+            w.row({"b", num(p.b())});
+            w.row({"q", num(p.q())});
+            w.row({"b/a", num(p.b() / p.a())});
+            w.row({"q/a", num(p.q() / p.a())});
+            w.row({"t0", opt(p.t0())});
+            w.row({"t1", opt(p.t1())});
+            w.row({"t2", opt(p.t2())});
+            w.row({"t3", opt(p.t3())});
+            w.row({"vartheta0", num(vartheta0())});
+            w.row({"a*sin(vartheta0)", num(p.a() * std::sin(vartheta0()))});
+            w.row({"assumptions", p.assumptions().describe()});
+            w.flush();
+            return 0;
+          }};
+}
+
+}  // namespace dfchaos::cli

@@ -1,0 +1,74 @@
+#include <cmath>
+
+#include "cli.hpp"
+#include "dfchaos/errors.hpp"
+#include "dfchaos/return_map.hpp"
+
+namespace dfchaos::cli {
+
+namespace {
+/// Rejects a phase outside [t2, t3).
+void require_in_arc(const std::string& name, double x, double t2, double t3) {
+  if (!(x >= t2 && x < t3)) throw InvalidParameter(name, "t2 <= " + name + " < t3 = [" + num(t2) + ", " + num(t3) + ")", x);
+}
+}  // namespace
+
+Command add_map(CLI::App& app) {
+  auto* cmd = app.add_subcommand("map", "T1 and T at given phases of [t2, t3)");
+  struct Opts {
+    ModelOptions m;
+    std::vector<std::string> theta, grid;
+    std::string arc;
+  };
+  auto o = std::make_shared<Opts>();
+  o->m.add_to(cmd);
+  auto* t = cmd->add_option("--theta", o->theta, "phases in [t2, t3), one or more")->type_name("FLOAT ...");
+  auto* g = cmd->add_option("--grid", o->grid, "LO HI N: the N phases LO + (HI-LO) i/N, i = 0..N-1, with t2 <= LO < HI <= t3, 1 <= N <= 10^7")
+                ->expected(3)->type_name("LO HI N");
+  auto* a = cmd->add_option("--arc", o->arc, "N: the N phases t2 + (t3-t2) i/N, i = 0..N-1 (all of [t2, t3); 1 <= N <= 10^7)")->type_name("N");
+  t->excludes(g)->excludes(a);
+  g->excludes(a);
+  cmd->footer(
+      "Output columns (tab-separated, one row per phase, %.17g):\n"
+      "  theta        the start phase (at rest at the delimiter, Eq. 10)\n"
+      "  T1           the next hit T1(theta) as an instant (Eq. 11; may exceed 2 pi)\n"
+      "  T            the return map T(theta) in [t2, t3) (Lemma 3)\n"
+      "  scenario     the chain of regimes of Section 3: A f>p>f, B f>p>s>f, C f>p>s>p>s>f, D f>p>s>p>f, "
+      "C' f>s>p>s>f, D' f>s>p>f; G: a grazing touch (the flight touches the delimiter with zero velocity inside [t2, t3) "
+      "and flies on, so T = T1 mod 2 pi)\n"
+      "  elapsed      the time from theta to the next start of free flight\n"
+      "  penetration  the advance of the delimiter during that time\n"
+      "Accuracy: see docs/accuracy.md.");
+  return {cmd, [o] {
+            const Parameters p = o->m.model();
+            p.require_return_map();
+            const double t2 = p.t2_required(), t3 = p.t3_required();
+            std::vector<double> th;
+            if (!o->grid.empty()) {
+              const double lo = number("grid LO", o->grid[0]), hi = number("grid HI", o->grid[1]);
+              const long long n = count("grid N", o->grid[2], 1, 10'000'000);
+              require_in_arc("grid LO", lo, t2, t3);
+              if (!(hi > lo && hi <= t3)) throw InvalidParameter("grid HI", "LO < HI <= t3 = " + num(t3), hi);
+              th.reserve(static_cast<std::size_t>(n));
+              for (long long i = 0; i < n; ++i) th.push_back(lo + (hi - lo) * static_cast<double>(i) / static_cast<double>(n));
+            } else if (!o->arc.empty()) {
+              const long long n = count("arc", o->arc, 1, 10'000'000);
+              th.reserve(static_cast<std::size_t>(n));
+              for (long long i = 0; i < n; ++i) th.push_back(t2 + (t3 - t2) * static_cast<double>(i) / static_cast<double>(n));
+            } else {
+              for (const auto& s : o->theta) th.push_back(number("theta", s));
+            }
+            if (th.empty()) throw InvalidParameter("theta", "give --theta X [X ...], --grid LO HI N or --arc N");
+            for (double x : th) require_in_arc("theta", x, t2, t3);  // every input checked before any output
+            Writer w;
+            w.row({"theta", "T1", "T", "scenario", "elapsed", "penetration"});
+            for (double x : th) {
+              const auto s = return_map_step(p, x);
+              w.row({num(x), num(s.hit.theta1), num(s.T), scenario_name(s.scenario), num(s.elapsed), num(s.penetration)});
+            }
+            w.flush();
+            return 0;
+          }};
+}
+
+}  // namespace dfchaos::cli

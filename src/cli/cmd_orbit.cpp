@@ -1,0 +1,65 @@
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+
+#include "cli.hpp"
+#include "dfchaos/errors.hpp"
+#include "dfchaos/return_map.hpp"
+
+namespace dfchaos::cli {
+
+Command add_orbit(CLI::App& app) {
+  auto* cmd = app.add_subcommand("orbit", "iterate T from a phase, with elapsed time and the delimiter's advance");
+  struct Opts {
+    ModelOptions m;
+    std::string theta0, steps;
+  };
+  auto o = std::make_shared<Opts>();
+  o->m.add_to(cmd);
+  cmd->add_option("--theta0", o->theta0, "the initial phase, in [t2, t3)")->required()->type_name("FLOAT");
+  cmd->add_option("--steps", o->steps, "number of steps, 1 <= steps <= 1e8 (written as an integer or like 1e8)")->required()->type_name("N");
+  cmd->footer(
+      "Output columns (tab-separated, one row per step, streamed as computed, %.17g):\n"
+      "  n            the step number (0 is the initial phase)\n"
+      "  theta        the iterate theta_n = T^n(theta0)\n"
+      "  scenario     the scenario of the step from theta_n (see 'dfchaos map --help'; G is a grazing touch)\n"
+      "  elapsed      the duration of that step\n"
+      "  penetration  the advance of the delimiter during that step\n"
+      "  time         the time at which theta_n starts (theta0 at n = 0)\n"
+      "  y            the delimiter position at that time (0 at n = 0)\n"
+      "Memory does not grow with the number of steps; progress goes to stderr when it is a terminal.\n"
+      "Accuracy: see docs/accuracy.md (chaotic orbits separate from the exact orbit at the rate of the Lyapunov exponent).");
+  return {cmd, [o] {
+            const Parameters p = o->m.model();
+            p.require_return_map();
+            const double t2 = p.t2_required(), t3 = p.t3_required();
+            const double theta0 = number("theta0", o->theta0);
+            if (!(theta0 >= t2 && theta0 < t3))
+              throw InvalidParameter("theta0", "t2 <= theta0 < t3 = [" + num(t2) + ", " + num(t3) + ")", theta0);
+            const long long steps = count("steps", o->steps, 1, 100'000'000);
+            const bool progress = ::isatty(2) && steps >= 100000;
+            const auto start = std::chrono::steady_clock::now();
+            Writer w;
+            w.row({"n", "theta", "scenario", "elapsed", "penetration", "time", "y"});
+            double theta = theta0;
+            long double time = theta0, y = 0;
+            for (long long n = 0; n < steps; ++n) {
+              const auto s = return_map_step(p, theta);
+              w.row({std::to_string(n), num(theta), scenario_name(s.scenario), num(s.elapsed), num(s.penetration),
+                     num(static_cast<double>(time)), num(static_cast<double>(y))});
+              time += s.elapsed;
+              y += s.penetration;
+              theta = s.T;
+              if (progress && (n + 1) % 100000 == 0) {
+                const double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+                std::fprintf(stderr, "\rorbit: %lld/%lld steps, about %.0f s left   ", n + 1, steps, sec / (n + 1) * (steps - n - 1));
+              }
+            }
+            if (progress) std::fprintf(stderr, "\n");
+            w.flush();
+            return 0;
+          }};
+}
+
+}  // namespace dfchaos::cli
