@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "dfchaos/errors.hpp"
 #include "dfchaos/return_map.hpp"
 #include "dfchaos/symbolic.hpp"
 #include "kit/experiment.hpp"
