@@ -76,6 +76,9 @@ TEST(Claims, ToleranceIsWrittenIntoTheStatementAsChecked) {
   EXPECT_EQ(format_tolerance(1e-8), "1e-8");
   EXPECT_EQ(format_tolerance(1e-10), "1e-10");
   EXPECT_EQ(format_tolerance(0.05), "0.05");
+  EXPECT_EQ(format_tolerance(1e-4), "1e-4");
+  EXPECT_EQ(format_tolerance(2.5e-7), "2.5e-7");
+  EXPECT_EQ(format_tolerance(1e3), "1000");
   Claim c("x.y", "Eq. (1)", EvidenceKind::Sampled, "agrees to {tol}");
   c.at_most("error", 2e-9, 1e-8);
   EXPECT_EQ(c.statement(), "agrees to 1e-8");

@@ -3,6 +3,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <stdexcept>
 
 namespace dfchaos::kit {
@@ -77,16 +78,24 @@ Claim& Claim::inconclusive(const std::string& reason) {
 }
 
 std::string format_tolerance(double tol) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", tol);
+  char buf[40];
+  if (tol != 0 && std::fabs(tol) < 1e-3) {
+    // The shortest exponent form that reads back as the same double: 1e-4, 2.5e-7.
+    for (int digits = 0; digits <= 17; ++digits) {
+      std::snprintf(buf, sizeof buf, "%.*e", digits, tol);
+      if (std::strtod(buf, nullptr) == tol) break;
+    }
+  } else {
+    std::snprintf(buf, sizeof buf, "%g", tol);
+  }
   std::string t = buf;
   // "1e-08" -> "1e-8": the exponent as one writes it.
   const auto e = t.find('e');
   if (e != std::string::npos) {
     std::size_t k = e + 1;
-    if (k < t.size() && (t[k] == '-' || t[k] == '+')) ++k;
+    if (k < t.size() && t[k] == '+') t.erase(k, 1);
+    if (k < t.size() && t[k] == '-') ++k;
     while (k + 1 < t.size() && t[k] == '0') t.erase(k, 1);
-    if (t[e + 1] == '+') t.erase(e + 1, 1);
   }
   return t;
 }
