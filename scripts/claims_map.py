@@ -81,8 +81,9 @@ def main():
             md.append(f"| {item} | `experiments/{name}.cpp` | {claims_md} | {', '.join(d['figures']) or '-'} | "
                       f"{', '.join(tables) or '-'} | {', '.join(d['tests']) or '-'} |")
             claims_tex = ", ".join(f"\\claimref{{{c['id']}}}" for c in refs) or "---"
-            tex.append(f"\\dfcmaprow{{{tex_escape(item)}}}{{{tex_escape(name)}}}{{{claims_tex}}}"
-                       f"{{{tex_escape(', '.join(d['figures'])) or '---'}}}{{{tex_escape(', '.join(d['tests'])) or '---'}}}")
+            paths = lambda xs: ", ".join(f"\\path{{{x}}}" for x in xs) or "---"
+            tex.append(f"\\dfcmaprow{{{tex_escape(item)}}}{{\\path{{{name}}}}}{{{claims_tex}}}"
+                       f"{{{paths(d['figures'])}}}{{{paths(d['tests'])}}}")
     md.append("")
     md.append("Every experiment also runs as a CTest smoke test (`smoke_<name>`, label `smoke`).")
     with open(os.path.join(build, "claims-map.md"), "w") as f:

@@ -86,11 +86,47 @@ TEST(DrillingRate, FiberMatchesSimulator) {
 }
 
 TEST(EventualRegime, CasesOfTheRemarkOfSection9) {
-  EXPECT_EQ(eventual_regime(Parameters(1.0, 0.6, 2.5), 0.0, 0.0, 40, 10).behaviour, EventualBehaviour::StaysStopped);
-  EXPECT_EQ(eventual_regime(Parameters(1.0, 0.6, 1.0), 0.0, 0.0, 40, 10).behaviour, EventualBehaviour::EternalProgression);
-  EXPECT_EQ(eventual_regime(Parameters(1.0, 0.01, 0.85), 0.0, 4.0, 40, 10).behaviour, EventualBehaviour::FreeFlights);
-  const EventualBehaviour between = eventual_regime(Parameters(1.0, 0.6, 1.9), 0.0, 0.0, 40, 10).behaviour;
-  EXPECT_TRUE(between == EventualBehaviour::EternalProgression || between == EventualBehaviour::PeriodicStickSlip);
+  // Each case of the Remark from three different initial states (v0, t0): the eventual behaviour
+  // depends on the parameters only. The expected behaviour is predicted independently: q >= a + 2b
+  // stays stopped; q <= 2b (c >= 0) progresses for ever; 2b < q < a + 2b with b >= a/2 repeats a
+  // progression from rest at t0 that stops within the period (its velocity
+  // -a (cos t - cos t0) + 2c (t - t0) is negative at t0 + 2 pi), at the first zero of that velocity,
+  // found here by a plain scan; b < a/2 keeps free flights.
+  struct Case {
+    double b, q;
+    EventualBehaviour expected;
+  };
+  const Case cases[] = {{0.6, 2.5, EventualBehaviour::StaysStopped},
+                        {0.6, 1.0, EventualBehaviour::EternalProgression},
+                        {0.6, 1.15, EventualBehaviour::EternalProgression},  // 2b - a < q < 2b
+                        {0.6, 1.9, EventualBehaviour::PeriodicStickSlip},
+                        {0.7, 1.5, EventualBehaviour::PeriodicStickSlip},
+                        {0.01, 0.85, EventualBehaviour::FreeFlights}};
+  for (const Case& k : cases) {
+    const Parameters p(1.0, k.b, k.q);
+    double predicted_stop_from_t1 = NAN;  // stick-slip: the stop phase, measured from t1
+    if (k.expected == EventualBehaviour::PeriodicStickSlip) {
+      const double t0 = *p.t0(), t1 = *p.t1(), c = p.c();
+      for (int i = 1; i <= 2'000'000; ++i) {
+        const double t = t0 + two_pi * i / 2'000'000;
+        if (-(std::cos(t) - std::cos(t0)) + 2 * c * (t - t0) < 0) {
+          predicted_stop_from_t1 = wrap_phase(t - t1);
+          break;
+        }
+      }
+      ASSERT_FALSE(std::isnan(predicted_stop_from_t1)) << "b=" << k.b << " q=" << k.q;
+    }
+    for (auto [v0, t0] : {std::pair{0.0, 0.0}, std::pair{0.5, 1.7}, std::pair{2.0, 4.0}}) {
+      const EventualRegime r = eventual_regime(p, v0, t0, 40, 10);
+      EXPECT_EQ(r.behaviour, k.expected) << "b=" << k.b << " q=" << k.q << " v0=" << v0 << " t0=" << t0 << ": "
+                                         << eventual_behaviour_name(r.behaviour);
+      if (k.expected == EventualBehaviour::PeriodicStickSlip) {
+        EXPECT_NEAR(r.stick_stop_phase_min, predicted_stop_from_t1, 1e-5);
+        EXPECT_NEAR(r.stick_stop_phase_max, predicted_stop_from_t1, 1e-5);
+        EXPECT_LE(r.stick_start_phase_max_error, 1e-9);
+      }
+    }
+  }
 }
 
 TEST(EventualRegime, RejectsBadCounts) {

@@ -3,6 +3,7 @@
 // images filling [t2, 3pi/2] by intermediate values on the dense grid.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "dfchaos/covering.hpp"
@@ -55,8 +56,18 @@ TEST(Covering, RegressionArcAtTheEndOfABranchIsFound) {
 }
 
 TEST(Covering, NoCoveringWhereBOverAIsLarge) {
-  // b/a = 0.05: T1 has two discontinuities on [t2, 3pi/2] and no branch of T reaches both t2 and 3pi/2.
-  EXPECT_FALSE(lemma4_covering(Parameters(1.0, 0.05, 0.85)).holds);
+  // b/a = 0.05: a dense scan of T on [t2, 3pi/2] never meets t2 — T stays at least 0.3 above it —
+  // so no segment of it can cover [t2, 3pi/2]; the covering search must find no segment at all.
+  const Parameters p(1.0, 0.05, 0.85);
+  const double t2 = *p.t2();
+  constexpr int kScan = 20000;
+  double min_T = INFINITY;
+  for (int i = 0; i <= kScan; ++i) min_T = std::min(min_T, T(p, t2 + (1.5 * pi - t2) * i / kScan));
+  EXPECT_GT(min_T, t2 + 0.3);
+  const Lemma4Covering c = lemma4_covering(p);
+  EXPECT_FALSE(c.holds);
+  EXPECT_EQ(c.segments_found, 0);
+  EXPECT_TRUE(covering_segments(p, t2, 1.5 * pi, 1.5 * pi).empty());
 }
 
 TEST(Covering, AVerdictHoldsIsKeptUnderAFinerScan) {

@@ -1,13 +1,18 @@
 /// @file test_long_orbits.cpp
 /// @brief Reliability: orbits of 10^7 iterations of T at several parameter sets (small and large
 /// b/a, Lemma 1 holding and failing) stay finite and inside [t2, t3), throw nothing, and every
-/// step's elapsed time and penetration are finite and non-negative (checked on a sample of steps).
+/// step's elapsed time and penetration are finite and non-negative (checked on a sample of steps),
+/// and every 10^5-th step along the orbit is recomputed independently by numerical integration of
+/// the equations of motion (GSL odeiv2, ode_map.hpp): the states a long chaotic orbit actually
+/// visits, not only the start, are checked against a reference.
 /// The time per step is measured by `make bench`, not here.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
+#include "dfchaos/ode_map.hpp"
 #include "dfchaos/return_map.hpp"
 
 namespace {
@@ -15,7 +20,9 @@ namespace {
 using namespace dfchaos;
 
 constexpr long long kSteps = 10'000'000;
-constexpr long long kFullStepEvery = 1000;  // every k-th step also through return_map_step
+constexpr long long kFullStepEvery = 1000;      // every k-th step also through return_map_step
+constexpr long long kReferenceEvery = 100'000;  // every k-th step also by numerical integration
+constexpr double kOdeAgreement = 1e-7;          // |T - T_ode| (event tolerance of the integration 1e-12)
 
 struct Set {
   double b, q;
@@ -32,10 +39,19 @@ TEST_P(LongOrbit, TenMillionStepsStayFiniteAndInTheArc) {
   const Parameters p(1.0, GetParam().b, GetParam().q);
   const double t2 = *p.t2(), t3 = *p.t3();
   double theta = t2 + 0.3141592653589793 * (t3 - t2);
-  long long outside = 0, non_finite = 0, bad_steps = 0;
+  long long outside = 0, non_finite = 0, bad_steps = 0, reference_checks = 0;
+  double worst_reference = 0;
   for (long long n = 0; n < kSteps; ++n) {
     double next;
-    if (n % kFullStepEvery == 0) {
+    if (n % kReferenceEvery == 0) {
+      const MapStep s = return_map_step(p, theta);
+      const OdeMapStep o = ode_return_map_step(p, theta);
+      ++reference_checks;
+      worst_reference = std::max(worst_reference, circle_distance(s.T, o.T));
+      EXPECT_EQ(s.chain, o.chain) << "step " << n << " theta=" << theta;
+      EXPECT_NEAR(s.penetration, o.penetration, kOdeAgreement) << "step " << n;
+      next = s.T;
+    } else if (n % kFullStepEvery == 0) {
       const MapStep s = return_map_step(p, theta);
       if (!std::isfinite(s.elapsed) || !(s.elapsed > 0) || !std::isfinite(s.penetration) || s.penetration < 0) ++bad_steps;
       next = s.T;
@@ -52,6 +68,8 @@ TEST_P(LongOrbit, TenMillionStepsStayFiniteAndInTheArc) {
     }
     theta = next;
   }
+  EXPECT_EQ(reference_checks, kSteps / kReferenceEvery);
+  EXPECT_LE(worst_reference, kOdeAgreement);
   EXPECT_EQ(non_finite, 0);
   EXPECT_EQ(outside, 0);
   EXPECT_EQ(bad_steps, 0);

@@ -8,6 +8,7 @@
 #include <random>
 
 #include "dfchaos/motion.hpp"
+#include "dfchaos/progression_stop.hpp"
 #include "test_support.hpp"
 
 using namespace dfchaos;
@@ -92,4 +93,33 @@ TEST(ClosedForms, EventFunctionsAreGapAndMinusVelocity) {
     EXPECT_NEAR(static_cast<double>(gap.slope(i)), f.velocity(i), 1e-12);
     EXPECT_NEAR(static_cast<double>(mv.value(i)), -g.velocity(i), 1e-12);
   }
+}
+
+TEST(ProgressionFromT0, StopsWhereTheVelocityOfEq7FirstVanishes) {
+  // Lemma 1's object computed by progression_from_t0, against a plain scan of Eq. (7) for its
+  // first zero after t0, and the sign of Eq. (8) at t2, at parameters where Lemma 1 holds and where
+  // it fails (scenario D: the stop falls in [t2, t3); and the repeating stick-slip).
+  for (auto [ba, qa] : {std::pair{0.01, 0.85}, std::pair{0.05, 0.7}, std::pair{0.45, 0.95}}) {
+    const Parameters p(1.0, ba, qa);
+    const ProgressionFromT0 r = progression_from_t0(p);
+    const double t0 = *p.t0(), c = p.c();
+    double scan_t4 = NAN;
+    constexpr int kScan = 4'000'000;
+    for (int i = 1; i <= kScan; ++i) {
+      const double t = t0 + 2 * two_pi * i / kScan;
+      if (-(std::cos(t) - std::cos(t0)) + 2 * c * (t - t0) <= 0) {
+        scan_t4 = t;
+        break;
+      }
+    }
+    ASSERT_FALSE(std::isnan(scan_t4)) << ba;
+    EXPECT_NEAR(r.t4_value, scan_t4, 2 * 2 * two_pi / kScan) << "b/a=" << ba << " q/a=" << qa;
+    const double t2 = *p.t2(), t1 = *p.t1();
+    EXPECT_EQ(r.stops_in_t1_t2, scan_t4 >= t1 && scan_t4 <= t2);
+    EXPECT_NEAR(r.eq8_velocity_at_t2, -(std::cos(t2) - std::cos(t0)) + 2 * c * (t2 - t0), 1e-12);
+    EXPECT_EQ(r.proof_bound, 1 + std::cos(t0) - (qa - 2 * ba) * (pi - t0) < 0);
+  }
+  EXPECT_TRUE(progression_from_t0(Parameters(1.0, 0.01, 0.85)).stops_in_t1_t2);
+  EXPECT_FALSE(progression_from_t0(Parameters(1.0, 0.05, 0.7)).stops_in_t1_t2);
+  EXPECT_TRUE(progression_from_t0(Parameters(1.0, 0.45, 0.95)).repeats_for_ever);
 }

@@ -6,6 +6,7 @@
 
 #include "dfchaos/errors.hpp"
 #include "dfchaos/parameters.hpp"
+#include "dfchaos/phase.hpp"
 
 using namespace dfchaos;
 
@@ -106,4 +107,56 @@ TEST(Parameters, AssumptionsReportEq2AndEq23) {
   EXPECT_FALSE(Parameters(1.0, 0.6, 0.9).assumptions().b_in_range);
   EXPECT_FALSE(Parameters(1.0, 0.3, 0.5).assumptions().progression_ends);
   EXPECT_THROW(Parameters(1.0, 0.3, 0.5).require_return_map(), InvalidParameter);
+}
+
+// ---- phase.hpp: instants as whole turns plus a phase ---------------------------------------
+
+TEST(Phase, WrapPhaseAndCircleDistanceKnownValues) {
+  EXPECT_EQ(wrap_phase(1.0), 1.0);
+  EXPECT_DOUBLE_EQ(wrap_phase(-1.0), two_pi - 1.0);
+  EXPECT_DOUBLE_EQ(wrap_phase(two_pi + 0.5), 0.5);
+  EXPECT_EQ(wrap_phase(0.0), 0.0);
+  const double w = wrap_phase(1e6);  // 1e6 = 159154 turns + 0.943...
+  EXPECT_NEAR(w, 1e6 - 159154 * 6.283185307179586476925286766559, 1e-9);
+  EXPECT_GE(w, 0.0);
+  EXPECT_LT(w, two_pi);
+  EXPECT_NEAR(circle_distance(0.1, two_pi - 0.1), 0.2, 1e-15);
+  EXPECT_DOUBLE_EQ(circle_distance(1.0, 1.0 + pi), pi);
+  EXPECT_EQ(circle_distance(2.0, 2.0), 0.0);
+}
+
+TEST(Phase, InstantSplitsTimeIntoTurnAndPhase) {
+  const Instant a = Instant::from_time(3 * two_pi + 1.25);
+  EXPECT_EQ(a.turn, 3);
+  EXPECT_NEAR(a.phase, 1.25, 1e-14);
+  const Instant b = Instant::from_time(-0.5);
+  EXPECT_EQ(b.turn, -1);
+  EXPECT_NEAR(b.phase, two_pi - 0.5, 1e-15);
+  EXPECT_NEAR(a.value(), 3 * two_pi + 1.25, 1e-14);
+  EXPECT_EQ(Instant::from_time(1.0), (Instant{0, 1.0}));  // inside [0, 2 pi): exact
+}
+
+TEST(Phase, AdvanceElapsedAndOrderAreConsistent) {
+  const Instant t{5, 6.0};
+  const Instant u = advance(t, 1.0L);  // crosses into the next turn
+  EXPECT_EQ(u.turn, 6);
+  EXPECT_NEAR(u.phase, 7.0 - two_pi, 1e-15);
+  EXPECT_NEAR(static_cast<double>(elapsed(t, u)), 1.0, 1e-15);
+  const Instant far = advance(t, 1e7L);  // a long flight keeps the phase
+  EXPECT_NEAR(static_cast<double>(elapsed(t, far)), 1e7, 1e-8);
+  EXPECT_TRUE(before(t, u));
+  EXPECT_FALSE(before(u, t));
+  EXPECT_FALSE(before(t, t));
+  EXPECT_EQ(next_at_phase(t, 6.1), (Instant{5, 6.1}));
+  EXPECT_EQ(next_at_phase(t, 6.0), (Instant{6, 6.0}));  // strictly after
+  EXPECT_EQ(next_at_phase(t, 1.0), (Instant{6, 1.0}));
+}
+
+TEST(Phase, ArcsMayWrapThroughZero) {
+  EXPECT_TRUE(phase_in_arc(1.0, 0.5, 2.0));
+  EXPECT_TRUE(phase_in_arc(0.5, 0.5, 2.0));   // closed at the left
+  EXPECT_FALSE(phase_in_arc(2.0, 0.5, 2.0));  // open at the right
+  EXPECT_TRUE(phase_in_arc(6.0, 5.0, 1.0));   // [5, 2 pi) U [0, 1)
+  EXPECT_TRUE(phase_in_arc(0.2, 5.0, 1.0));
+  EXPECT_FALSE(phase_in_arc(3.0, 5.0, 1.0));
 }

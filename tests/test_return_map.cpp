@@ -3,9 +3,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <tuple>
 
 #include "dfchaos/errors.hpp"
+#include "dfchaos/motion.hpp"
 #include "dfchaos/ode_map.hpp"
+#include "dfchaos/progression_stop.hpp"
 #include "dfchaos/return_map.hpp"
 #include "test_support.hpp"
 
@@ -106,21 +109,37 @@ TEST(ReturnMap, ScenarioBookkeepingFollowsLemma3) {
 }
 
 TEST(ReturnMap, EternalStickSlipIsReportedNotLooped) {
-  // b = 0.45, q = 0.95: a progression from rest at t0 is still moving at t3 and stops before the
-  // next t0, so it repeats every period and the mass never flies again (Lemma 1 fails badly).
-  const Parameters p(1.0, 0.45, 0.95);
-  int gave_up = 0, returned = 0;
-  for (int i = 0; i < 200; ++i) {
-    const double th = *p.t2() + (*p.t3() - *p.t2()) * i / 200.0;
-    try {
-      return_map_step(p, th);
-      ++returned;
-    } catch (const GaveUp&) {
-      ++gave_up;
-      EXPECT_THROW(ode_return_map_step(p, th), GaveUp);
+  // The prediction, from the pieces alone: a start gives up exactly when its first progression
+  // (from the impact T1 with the impact velocity, Eq. 17) stops in [t3, t0 + 2 pi) — a stop until
+  // t0 — and the progression from rest at t0 repeats for ever (progression_from_t0). Anywhere else
+  // the mass flies again. Checked at b = 0.45, q = 0.95 (the progression from t0 is still moving at
+  // t3 and stops before the next t0: every start gives up), and at two sets where the mass always
+  // flies again (Lemma 1 holds; Lemma 1 fails with scenario D).
+  for (auto [ba, qa, all_give_up] : {std::tuple{0.45, 0.95, true}, std::tuple{0.01, 0.85, false}, std::tuple{0.05, 0.7, false}}) {
+    const Parameters p(1.0, ba, qa);
+    const bool repeats = progression_from_t0(p).repeats_for_ever;
+    EXPECT_EQ(repeats, all_give_up);
+    const double t0 = *p.t0(), t3 = *p.t3();
+    int gave_up = 0;
+    for (int i = 0; i < 200; ++i) {
+      const double th = *p.t2() + (*p.t3() - *p.t2()) * i / 200.0;
+      const NextHit h = next_hit(p, th);
+      ASSERT_GT(h.hit_velocity, 0) << "theta=" << th;
+      const auto stop = first_upcrossing(ProgressionMotion(p, h.t1, 0.0, h.hit_velocity).minus_velocity());
+      ASSERT_TRUE(stop.has_value());
+      const bool predicted = repeats && phase_in_arc(stop->t.phase, t3, t0);
+      bool actual = false;
+      try {
+        return_map_step(p, th);
+      } catch (const GaveUp&) {
+        actual = true;
+        ++gave_up;
+        EXPECT_THROW(ode_return_map_step(p, th), GaveUp);
+      }
+      EXPECT_EQ(actual, predicted) << "b/a=" << ba << " theta=" << th << ": the first progression stops at phase " << stop->t.phase;
     }
+    EXPECT_EQ(gave_up, all_give_up ? 200 : 0) << "b/a=" << ba << " q/a=" << qa;
   }
-  EXPECT_GT(gave_up, 0);
 }
 
 TEST(ReturnMap, RejectsParametersOutsideTheMapsDomain) {

@@ -2,7 +2,11 @@
 // the superstable windows against a plain grid and the width epsilon against a direct scan.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "dfchaos/ode_map.hpp"
 #include "dfchaos/superstable.hpp"
@@ -34,11 +38,49 @@ TEST_F(Symbolic, PeriodicOrbitsAreOrbitsOfTheIntegratedMap) {
 }
 
 TEST_F(Symbolic, PeriodicPointsOfDifferentWordsAreDistinctAndOrdered) {
-  // Period-1 points of K0 and K1, and the period-2 orbit, are different points.
-  const ItineraryOrbit a = periodic_orbit(p, g, "0"), b = periodic_orbit(p, g, "1"), c = periodic_orbit(p, g, "01");
-  EXPECT_GT(std::fabs(a.x[0] - b.x[0]), 1e-3);
-  EXPECT_GT(std::fabs(c.x[0] - a.x[0]), 1e-6);
-  EXPECT_GT(std::fabs(c.x[1] - b.x[0]), 1e-6);
+  // The periodic point with itinerary sigma = (w)^infinity lies in K_{sigma_0}; K0 lies left of K1.
+  // Between two itineraries that first differ at index n, the order of the points is the order of
+  // K_{sigma_n} and K_{tau_n}, reversed once for every decreasing branch among the common prefix
+  // sigma_0 .. sigma_{n-1} (each inverse branch preserves or reverses order). Checked for all words
+  // of length <= 4: a prediction from symbols alone against the computed points.
+  const bool increasing[2] = {g[0].k_at_t2 < g[0].k_at_top, g[1].k_at_t2 < g[1].k_at_top};
+  ASSERT_LT(std::max(g[0].k_at_t2, g[0].k_at_top), std::min(g[1].k_at_t2, g[1].k_at_top));  // K0 left of K1
+  constexpr int kHorizon = 24;  // symbols compared: more than any two distinct periods <= 4 need
+  auto sequence = [](const std::string& w) {
+    std::string s;
+    while (s.size() < kHorizon) s += w;
+    return s.substr(0, kHorizon);
+  };
+  std::vector<std::pair<std::string, double>> points;  // (infinite itinerary, point)
+  for (int n = 1; n <= 4; ++n)
+    for (int bits = 0; bits < (1 << n); ++bits) {
+      std::string w;
+      for (int k = n - 1; k >= 0; --k) w += ((bits >> k) & 1) ? '1' : '0';
+      const std::string sigma = sequence(w);
+      bool seen = false;
+      for (const auto& pt : points) seen = seen || pt.first == sigma;
+      if (seen) continue;  // (01)^inf and (0101)^inf are the same point
+      const ItineraryOrbit o = periodic_orbit(p, g, w);
+      ASSERT_TRUE(o.itinerary_ok) << w;
+      points.emplace_back(sigma, o.x[0]);
+    }
+  ASSERT_EQ(points.size(), 22u);  // the distinct periodic sequences of least period 1, 2, 3, 4: 2 + 2 + 6 + 12
+  auto predicted_less = [&](const std::string& s, const std::string& t) {
+    bool flip = false;
+    for (std::size_t k = 0; k < s.size(); ++k) {
+      if (s[k] != t[k]) return (s[k] < t[k]) != flip;
+      if (!increasing[s[k] - '0']) flip = !flip;
+    }
+    ADD_FAILURE() << "equal itineraries " << s;
+    return false;
+  };
+  for (std::size_t i = 0; i < points.size(); ++i)
+    for (std::size_t j = 0; j < points.size(); ++j) {
+      if (i == j) continue;
+      EXPECT_NE(points[i].second, points[j].second) << points[i].first << " " << points[j].first;
+      EXPECT_EQ(points[i].second < points[j].second, predicted_less(points[i].first, points[j].first))
+          << points[i].first << " at " << points[i].second << ", " << points[j].first << " at " << points[j].second;
+    }
 }
 
 TEST_F(Symbolic, AllWordsOfLengthEightAreRealised) {
