@@ -91,12 +91,18 @@ class Collector : public benchmark::ConsoleReporter {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::string out = "build";
+  // Files are written only under --out=DIR, and only for a complete measurement (every benchmark
+  // ran: no --benchmark_filter, no --benchmark_list_tests).
+  std::string out;
   std::vector<char*> args;
   for (int i = 0; i < argc; ++i) {
     const std::string a = argv[i];
     if (a.rfind("--out=", 0) == 0) out = a.substr(6);
     else args.push_back(argv[i]);
+  }
+  if (std::find_if(args.begin(), args.end(), [](const char* a) { return std::string(a) == "--out"; }) != args.end()) {
+    std::fprintf(stderr, "bench_return_map: error: out: write --out=DIR\n");
+    return 2;
   }
   // Ours: Google Benchmark picks the iteration count (cycling through the phases). Baseline: fixed
   // counts of passes over all phases, since one evaluation at b/a = 1e-6 integrates a flight of up
@@ -172,8 +178,23 @@ int main(int argc, char** argv) {
   if (speedup.count(1e-4)) targets.push(target("speed-up >= 10^4 at b/a = 1e-4", speedup[1e-4] >= 1e4, speedup[1e-4]));
   if (ours_max > 0 && rows_measured == kRatios.size()) targets.push(target("dfchaos cost varies < 3x over b/a in [1e-6, 1e-1]", ours_max / ours_min < 3, ours_max / ours_min));
   doc.set("targets", targets);
-  write_atomically(std::filesystem::path(out) / "bench" / "bench.json", doc.dump());
-  write_atomically(std::filesystem::path(out) / "bench" / "bench.tex", tex);
+  const bool complete = rows_measured == kRatios.size() && collector.seconds.size() == 2 * kRatios.size();
+  if (out.empty()) {
+    std::printf("bench: no --out=DIR given: nothing written\n");
+    return 0;
+  }
+  if (!complete) {
+    std::printf("bench: %zu of %zu benchmarks measured (a filter or a listing): nothing written\n", collector.seconds.size(),
+                2 * kRatios.size());
+    return 0;
+  }
+  try {
+    write_all_or_nothing({{std::filesystem::path(out) / "bench" / "bench.json", doc.dump()},
+                          {std::filesystem::path(out) / "bench" / "bench.tex", tex}});
+  } catch (const OutputError& e) {
+    std::fprintf(stderr, "bench_return_map: error: %s\n", e.what());
+    return e.bad_path() ? 2 : 1;
+  }
   std::printf("bench: wrote %s/bench/bench.json and %s/bench/bench.tex\n", out.c_str(), out.c_str());
   return 0;
 }

@@ -1,5 +1,6 @@
 #include "dfchaos/symbolic.hpp"
 
+#include <cfloat>
 #include <cmath>
 
 #include "dfchaos/errors.hpp"
@@ -59,13 +60,17 @@ void check_itinerary_orbit(const Parameters& p, const InverseBranch (&g)[2], Iti
   o.max_step_residual = 0;
   o.log_expansion = 0;
   o.min_separation = INFINITY;
+  o.precision_floor = 0;
   for (std::size_t j = 0; j < n; ++j) {
     const InverseBranch& b = g[o.word[j] == '1' ? 1 : 0];
     const double lo = std::min(b.k_at_t2, b.k_at_top), hi = std::max(b.k_at_t2, b.k_at_top);
     if (o.x[j] < lo || o.x[j] > hi) o.itinerary_ok = false;
     if (j + 1 < n || periodic) o.max_step_residual = std::max(o.max_step_residual, circle_distance(T(p, o.x[j]), o.x[(j + 1) % n]));
     const double h = 1e-9 * (hi - lo);
-    o.log_expansion += std::log(std::fabs((T(p, o.x[j] + h) - T(p, o.x[j] - h)) / (2 * h)));
+    const double slope = std::fabs((T(p, o.x[j] + h) - T(p, o.x[j] - h)) / (2 * h));
+    o.log_expansion += std::log(slope);
+    if (j + 1 < n || periodic)
+      o.precision_floor = std::max(o.precision_floor, 4 * (slope * 2 * DBL_EPSILON * std::fabs(o.x[j]) + DBL_EPSILON * std::fabs(o.x[(j + 1) % n])));
     for (std::size_t k = j + 1; k < n; ++k) o.min_separation = std::min(o.min_separation, std::fabs(o.x[j] - o.x[k]));
   }
 }

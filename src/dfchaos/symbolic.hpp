@@ -42,6 +42,11 @@ struct ItineraryOrbit {
   bool itinerary_ok = false;        ///< \f$x_j \in K_{w_j}\f$ for every j
   double log_expansion = 0;         ///< \f$\sum_j \ln|T'(x_j)|\f$ by central differences: how much a forward T^n amplifies errors
   double min_separation = 0;        ///< smallest distance between two orbit points
+  /// The one-step residual that double precision alone can produce along this orbit:
+  /// \f$\max_j 4(|T'(x_j)|\,2\epsilon|x_j| + \epsilon|x_{j+1}|)\f$ — each \f$x_j\f$ is known to about
+  /// two ulp (the inverse branch bisects to adjacent doubles) and \f$T\f$ amplifies that by
+  /// \f$|T'|\f$. A residual below it cannot tell a true orbit from a false one.
+  double precision_floor = 0;
 };
 
 /// A point whose orbit follows `word` (n letters) through \f$K_0, K_1\f$: \f$g_{w_0}\circ\dots\circ g_{w_{n-1}}(y_0)\f$.
