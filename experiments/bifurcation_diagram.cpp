@@ -117,7 +117,7 @@ const Experiment experiment{
       // Not expected: a finding, not an assertion of the paper.
       run.out.claim("bif.collapse_onto_t2", "Lemma 3, Theorem 2 (beyond)", EvidenceKind::Sampled,
                     "After the transient, the orbit of a typical phase has met an arc where T = t2 and continues as the orbit of t2; "
-                    "at most parameter values that orbit is a superstable cycle through t2 (Lyapunov exponent -inf).")
+                    "at most parameter values that orbit is a superstable cycle through t2 (T' = 0 on it: a Lyapunov exponent of minus infinity).")
           .ours().not_expected()
           .evidence("parameter_values", static_cast<long long>(pts.size())).evidence("superstable_cycle_through_t2", superstable)
           .evidence("positive_lyapunov", positive).evidence("map_undefined", fails)

@@ -105,6 +105,7 @@ const Experiment experiment{
           .evidence("cubic_estimate_3_sin_pi_over_100", cubic_estimate)
           .holds(bound_violations == 0);
       run.out.macro("LemmaTwoCubicEstimate", cubic_estimate, 3);
+      run.out.macro("LemmaTwoBoundAtZero", 2 * std::sin(pi / 100), 3);  // 2 (sin(pi/100) - 2b/a) as b/a -> 0
       run.out.macro("LemmaTwoMinJump", min_jump_all, 4);
     }};
 

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "dfchaos/bisect.hpp"
 #include "dfchaos/covering.hpp"
 #include "dfchaos/lemma4_construction.hpp"
 #include "kit/experiment.hpp"
@@ -25,8 +26,9 @@ const Experiment experiment{
                 count("uniform", 8000, "least density, as points over [t2, 3pi/2]").range(0, 1'000'000)},
     .outputs = {data("grid", "Lemma 4 on a (q/a, b/a) grid: (a) the proof's steps, (b) the covering itself"),
                 data("", "per q/a: largest grid b/a below which (a) the proof's construction, (b) the covering, holds at every grid "
-                         "point; (b) is a lower estimate: a covering is verified when found, but one whose T = t2 arc is "
-                         "narrower than the scan can be missed"),
+                         "point, and each threshold bisected between that grid point and the next (relative width 1e-3); (b) is a "
+                         "sampled estimate: a covering is checked on a grid when found, and one whose T = t2 arc is narrower than "
+                         "the scan can be missed"),
                 latex("lemma4_b0", "b0 of the construction and of the covering per q/a")},
     .body = [](Run& run) {
       const int nq = run.count_int("nq"), nb = run.count_int("nb");
@@ -36,10 +38,11 @@ const Experiment experiment{
       search.scan = run.count_int("scan");
       search.uniform = run.count_int("uniform");
       const Axis q_axis = Axis::centres(s0, 1, nq), b_axis = Axis::log(ba_min, ba_max, nb);
+      constexpr double kThresholdRelTol = 1e-3;  // thresholds are bisected to this relative width
 
       Table grid({"q_over_a", "b_over_a", "literal_all", "L1_to_t2", "z_in_L2", "branches_cover", "covering_holds", "J0_lo", "J0_hi",
                   "J1_lo", "J1_hi"});
-      Table per_q({"q_over_a", "b0_literal", "b0_covering", "covering_some_max_b", "literal_some_max_b"});
+      Table per_q({"q_over_a", "b0_literal_grid", "b0_covering_grid", "covering_some_max_b", "literal_some_max_b", "b0_literal", "b0_covering"});
       long long literal_without_covering = 0, points = 0;
       LatexTable tex("rrrrr", {"$q/a$", "$b_0/a$ (a) proof's steps", "$b_0/a$ (b) covering", "largest $b/a$ with (a)", "largest $b/a$ with (b)"});
       double max_b0_lit = 0, max_b0_cov = 0;
@@ -62,11 +65,20 @@ const Experiment experiment{
                     static_cast<long long>(lit.branches_cover), static_cast<long long>(cov.holds), cov.holds ? cov.J0.lo : NAN,
                     cov.holds ? cov.J0.hi : NAN, cov.holds ? cov.J1.lo : NAN, cov.holds ? cov.J1.hi : NAN});
         }
-        per_q.row({qa, b0_lit, b0_cov, some_cov, some_lit});
-        max_b0_lit = std::max(max_b0_lit, b0_lit);
-        max_b0_cov = std::max(max_b0_cov, b0_cov);
+        // The thresholds: bisection between the last grid b/a of the initial run where each holds and
+        // the next grid b/a (where it fails), to a relative width kThresholdRelTol.
+        auto refine = [&](double b_last, auto&& holds) {
+          if (!(b_last > 0) || b_last >= b_axis[nb - 1]) return b_last;
+          const double b_next = b_last * std::pow(ba_max / ba_min, 1.0 / (nb - 1));
+          return bisect([&](double bb) { return holds(Parameters(1.0, bb, qa)); }, b_last, b_next, BisectStop{60, 0, kThresholdRelTol}).first;
+        };
+        const double b0_lit_bis = refine(b0_lit, [&](const Parameters& pp) { return lemma4_construction(pp, run.fast() ? 50 : 200).all(); });
+        const double b0_cov_bis = refine(b0_cov, [&](const Parameters& pp) { return lemma4_covering(pp, search).holds; });
+        per_q.row({qa, b0_lit, b0_cov, some_cov, some_lit, b0_lit_bis, b0_cov_bis});
+        max_b0_lit = std::max(max_b0_lit, b0_lit_bis);
+        max_b0_cov = std::max(max_b0_cov, b0_cov_bis);
         auto f = [](double v) { return v > 0 ? format_significant(v, 3) : std::string("---"); };
-        tex.row({format_significant(qa, 4), f(b0_lit), f(b0_cov), f(some_lit), f(some_cov)});
+        tex.row({format_significant(qa, 4), f(b0_lit_bis), f(b0_cov_bis), f(some_lit), f(some_cov)});
       }
       run.table("grid", grid);
       run.table("", per_q);
@@ -74,6 +86,7 @@ const Experiment experiment{
       run.out.macro("LemmaFourLiteralMaxBzero", max_b0_lit, 2);
       run.out.macro("LemmaFourCoveringMaxBzero", max_b0_cov, 2);
       run.out.macro("LemmaFourBaMin", ba_min, 2);
+      run.out.macro("LemmaFourThresholdTol", format_significant(kThresholdRelTol, 1));
       // A reference example for the report.
       const Parameters ref(1.0, 1e-3, 0.85);
       const Lemma4Covering c = lemma4_covering(ref, search);

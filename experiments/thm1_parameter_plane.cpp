@@ -1,6 +1,6 @@
 /// @file thm1_parameter_plane.cpp
 /// @brief Theorems 1 and 2 over the parameter plane: for q/a in (sin vartheta0, 1) and b/a
-/// log-spaced in [1e-4, 0.1], whether the covering of Lemma 4 holds (the chaos certificate of
+/// log-spaced in [1e-4, 0.1], whether the covering of Lemma 4 holds (the chaos witness of
 /// Theorem 1), whether t2 is superstable (Theorem 2), both (coexistence), or neither.
 /// Parallel over the grid (kit::sweep); every cell is independent, so the output does not depend
 /// on the number of threads.

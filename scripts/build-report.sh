@@ -40,5 +40,41 @@ if grep -E "Reference .* undefined|Citation .* undefined|There were undefined re
   echo "build-report: the report has undefined references or missing verdicts (see $out/report.log)" >&2
   exit 1
 fi
+# Content that ran off a page is not in the PDF at all.
+if grep -q 'Overfull \\vbox' "$out/report.log"; then
+  grep -B1 'Overfull \\vbox' "$out/report.log" | head -10 >&2
+  echo "build-report: content ran off a page (Overfull \\vbox in $out/report.log): it is not in the PDF" >&2
+  exit 1
+fi
+# Every claim is in the PDF; no nan, inf or unresolved reference (??) reached it; the main text
+# (before the appendices) stays within 30 pages.
+pdftotext -layout "$out/report.pdf" "$out/report.txt"
+python3 - "$abs" "$out" <<'PY'
+import glob, json, re, sys
+build, out = sys.argv[1], sys.argv[2]
+text = open(out + "/report.txt", encoding="utf-8", errors="replace").read()
+flat = re.sub(r"\s+", "", text)
+ids = [c["id"] for f in sorted(glob.glob(build + "/claims/*.json")) for c in json.load(open(f))["claims"]]
+missing = [i for i in ids if i not in flat]
+problems = []
+if missing:
+    problems.append("claims not in the PDF: " + ", ".join(missing))
+for pattern, what in ((r"\?\?", "an unresolved reference (??)"), (r"(?<![A-Za-z])-?nan(?![A-Za-z])", "nan"),
+                      (r"(?<![A-Za-z])-?inf(?![A-Za-z])", "inf")):
+    m = re.search(pattern, text, flags=re.IGNORECASE)
+    if m:
+        problems.append(what + " in the PDF text: ..." + text[max(0, m.start() - 60):m.end() + 40].replace("\n", " ") + "...")
+aux = open(out + "/report.aux").read()
+m = re.search(r"\\newlabel\{app:start\}\{\{[^}]*\}\{(\d+)\}", aux)
+if not m:
+    problems.append("no label app:start at the appendices")
+elif int(m.group(1)) - 1 > 30:
+    problems.append(f"the main text runs to page {int(m.group(1)) - 1} (at most 30)")
+if problems:
+    for p in problems:
+        print("build-report: " + p, file=sys.stderr)
+    sys.exit(1)
+print(f"report checks: {len(ids)} claims in the PDF, no nan/inf/??, main text {int(m.group(1)) - 1} pages")
+PY
 pages=$(pdfinfo "$out/report.pdf" 2>/dev/null | awk '/^Pages:/ {print $2}')
 echo "report: $out/report.pdf (${pages:-?} pages)"
