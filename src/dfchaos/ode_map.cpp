@@ -149,4 +149,28 @@ OdeMapStep ode_return_map_step(const Parameters& p, double theta, const OdeMapOp
   throw GaveUp("ode_return_map_step: no return to free flight within 8 regime changes");
 }
 
+std::pair<double, double> integrate_forced_motion(double a, double C, double t0, double x0, double v0, double t1, double eps) {
+  for (double v : {a, C, t0, x0, v0, t1})
+    if (!std::isfinite(v)) throw InvalidParameter("integrate_forced_motion", "finite arguments");
+  if (!(t1 >= t0)) throw InvalidParameter("t1", "t1 >= t0", t1);
+  gsl_set_error_handler_off();
+  struct Force {
+    double a, C;
+  } force{a, C};
+  auto rhs = [](double t, const double y[], double dydt[], void* params) -> int {
+    const auto* f = static_cast<const Force*>(params);
+    dydt[0] = y[1];
+    dydt[1] = f->a * std::sin(t) + f->C;
+    return GSL_SUCCESS;
+  };
+  gsl_odeiv2_system sys{rhs, nullptr, 2, &force};
+  std::unique_ptr<gsl_odeiv2_driver, decltype(&gsl_odeiv2_driver_free)> d(
+      gsl_odeiv2_driver_alloc_y_new(&sys, gsl_odeiv2_step_rk8pd, 1e-3, eps, eps), &gsl_odeiv2_driver_free);
+  gsl_odeiv2_driver_set_nmax(d.get(), 100'000'000);
+  double t = t0, y[2] = {x0, v0};
+  if (t1 > t0 && gsl_odeiv2_driver_apply(d.get(), &t, t1, y) != GSL_SUCCESS)
+    throw GaveUp("integrate_forced_motion: GSL odeiv2 failed between " + format_double(t0) + " and " + format_double(t1));
+  return {y[0], y[1]};
+}
+
 }  // namespace dfchaos

@@ -12,6 +12,7 @@
 
 #include <functional>
 #include <string>
+#include <utility>
 
 #include "dfchaos/parameters.hpp"
 
@@ -39,6 +40,13 @@ struct OdeMapStep {
   long steps = 0;         ///< accepted integration steps
   long rhs_evaluations = 0; ///< evaluations of the right-hand side
 };
+
+/// Position and velocity at \f$t_1\f$ of \f$\ddot x = a\sin t + C\f$ from \f$x(t_0) = x_0\f$,
+/// \f$\dot x(t_0) = v_0\f$, by GSL odeiv2 rk8pd with per-step error targets `eps`: the free regime
+/// of Eq. (3) is \f$C = 2b\f$, the progression of Eq. (4) \f$C = 2c = 2b - q\f$. No events: an
+/// independent check of the closed forms of Eqs. (3)–(7).
+/// @throws InvalidParameter for non-finite input or \f$t_1 < t_0\f$; GaveUp if GSL fails.
+std::pair<double, double> integrate_forced_motion(double a, double C, double t0, double x0, double v0, double t1, double eps = 1e-13);
 
 /// One step of the return map by numerical integration, from rest at the delimiter at phase theta.
 /// @throws InvalidParameter for bad options, GaveUp when max_steps or 8 regime changes are exceeded.
