@@ -4,10 +4,13 @@
 /// which it goes through; (b) the statement itself, searched for among the continuity branches of T.
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "dfchaos/bisect.hpp"
 #include "dfchaos/covering.hpp"
 #include "dfchaos/lemma4_construction.hpp"
+#include "dfchaos/map_derivative.hpp"
+#include "dfchaos/next_hit.hpp"
 #include "kit/experiment.hpp"
 #include "kit/format.hpp"
 #include "kit/grid.hpp"
@@ -29,7 +32,8 @@ const Experiment experiment{
                          "point, and each threshold bisected between that grid point and the next (relative width 1e-3); (b) is a "
                          "sampled estimate: a covering is checked on a grid when found, and one whose T = t2 arc is narrower than "
                          "the scan can be missed"),
-                latex("lemma4_b0", "b0 of the construction and of the covering per q/a")},
+                latex("lemma4_b0", "b0 of the construction and of the covering per q/a"),
+                data("eq19", "the step of Lemma 4's proof through (19): discontinuity-free subsegments of L2 of length pi/500 and the drop of T1 on them")},
     .body = [](Run& run) {
       const int nq = run.count_int("nq"), nb = run.count_int("nb");
       const double ba_min = run.real("ba-min");
@@ -94,6 +98,58 @@ const Experiment experiment{
       run.out.macro("LemmaFourRefJzeroHi", c.holds ? format_significant(c.J0.hi, 8) : "none");
       run.out.macro("LemmaFourRefJoneLo", c.holds ? format_significant(c.J1.lo, 8) : "none");
       run.out.macro("LemmaFourRefJoneHi", c.holds ? format_significant(c.J1.hi, 8) : "none");
+
+      // The step of the proof through (19): if L2 had fewer than three discontinuities of T1, some
+      // subsegment I of L2 of length pi/500 would be free of them; T1 is so steep there (Eq. 13) that
+      // T1 mod 2pi would take every phase on I, so the left-hand side of (19) -- the impact velocity
+      // over a, by Eq. (14) -- would change sign, which a simple root forbids. The premise checked
+      // here: |T1'| >= 2pi / (pi/500) = 1000 on all of L2 (T1' by the implicit function theorem,
+      // map_derivative.hpp), at several b/a; and how many discontinuities L2 has there.
+      Table eq19({"b_over_a", "discontinuities_in_L2", "longest_free_subsegment", "min_abs_T1_derivative", "step_premise_holds"});
+      const double L2lo = 1.01 * pi, L2hi = 1.02 * pi, steep = two_pi / (pi / 500);
+      const int n19 = run.fast() ? 200 : 2000;
+      const std::vector<double> b19 = run.fast() ? std::vector<double>{1e-5, 8e-5} : std::vector<double>{1e-5, 2e-5, 3e-5, 5e-5, 8e-5, 1.2e-4};
+      bool premise_at_smallest = false;
+      double largest_b_premise = 0;
+      auto min_abs_slope = [&](const Parameters& pp) {
+        double m = INFINITY;
+        for (int i = 0; i < n19; ++i) {
+          const MapDerivative d = map_derivative(pp, L2lo + (L2hi - L2lo) * (i + 0.5) / n19);
+          if (std::isfinite(d.dtheta1)) m = std::min(m, std::fabs(d.dtheta1));
+        }
+        return m;
+      };
+      for (double ba : b19) {
+        const Parameters pp(1.0, ba, 0.85);
+        const auto z = symmetric_tangencies(pp, L2lo, L2hi);
+        double longest = 0, prev = L2lo;
+        for (const auto& zz : z) {
+          longest = std::max(longest, zz.z - prev);
+          prev = zz.z;
+        }
+        longest = std::max(longest, L2hi - prev);
+        const double min_slope = min_abs_slope(pp);
+        const bool premise = min_slope >= steep;
+        if (premise) largest_b_premise = std::max(largest_b_premise, ba);
+        if (ba == b19.front()) premise_at_smallest = premise;
+        eq19.row({ba, static_cast<long long>(z.size()), longest, min_slope, static_cast<long long>(premise)});
+      }
+      run.table("eq19", eq19);
+      // The threshold of the premise, bisected between the largest b/a tried where it holds and the
+      // next one tried (relative width kThresholdRelTol).
+      double b19_threshold = largest_b_premise;
+      for (std::size_t k = 0; k + 1 < b19.size(); ++k)
+        if (b19[k] == largest_b_premise)
+          b19_threshold = bisect([&](double bb) { return min_abs_slope(Parameters(1.0, bb, 0.85)) >= steep; }, b19[k], b19[k + 1],
+                                 BisectStop{60, 0, kThresholdRelTol}).first;
+      run.out.claim("eq19.step", "Lemma 4, proof, Eq. (19)", EvidenceKind::Sampled,
+                    "For small b/a (here the smallest tried, q/a = 0.85) |T1'| is at least 2pi/(pi/500) on all of L2, so on any "
+                    "discontinuity-free subsegment of L2 of length pi/500 T1 mod 2pi would take every phase, as the step of the proof "
+                    "through (19) needs.")
+          .evidence("largest_b_over_a_tried_where_it_holds", largest_b_premise).evidence("threshold_b_over_a", b19_threshold)
+          .evidence("required_slope", steep)
+          .holds(premise_at_smallest);
+      run.out.macro("EqNineteenThreshold", b19_threshold, 2);
 
       auto& ex = run.out.claim("lemma4.example", "Lemma 4", EvidenceKind::Sampled,
                                "At a = 1, b = 0.001, q = 0.85 two disjoint segments J0, J1 of [t2, 3pi/2] exist with T "

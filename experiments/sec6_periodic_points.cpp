@@ -4,6 +4,7 @@
 /// the nested segments, and checked step by step.
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "dfchaos/errors.hpp"
 #include "dfchaos/return_map.hpp"
@@ -22,7 +23,7 @@ constexpr double kDistinctTol = 1e-12;    // orbit points closer than this are n
 
 const Experiment experiment{
     .title = "Section 6: periodic points of every period with itinerary (0..01)",
-    .paper = {"Section 6", "Theorem 1"},
+    .paper = {"Section 6", "Eq. (20)", "Theorem 1", "Lemma 4", "Section 10"},
     .tests = {"test_symbolic", "test_covering"},
     .options = {real("b", 0.01, "b/a (a = 1)").range(0, 0.5).recorded_as("b_over_a"),
                 real("q", 0.95, "q/a").range(0, 2).recorded_as("q_over_a"),
@@ -32,6 +33,7 @@ const Experiment experiment{
                 data("cobweb*", "cobweb path of the period-3 orbit (itinerary 001); only when m-max >= 3"),
                 data("graph", "T on [t2, t3)"),
                 data("segments", "the covering segments J0, J1 of Lemma 4 and the target [t2, 3pi/2] they cover"),
+                data("continuity", "the ends of K0, K1 (T(K_i) = [t2, 3pi/2]) at b/a (1 + delta): how far they move"),
                 latex("sec6_periodic", "per period: first point, step residual, expansion, closest points")},
     .body = [](Run& run) {
       const double b = run.real("b"), q = run.real("q");
@@ -102,7 +104,66 @@ const Experiment experiment{
       run.table("orbits", orbits);
       if (cobweb.rows()) run.out.table("cobweb", cobweb, "cobweb path of the period-3 orbit (itinerary 001)");
 
-      run.out.claim("sec6.periodic_points", "Section 6, Theorem 1", EvidenceKind::Sampled,
+      // The Remark after Lemma 4: inside each J_i a segment K_i with T(K_i) = [t2, 3pi/2] exactly,
+      // T monotone on it (the inverse branch g_i of symbolic.hpp is defined on the whole target).
+      double image_error = 0;
+      bool monotone = true;
+      for (const InverseBranch& gi : g) {
+        image_error = std::max({image_error, circle_distance(T(p, gi.k_at_t2), t2), std::fabs(T(p, gi.k_at_top) - gi.top)});
+        monotone = monotone && gi.monotone;
+      }
+      run.out.claim("lemma4.remark_exact_image", "Lemma 4, Remark", EvidenceKind::Sampled,
+                    "Each J_i contains a segment K_i on which T is monotone with T(K_i) = [t2, 3pi/2] exactly: T = t2 at one end, "
+                    "T = 3pi/2 at the other to {tol}, monotone on a grid of K_i.")
+          .evidence("end_image_error", image_error).evidence("monotone_on_grid", monotone).tolerance(kStepTol)
+          .holds(image_error <= kStepTol && monotone);
+
+      // Section 10: the segments can be chosen to depend continuously on the parameters. The ends of
+      // K0, K1 (edges of the T = t2 arc and the preimage of 3pi/2, found by bisection) at b/a (1 + delta)
+      // against those at b/a, for delta = 1e-3 ... 1e-8, starting from the same J_i.
+      Table cont({"delta", "K0_t2_end", "K0_top_end", "K1_t2_end", "K1_top_end", "max_end_shift", "shift_over_delta", "K_exact"});
+      cont.row({0.0, g[0].k_at_t2, g[0].k_at_top, g[1].k_at_t2, g[1].k_at_top, 0.0, NAN, 1LL});
+      std::vector<double> shifts, deltas;
+      for (double delta : {1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8}) {
+        const Parameters pd(1.0, b * (1 + delta), q);
+        try {
+          const InverseBranch h[2] = {make_inverse_branch(pd, c.J0), make_inverse_branch(pd, c.J1)};
+          // The ends must still map exactly onto t2 and 3pi/2 at the new parameters: once an end of
+          // K has moved out of the unperturbed J_i the search stops at J_i's end, and delta is too large.
+          bool exact = true;
+          for (const InverseBranch& hi : h)
+            exact = exact && circle_distance(T(pd, hi.k_at_t2), *pd.t2()) <= kStepTol && std::fabs(T(pd, hi.k_at_top) - hi.top) <= kStepTol;
+          const double shift = std::max({std::fabs(h[0].k_at_t2 - g[0].k_at_t2), std::fabs(h[0].k_at_top - g[0].k_at_top),
+                                         std::fabs(h[1].k_at_t2 - g[1].k_at_t2), std::fabs(h[1].k_at_top - g[1].k_at_top)});
+          if (exact) {
+            shifts.push_back(shift);
+            deltas.push_back(delta);
+          }
+          cont.row({delta, h[0].k_at_t2, h[0].k_at_top, h[1].k_at_t2, h[1].k_at_top, shift, shift / delta, static_cast<long long>(exact)});
+        } catch (const GaveUp&) {
+          cont.row({delta, NAN, NAN, NAN, NAN, NAN, NAN, 0LL});
+        }
+      }
+      run.table("continuity", cont);
+      // Continuity, as far as a finite computation shows it: over the deltas where K is still exact
+      // (at least the three smallest), the shift decreases with delta, roughly in proportion
+      // (shift / delta varies by less than a factor 100).
+      bool cont_ok = deltas.size() >= 3;
+      double ratio_lo = INFINITY, ratio_hi = 0;
+      for (std::size_t k = 0; k < shifts.size(); ++k) {
+        ratio_lo = std::min(ratio_lo, shifts[k] / deltas[k]);
+        ratio_hi = std::max(ratio_hi, shifts[k] / deltas[k]);
+        if (k > 0 && !(shifts[k] < shifts[k - 1])) cont_ok = false;
+      }
+      run.out.claim("sec10.segments_continuous", "Section 10", EvidenceKind::Sampled,
+                    "The segments K0, K1 can be chosen to depend continuously on the parameters: when b/a changes by a factor 1 + delta, "
+                    "for the deltas among 1e-3 ... 1e-8 at which they still map exactly onto [t2, 3pi/2] (at least three), their ends "
+                    "move less and less, roughly in proportion to delta.")
+          .evidence("deltas_exact", static_cast<long long>(deltas.size()))
+          .evidence("shift_over_delta_min", ratio_lo).evidence("shift_over_delta_max", ratio_hi)
+          .holds(cont_ok && ratio_hi < 100 * ratio_lo);
+
+      run.out.claim("sec6.periodic_points", "Section 6, Eq. (20), Theorem 1", EvidenceKind::Sampled,
                     "For every m up to m-max there is a periodic orbit with itinerary (0^(m-1)1)^infinity: every point lies in its "
                     "segment K_0 or K_1, and T sends each point to the next to within {tol}.")
           .parameter("b_over_a", b).parameter("q_over_a", q).parameter("m_max", m_max)
