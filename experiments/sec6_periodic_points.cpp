@@ -155,6 +155,8 @@ const Experiment experiment{
         ratio_hi = std::max(ratio_hi, shifts[k] / deltas[k]);
         if (k > 0 && !(shifts[k] < shifts[k - 1])) cont_ok = false;
       }
+      run.out.macro("SecSixContLargestDelta", deltas.empty() ? 0.0 : deltas.front(), 1);
+      run.out.macro("SecSixContSmallestDelta", deltas.empty() ? 0.0 : deltas.back(), 1);
       run.out.claim("sec10.segments_continuous", "Section 10", EvidenceKind::Sampled,
                     "The segments K0, K1 can be chosen to depend continuously on the parameters: when b/a changes by a factor 1 + delta, "
                     "for the deltas among 1e-3 ... 1e-8 at which they still map exactly onto [t2, 3pi/2] (at least three), their ends "

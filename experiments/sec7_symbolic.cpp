@@ -89,6 +89,7 @@ const Experiment experiment{
         cyl.row({static_cast<long long>(k), widest[static_cast<std::size_t>(k)], r});
       }
       run.table("cylinders", cyl);
+      run.out.macro("SecSevenCylinderShrink", worst_ratio > 0 ? 1.0 / worst_ratio : 0.0, 2);
       run.out.claim("sec7.coding_continuous", "Section 7", EvidenceKind::Sampled,
                     "The coding H is continuous on J: the widest set of points sharing an itinerary prefix of length k shrinks, with "
                     "each added letter, to at most {tol} of its width (k up to 8), so nearby points of J share long prefixes.")
