@@ -87,4 +87,63 @@ PerturbedCovering perturbed_covering(const Parameters& p, const Lemma4Covering& 
   return r;
 }
 
+PerturbedGlobalCovering perturbed_covering_global(const Parameters& p, double eps, int grid, const PerturbedCoveringSearch& s,
+                                                  int max_gave_up) {
+  if (grid < 2) throw InvalidParameter("grid", "at least 2 points for the global search", grid);
+  PerturbedGlobalCovering r;
+  r.t2_eps = perturbed_stop_release(p, eps);
+  const double t2 = p.t2_required(), top = 1.5 * pi;
+  // A sample: its phase, value, and whether the integration gave up there.
+  struct S {
+    double x, T;
+    bool ok;
+  };
+  std::vector<S> v;
+  for (int k = 0; k < grid && r.gave_up < max_gave_up; ++k) {
+    const double x = t2 + (top - t2) * (k + 0.5) / grid;
+    try {
+      v.push_back({x, perturbed_T(p, eps, x), true});
+    } catch (const GaveUp&) {
+      v.push_back({x, PerturbedCovering::nan, false});
+      ++r.gave_up;
+    }
+  }
+  r.samples = static_cast<int>(v.size());
+  // Runs: maximal stretches of samples with no jump between neighbours (and no give-up).
+  PerturbedCoveringSearch pair = s;
+  pair.grid = 2;
+  double last_stop = PerturbedCovering::nan, last_top = PerturbedCovering::nan;
+  double segment_floor = -INFINITY;  // segments must start right of the last one taken
+  for (std::size_t k = 0; k < v.size(); ++k) {
+    bool joined = k > 0 && v[k].ok && v[k - 1].ok;
+    if (joined && std::fabs(v[k].T - v[k - 1].T) > s.suspect_jump) {
+      try {
+        joined = perturbed_continuous_between(p, eps, v[k - 1].x, v[k].x, pair);
+      } catch (const GaveUp&) {
+        joined = false;
+      }
+    }
+    if (!joined) last_stop = last_top = PerturbedCovering::nan;  // a new run
+    if (!v[k].ok) continue;
+    const bool is_stop = std::fabs(v[k].T - r.t2_eps) < s.release_match, is_top = v[k].T >= top;
+    if (is_stop) {
+      if (std::isfinite(last_top) && last_top > segment_floor) {
+        r.segments.emplace_back(last_top, v[k].x);
+        segment_floor = v[k].x;
+        last_top = PerturbedCovering::nan;
+      }
+      last_stop = v[k].x;
+    }
+    if (is_top) {
+      if (std::isfinite(last_stop) && last_stop > segment_floor) {
+        r.segments.emplace_back(last_stop, v[k].x);
+        segment_floor = v[k].x;
+        last_stop = PerturbedCovering::nan;
+      }
+      last_top = v[k].x;
+    }
+  }
+  return r;
+}
+
 }  // namespace dfchaos

@@ -30,6 +30,7 @@
 #pragma once
 
 #include <limits>
+#include <utility>
 #include <vector>
 
 #include "dfchaos/covering.hpp"
@@ -104,5 +105,28 @@ struct PerturbedCovering {
 /// @throws InvalidParameter from perturbed_stop_release; GaveUp from perturbed_T.
 PerturbedCovering perturbed_covering(const Parameters& p, const Lemma4Covering& c, double eps, const PerturbedCoveringSearch& search = {},
                                      std::vector<PerturbedSample>* graph = nullptr);
+
+/// The perturbed covering searched over the whole target arc, not only near \f$J_0, J_1\f$.
+struct PerturbedGlobalCovering {
+  double t2_eps = PerturbedCovering::nan;  ///< \f$t_2^\varepsilon\f$
+  int samples = 0;                 ///< grid phases of \f$[t_2, 3\pi/2)\f$ where \f$T_\varepsilon\f$ was evaluated
+  int gave_up = 0;                 ///< of which the integration gave up (no next free flight within its bound)
+  /// Disjoint segments \f$[lo, hi]\f$ with \f$T_\varepsilon = t_2^\varepsilon\f$ at one end, \f$\ge 3\pi/2\f$ at
+  /// the other, and no jump between them (sampled check), in ascending order.
+  std::vector<std::pair<double, double>> segments;
+  bool both() const { return segments.size() >= 2; }  ///< two disjoint covering segments: the covering persists
+};
+
+/// Searches the perturbed covering on all of \f$[t_2, 3\pi/2)\f$: \f$T_\varepsilon\f$ on `grid` cell
+/// centres; neighbours whose values differ by more than `search.suspect_jump` are bisected as in
+/// perturbed_continuous_between, and a jump splits the arc into runs; in each run, every sample with
+/// \f$T_\varepsilon = t_2^\varepsilon\f$ (to `search.release_match`) followed (or preceded) by one with
+/// \f$T_\varepsilon \ge 3\pi/2\f$ closes a covering segment between the two nearest such samples; the
+/// segments are taken greedily from the left, disjoint. A grid is sampled: stop arcs narrower than
+/// its step can be missed. Work is bounded: `grid` evaluations plus the jump bisections; after
+/// `max_gave_up` integrations that give up, the search stops (segments found so far are kept).
+/// @throws InvalidParameter from perturbed_stop_release, or for grid < 2.
+PerturbedGlobalCovering perturbed_covering_global(const Parameters& p, double eps, int grid, const PerturbedCoveringSearch& search = {},
+                                                  int max_gave_up = 20);
 
 }  // namespace dfchaos
