@@ -70,7 +70,8 @@ const Experiment experiment{
       Table graph({"eps", "segment", "theta", "T_eps"});
       LatexTable tex("rrccl", {"$\\varepsilon$", "$t_2^\\varepsilon$", "near $J_0$", "near $J_1$", "covering (segments found near $J_i$ or anywhere)"});
       Table global({"eps", "t2_eps", "samples", "gave_up", "segments", "first_lo", "first_hi", "second_lo", "second_hi", "outcome"});
-      double persists_up_to = -1, persists_near_up_to = -1;
+      double persists_up_to = -1, persists_near_up_to = -1, first_failure = NAN;
+      std::string first_failure_outcome = "none";
       bool unbroken = true, unbroken_near = true;
       const int n_global = run.count_int("global");
       for (double eps : epsilons) {
@@ -113,7 +114,11 @@ const Experiment experiment{
           cell = "no: a stop no longer ends near $t_2$";
         }
         if (unbroken && covering) persists_up_to = eps;
-        else unbroken = false;
+        else if (unbroken) {
+          unbroken = false;
+          first_failure = eps;
+          first_failure_outcome = outcome;
+        }
         auto seg = [&](std::size_t k, bool hi) { return k < gc.segments.size() ? (hi ? gc.segments[k].second : gc.segments[k].first) : NAN; };
         global.row({eps, gc.t2_eps, static_cast<long long>(gc.samples), static_cast<long long>(gc.gave_up),
                     static_cast<long long>(gc.segments.size()), seg(0, false), seg(0, true), seg(1, false), seg(1, true), outcome});
@@ -128,6 +133,8 @@ const Experiment experiment{
       run.out.macro("SecTenValidation", worst, 2);
       run.out.macro("SecTenPersistsUpTo", persists_up_to, 2);
       run.out.macro("SecTenPersistsNearUpTo", persists_near_up_to, 2);
+      run.out.macro("SecTenFirstFailure", std::isfinite(first_failure) ? format_significant(first_failure, 2) : std::string("none"));
+      run.out.macro("SecTenFirstFailureOutcome", first_failure_outcome);
       run.out.macro("SecTenB", b, 3);
       run.out.macro("SecTenQ", q, 3);
 
