@@ -59,6 +59,10 @@ struct WriteFailed : std::runtime_error {
 /// Formats a double as every output does (%.17g).
 std::string num(double x);
 
+/// The whole tool: parses argv, runs the subcommand, prints to stdout and stderr.
+/// @return the exit status: 0 success, 1 a bounded computation gave up or writing failed, 2 bad input.
+int run(int argc, char** argv);
+
 /// The subcommands (cmd_*.cpp).
 Command add_info(CLI::App& app);
 Command add_map(CLI::App& app);

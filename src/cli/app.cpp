@@ -1,0 +1,78 @@
+/// @file app.cpp
+/// @brief The `dfchaos` command-line tool as a function (dfchaos::cli::run), so that tests can drive
+/// it in-process: thin subcommands over the library (cmd_*.cpp).
+///
+///   dfchaos info       --a A --b B --q Q
+///   dfchaos map        --a A --b B --q Q (--theta X [X ...] | --grid LO HI N | --arc N)
+///   dfchaos orbit      --a A --b B --q Q --theta0 X --steps N
+///   dfchaos simulate   --a A --b B --q Q --x0 X --y0 Y --v0 V --t0 T --t-end E [--sample DT]
+///   dfchaos provenance [--latex]
+///
+/// Output is tab-separated with one header line per table, numbers in %.17g. Bad input: one line
+/// on stderr naming the parameter and the condition, exit status 2, nothing on stdout. A bounded
+/// computation that gives up (e.g. a motion that never flies again): one line, exit status 1.
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "cli.hpp"
+#include "dfchaos/errors.hpp"
+#include "kit/provenance.hpp"
+
+namespace dfchaos::cli {
+
+int run(int argc, char** argv) {
+  CLI::App app{"dfchaos: the dry-friction oscillator of Begun & Kryzhevich (return map T, simulator)"};
+  app.set_version_flag("--version", std::string(dfchaos::kit::version()) + " (" + dfchaos::kit::git_hash() + ")");
+  app.require_subcommand(1);
+  app.footer("Exit status: 0 success, 1 a bounded computation gave up or writing failed, 2 bad input.\n"
+             "'dfchaos COMMAND --help' describes each command's options and output columns.");
+  const std::vector<Command> commands = {add_info(app), add_map(app), add_orbit(app), add_simulate(app), add_provenance(app)};
+
+  if (argc > 1 && argv[1][0] != '-') {
+    const std::string sub = argv[1];
+    bool known = false;
+    std::string names;
+    for (const auto& c : commands) {
+      known = known || c.app->get_name() == sub;
+      names += (names.empty() ? "" : ", ") + c.app->get_name();
+    }
+    if (!known) {
+      std::fprintf(stderr, "dfchaos: error: unknown subcommand '%s' (expected one of %s)\n", sub.c_str(), names.c_str());
+      return 2;
+    }
+  }
+  // An empty value would otherwise be read as missing or as 0: refuse it whatever the option.
+  for (int i = 1; i < argc; ++i)
+    if (argv[i][0] == '\0') {
+      std::fprintf(stderr, "dfchaos: error: %s: empty value (a number is required)\n", i > 1 ? argv[i - 1] : "argument");
+      return 2;
+    }
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
+    std::string msg = e.what();
+    for (auto& ch : msg)
+      if (ch == '\n') ch = ' ';
+    std::fprintf(stderr, "dfchaos: error: %s\n", msg.c_str());
+    return 2;
+  }
+  try {
+    for (const auto& c : commands)
+      if (c.app->parsed()) return c.run();
+  } catch (const dfchaos::InvalidParameter& e) {
+    std::fprintf(stderr, "dfchaos: error: %s\n", e.what());
+    return 2;
+  } catch (const dfchaos::GaveUp& e) {
+    std::fflush(stdout);
+    std::fprintf(stderr, "dfchaos: gave up: %s\n", e.what());
+    return 1;
+  } catch (const WriteFailed& e) {
+    std::fprintf(stderr, "dfchaos: error: %s\n", e.what());
+    return 1;
+  }
+  return 2;
+}
+
+}  // namespace dfchaos::cli
