@@ -60,7 +60,7 @@ const Experiment experiment{
                 count("transient", 1000, "steps of T discarded before every orbit").range(0, 100'000'000).fast_value(100),
                 count("bins", 200, "bins of [t2, t3) for the invariant density").range(10, 100000).fast_value(50),
                 count("grid", 20000, "phases of the grid on which T1 is drawn").range(100, 10'000'000).fast_value(400)},
-    .outputs = {data("", "per start of the invariant-density orbits: start, points, atom at t2, points outside [t2, t3), total mass"),
+    .outputs = {data("", "the gallery's b/a and q/a, and per start of the invariant-density orbits: start, points, atom at t2, points outside [t2, t3), total mass"),
                 data("history", "time history of the full system from rest at the delimiter, on the attractor (t from the start)"),
                 data("history-events", "every regime change of the time history"),
                 data("history-steps", "each step of the history: the simulator's switch phases against T, scenario, advance"),
@@ -248,9 +248,9 @@ const Experiment experiment{
         dens.row({lo, hi, 0.5 * (lo + hi), 0.5 * (h1.density(k) + h2.density(k)), h1.density(k), h2.density(k)});
       }
       run.table("density", dens);
-      Table summary({"start", "theta0", "points", "atom_at_t2", "atom_mass", "outside", "total_mass"});
-      summary.row({1LL, start1, h1.steps, h1.at_t2, h1.atom_mass(), h1.outside, h1.total_mass()});
-      summary.row({2LL, start2, h2.steps, h2.at_t2, h2.atom_mass(), h2.outside, h2.total_mass()});
+      Table summary({"b_over_a", "q_over_a", "start", "theta0", "points", "atom_at_t2", "atom_mass", "outside", "total_mass"});
+      summary.row({ba, qa, 1LL, start1, h1.steps, h1.at_t2, h1.atom_mass(), h1.outside, h1.total_mass()});
+      summary.row({ba, qa, 2LL, start2, h2.steps, h2.at_t2, h2.atom_mass(), h2.outside, h2.total_mass()});
       run.table("", summary);
       const double mass_error = std::max(std::fabs(h1.total_mass() - 1), std::fabs(h2.total_mass() - 1));
       run.out.claim("gallery.density_normalised", "Section 7 (invariant measure)", EvidenceKind::Analytic,
