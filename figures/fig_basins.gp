@@ -30,7 +30,8 @@ do for [k=1:nb] {
   stats f using (sel(b) && column("period_of_t2") > 0 ? column("period_of_t2") : NaN) name "P" nooutput
   set lmargin at screen 0.085 + (k-1)*0.33; set rmargin at screen 0.085 + (k-1)*0.33 + 0.235
   set title sprintf('$b/a=%s$', gprintf('%.2t\cdot10^{%T}', b)) offset 0,-0.4
-  set label 1 sprintf('\footnotesize %d of %d captured (period %d)', int(C_sum), int(C_records), int(P_max)) at graph 0.5, graph 0.08 center front
+  set label 1 sprintf('\footnotesize %d of %d captured,', int(C_sum), int(C_records)) at graph 0.5, graph 0.15 center front
+  set label 2 sprintf('\footnotesize cycle of period %d', int(P_max)) at graph 0.5, graph 0.06 center front
   set xlabel '$\theta_0$' offset 0,0.3
   if (k == 1) { set ylabel 'rate$/(b/a)$' offset 1,0 } else { unset ylabel }
   t2 = pi + asin(2*b); t3 = 2*pi - asin(2*b)
@@ -42,7 +43,7 @@ do for [k=1:nb] {
        f using (sel(b) && column("flat_steps") > 0 ? column("theta0") : NaN):(column("rate")/column("b_over_a")) w p pt 5 ps 0.45 lc rgb c_stop notitle
 }
 # one key for the figure, drawn by hand at the top
-unset label 1
+unset label 1; unset label 2
 unset border; unset tics; unset xlabel; unset ylabel; unset title
 set lmargin at screen 0; set rmargin at screen 1; set bmargin at screen 0; set tmargin at screen 1
 set xrange [0:1]; set yrange [0:1]
