@@ -1,7 +1,7 @@
 # Figure: the invariant density of T on [t2, t3) estimated from two long orbits (dynamics_gallery):
 # the histogram of the pooled orbit points (filled), the histograms of the two orbits separately
 # (lines), and the atom at t2 (every step with a stop sends its whole arc to t2) drawn as a spike
-# with its mass written beside it: the density integrates to one minus that mass.
+# (its mass is a macro of the report): the density integrates to one minus that mass.
 load figdir."/style.gp"
 set terminal cairolatex pdf input size 12cm,6.8cm
 set output "fig_density.tex"
@@ -9,7 +9,6 @@ f = data."/dynamics_gallery-density.tsv"
 s = data."/dynamics_gallery.tsv"
 stats s using "b_over_a" name "B" nooutput
 stats s using "q_over_a" name "Q" nooutput
-stats s using "atom_mass" name "A" nooutput
 stats s using "points" name "N" nooutput
 stats f using "bin_lo" name "LO" nooutput
 stats f using "bin_hi" name "HI" nooutput
@@ -27,7 +26,7 @@ set grid noxtics noytics
 set style fill solid 0.35 noborder
 # the atom at t2: a spike of arbitrary height (a Dirac mass), its mass written beside it
 set arrow 1 from t2, 0 to t2, graph 0.8 lw 2.5 lc rgb c_stop head filled size graph 0.015,25
-set label 1 sprintf('\footnotesize atom at $t_2$: mass %s', gprintf('$%.1t\cdot10^{%T}$', A_mean)) at t2, graph 0.84 left offset 0.3,0 front
+set label 1 '\footnotesize atom at $t_2$ (a Dirac mass)' at t2, graph 0.84 left offset 0.3,0 front
 set key top right samplen 2 spacing 1.1 nobox
 plot f using "centre":"density":(column("bin_hi") - column("bin_lo")) w boxes lc rgb c_free title 'pooled', \
      f using "centre":"density_start1" w histeps lw 0.8 lc rgb "#000000" title 'start 1', \
