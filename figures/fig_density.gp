@@ -24,7 +24,7 @@ set xtics ('$t_2$' t2, '$\frac{5\pi}{4}$' 1.25*pi, '$\frac{3\pi}{2}$' 1.5*pi, '$
 set format y '$%.1f$'
 set grid noxtics noytics
 set style fill solid 0.35 noborder
-# the atom at t2: a spike of arbitrary height (a Dirac mass), its mass written beside it
+# the atom at t2: a spike of arbitrary height (a Dirac mass); its mass is given by the caption
 set arrow 1 from t2, 0 to t2, graph 0.8 lw 2.5 lc rgb c_stop head filled size graph 0.015,25
 set label 1 '\footnotesize atom at $t_2$ (a Dirac mass)' at t2, graph 0.84 left offset 0.3,0 front
 set key top right samplen 2 spacing 1.1 nobox
