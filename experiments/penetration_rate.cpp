@@ -55,7 +55,10 @@ const Experiment experiment{
                 real("q", 0.85, "q/a of the line").range(0.5, 0.999).recorded_as("q_over_a")},
     .outputs = {data("line", "drilling rate against b/a at fixed q/a (mean, min and max over the initial phases)"),
                 data("plane", "drilling rate over the (q/a, b/a) plane, with the relative spread over initial phases"),
-                data("simulator-check", "rate from the map's fiber against the simulator's delimiter position, same time span")},
+                data("simulator-check", "rate from the map's fiber against the simulator's delimiter position, same time span"),
+                data("basins", "at the (up to) three b/a of the line with the largest spread: the rate, the Lyapunov exponent and the "
+                               "period of a superstable cycle through t2 (0: none) against the initial phase (200 cell centres of "
+                               "[t2, t3), 20 in --fast)")},
     .body = [](Run& run) {
       const int nb = run.count_int("nb"), plane_n = run.count_int("plane-n"), starts = run.count_int("starts");
       const long long steps = run.count("steps"), transient = run.count("transient");
@@ -90,6 +93,37 @@ const Experiment experiment{
       }
       run.table("line", line);
       run.table("plane", plane);
+
+      // Basins: where the rate depends on the start, how it depends on it. The (up to) three values
+      // of the line with the largest spread over the initial phases, each on a fine grid of phases.
+      {
+        std::vector<std::pair<double, int>> by_spread;  // (spread, index on the line)
+        for (int j = 0; j < nb; ++j)
+          if (!rates[static_cast<std::size_t>(j)].failed) {
+            const Rate& r = rates[static_cast<std::size_t>(j)].value;
+            by_spread.push_back({(r.max - r.min) / std::max(1e-300, std::fabs(r.mean)), j});
+          }
+        std::sort(by_spread.begin(), by_spread.end(), [](const auto& x, const auto& y) { return x.first > y.first || (x.first == y.first && x.second < y.second); });
+        if (by_spread.size() > 3) by_spread.resize(3);
+        const int n_phases = run.fast() ? 20 : 200;
+        std::vector<std::pair<double, double>> cells;  // (b/a, theta0)
+        for (const auto& [spread, j] : by_spread) {
+          const Parameters p(1.0, line_b[j], q_fixed);
+          const Axis th = Axis::centres(*p.t2(), *p.t3(), n_phases);
+          for (int k = 0; k < n_phases; ++k) cells.push_back({line_b[j], th[k]});
+        }
+        const auto basin = sweep_list<OrbitStatistics, std::pair<double, double>>(
+            cells, [&](const std::pair<double, double>& c) { return orbit_statistics(Parameters(1.0, c.first, q_fixed), c.second, transient, steps); },
+            "basins");
+        Table basins({"b_over_a", "q_over_a", "theta0", "rate", "lyapunov", "flat_steps", "period_of_t2", "failed"});
+        for (std::size_t k = 0; k < cells.size(); ++k) {
+          const OrbitStatistics& st = basin[k].value;
+          const bool failed = basin[k].failed;
+          basins.row({cells[k].first, q_fixed, cells[k].second, failed ? NAN : st.penetration_rate, failed ? NAN : st.lyapunov,
+                      failed ? 0LL : st.flat_steps, failed ? 0LL : st.period_of_t2, static_cast<long long>(failed)});
+        }
+        run.table("basins", basins);
+      }
 
       // Cross-check: the full simulator's delimiter advance per unit time over a long run.
       Table check({"b_over_a", "q_over_a", "rate_map", "rate_simulator", "relative_difference"});

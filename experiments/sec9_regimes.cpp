@@ -24,17 +24,17 @@ using EB = EventualBehaviour;
 struct Case {
   std::string name;     ///< part name of the time-history table
   double b, q;          ///< with a = 1
-  std::string remark;   ///< what the Remark predicts
+  std::string remark;   ///< what the Remark predicts (LaTeX: the relations in math mode)
   std::vector<EB> allowed;  ///< the behaviours that agree with it
 };
 
 const std::vector<Case> cases = {
-    {"stop", 0.6, 2.5, "q >= a + 2b: eventually stopped for ever", {EB::StaysStopped}},
-    {"progression", 0.6, 1.0, "q <= 2b: an everlasting progression starts", {EB::EternalProgression}},
-    {"between-high", 0.6, 1.9, "2b < q < a + 2b: everlasting progression or periodic stick-slip", {EB::EternalProgression, EB::PeriodicStickSlip}},
-    {"between-low", 0.6, 1.3, "2b < q < a + 2b: everlasting progression or periodic stick-slip", {EB::EternalProgression, EB::PeriodicStickSlip}},
-    {"b-large-q-small", 1.5, 1.0, "q <= 2b (b >= a/2): an everlasting progression starts", {EB::EternalProgression}},
-    {"reference", 0.01, 0.85, "b < a/2 (the paper's case): free flights go on (contrast)", {EB::FreeFlights}},
+    {"stop", 0.6, 2.5, "$q\\ge a+2b$: eventually stopped for ever", {EB::StaysStopped}},
+    {"progression", 0.6, 1.0, "$q\\le 2b$: an everlasting progression starts", {EB::EternalProgression}},
+    {"between-high", 0.6, 1.9, "$2b<q<a+2b$: everlasting progression or periodic stick-slip", {EB::EternalProgression, EB::PeriodicStickSlip}},
+    {"between-low", 0.6, 1.3, "$2b<q<a+2b$: everlasting progression or periodic stick-slip", {EB::EternalProgression, EB::PeriodicStickSlip}},
+    {"b-large-q-small", 1.5, 1.0, "$q\\le 2b$ ($b\\ge a/2$): an everlasting progression starts", {EB::EternalProgression}},
+    {"reference", 0.01, 0.85, "$b<a/2$ (the paper's case): free flights go on (contrast)", {EB::FreeFlights}},
 };
 const std::vector<std::pair<double, double>> starts = {{0.0, 0.0}, {0.0, 2.0}, {1.5, 4.0}, {-1.0, 5.5}};  // (v0, t0)
 
@@ -65,7 +65,9 @@ const Experiment experiment{
       const double periods = run.real("periods"), window = periods / 4;
       Table t({"case", "b_over_a", "q_over_a", "v0", "t0", "behaviour", "fraction_free", "fraction_progression", "fraction_stop",
                "events_in_window", "last_free_time", "stick_stop_from_t1_min", "stick_stop_from_t1_max"});
-      LatexTable tex("lrrlll", {"case", "$b/a$", "$q/a$", "the Remark predicts", "observed (all starts)", "agrees"});
+      // Paragraph columns for the two texts, so that the table fits the text width.
+      LatexTable tex("lrr>{\\raggedright\\arraybackslash}p{5.6cm}>{\\raggedright\\arraybackslash}p{3.2cm}l",
+                     {"case", "$b/a$", "$q/a$", "the Remark predicts", "observed (all starts)", "agrees"});
       int disagreements = 0, independent_of_start = 0;
       std::vector<std::pair<std::string, std::string>> observed;  // per case: the behaviours seen
       for (const auto& c : cases) {

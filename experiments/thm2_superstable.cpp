@@ -20,7 +20,8 @@ const Experiment experiment{
                 count("grid", 20000, "independent grid points (uniform in a/b) for the cross-check").range(2, 10'000'000).fast_value(400),
                 reals("q", {0.85, 0.95, 0.6}, "values of q/a").range(0.003, 1.0 - 1e-12)},
     .outputs = {data("windows", "every window of b/a in [1e-3, 0.1] where (21) or (22) holds, with epsilon at its middle"),
-                data("", "per q/a: window counts, the resolution check, and the independent grid check")},
+                data("", "per q/a: window counts, the resolution check, and the independent grid check"),
+                data("theta2", "theta2(t2) mod 2pi against b/a (samples log-spaced in [1e-3, 0.1]) per q/a, with t0..t3 and the condition met")},
     .body = [](Run& run) {
       const int samples = run.count_int("samples"), grid_points = run.count_int("grid");
       const double b_lo = 1e-3, b_hi = 0.1;
@@ -84,6 +85,19 @@ const Experiment experiment{
       }
       run.table("windows", windows);
       run.table("", summary);
+
+      // For the figure: where the first progression from t2 ends, theta2(t2) mod 2pi, against b/a,
+      // beside the arcs of (21) and (22) it must fall into (they move with b/a: t0..t3 per sample).
+      Table theta2({"q_over_a", "b_over_a", "theta2_phase", "T1_phase", "t0", "t1", "t2", "t3", "condition", "theorem2_hypotheses"});
+      for (double qa : run.reals("q"))
+        for (int j = 0; j < samples; ++j) {
+          const double ba = b_lo * std::pow(b_hi / b_lo, static_cast<double>(j) / (samples - 1));
+          const Parameters p(1.0, ba, qa);
+          const SuperstableCheck c = superstable_check(p, 2);
+          theta2.row({qa, ba, c.theta2_phase, c.step.hit.t1.phase, *p.t0(), *p.t1(), *p.t2(), *p.t3(),
+                      static_cast<long long>(c.eq21 ? 21 : (c.eq22 ? 22 : 0)), static_cast<long long>(c.hypotheses)});
+        }
+      run.table("theta2", theta2);
 
       run.out.claim("thm2.superstable", "Theorem 2", EvidenceKind::Sampled,
                     "In every window where the hypotheses ((2) and (22), or (21) and (23)) hold, T sends a whole interval "

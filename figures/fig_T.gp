@@ -1,23 +1,54 @@
 # Figure: the return map T of Lemma 3 on [t2, t3), each point coloured by its scenario; from
 # lemma3_return_map. Left: Lemma 1 holds (b/a = 0.01, q/a = 0.85); right: it fails (q/a = 0.7).
+# Grey: theta2, where the first progression ends (Eq. 17), wherever it is not T itself, unwrapped
+# into [t1, t0 + 2 pi): in [t1, t2) the mass stops until t2 (B), in [t3, t0 + 2 pi) it stops
+# until t0 and progresses again (C, D). The phases t0..t3 (closed form, DESIGN.md) are marked on
+# the T axis; T = theta (dashed) and theta = 3 pi / 2 (dotted) are drawn. Each panel's key lists
+# only the scenarios present in its data.
 load figdir."/style.gp"
-set terminal cairolatex pdf input size 15cm,6.8cm
+set terminal cairolatex pdf input size 15cm,7.6cm
 set output "fig_T.tex"
-set multiplot layout 1,2 margins 0.09,0.98,0.15,0.9 spacing 0.09
-set xlabel '$\theta$'; set ylabel '$T(\theta)$'
-set xtics ("$\\pi$" pi, "$\\frac{5\\pi}{4}$" 1.25*pi, "$\\frac{3\\pi}{2}$" 1.5*pi, "$\\frac{7\\pi}{4}$" 1.75*pi, "$2\\pi$" 2*pi)
-set ytics ("$\\pi$" pi, "$\\frac{5\\pi}{4}$" 1.25*pi, "$\\frac{3\\pi}{2}$" 1.5*pi, "$\\frac{7\\pi}{4}$" 1.75*pi, "$2\\pi$" 2*pi)
-col(s) = (s eq "A" ? 0x1f77b4 : (s eq "B" ? 0x2ca02c : (s eq "C" ? 0xff7f0e : (s eq "D" ? 0xd62728 : 0x7f7f7f))))
-set key top right samplen 0.5 spacing 1.0 box opaque width -1
-set yrange [3.0:*]
-do for [f in "b0.01-q0.85 b0.05-q0.7"] {
+set multiplot
+set bmargin at screen 0.14; set tmargin at screen 0.83
+set xlabel '$\theta$' offset 0,0
+set ylabel '$T(\theta)$' offset 1.5,0
+set grid noxtics noytics
+sc_col(s) = (s eq "A" ? c_free : (s eq "B" ? c_stop : (s eq "C" ? c_alt : (s eq "D" ? c_prog : c_grey))))
+files = "b0.01-q0.85 b0.05-q0.7"
+do for [k=1:2] {
+  f = word(files, k)
+  b = (k == 1 ? 0.01 : 0.05); q = (k == 1 ? 0.85 : 0.7)
+  t0 = asin(q - 2*b); t1 = pi - t0; t2 = pi + asin(2*b); t3 = 2*pi - asin(2*b)
   file = data."/lemma3_return_map-graph-".f.".tsv"
-  set title (f eq "b0.01-q0.85" ? '$b/a=0.01$, $q/a=0.85$ (Lemma 1 holds)' : '$b/a=0.05$, $q/a=0.7$ (Lemma 1 fails)')
-  plot file using "theta":(strcol("scenario") eq "A" ? column("T") : NaN) w p pt 7 ps 0.2 lc rgb "#1f77b4" notitle, \
-       file using "theta":(strcol("scenario") eq "B" ? column("T") : NaN) w p pt 7 ps 0.35 lc rgb "#2ca02c" notitle, \
-       file using "theta":(strcol("scenario") eq "C" ? column("T") : NaN) w p pt 7 ps 0.35 lc rgb "#ff7f0e" notitle, \
-       file using "theta":(strcol("scenario") eq "D" ? column("T") : NaN) w p pt 7 ps 0.35 lc rgb "#d62728" notitle, \
-       NaN w p pt 7 ps 1 lc rgb "#1f77b4" title "A", NaN w p pt 7 ps 1 lc rgb "#2ca02c" title "B", \
-       NaN w p pt 7 ps 1 lc rgb "#ff7f0e" title "C", NaN w p pt 7 ps 1 lc rgb "#d62728" title "D"
+  # which scenarios are present (keys list only those)
+  set autoscale xy
+  present = ""
+  do for [s in "A B C D"] {
+    stats file using (strcol("scenario") eq s ? 1 : 0) name "N" nooutput
+    if (N_sum > 0) { present = present." ".s }
+  }
+  set lmargin at screen (k == 1 ? 0.085 : 0.595); set rmargin at screen (k == 1 ? 0.475 : 0.985)
+  set title (k == 1 ? '\small (a) $b/a=0.01$, $q/a=0.85$: Lemma~1 holds' : '\small (b) $b/a=0.05$, $q/a=0.7$: Lemma~1 fails') offset 0,1.5
+  set xrange [t2:t3]
+  set yrange [t1-0.12:t0+2*pi+0.12]
+  set xtics ('$t_2$' t2, '$\frac{5\pi}{4}$' 1.25*pi, '$\frac{3\pi}{2}$' 1.5*pi, '$\frac{7\pi}{4}$' 1.75*pi, '$t_3$' t3)
+  set ytics ('$t_1$' t1, '$t_2$' t2, '$\frac{3\pi}{2}$' 1.5*pi, '$t_3$' t3, '$t_0{+}2\pi$' t0+2*pi)
+  # arcs of the phase circle where a progression may end: bands across the panel
+  set object 1 rect from graph 0, first t1 to graph 1, first t2 fc rgb c_stop fs transparent solid 0.12 noborder back
+  set object 2 rect from graph 0, first t3 to graph 1, first t0+2*pi fc rgb c_alt fs transparent solid 0.12 noborder back
+  set label 1 '\footnotesize stop until $t_2$' at graph 0.02, first (t1+t2)/2 left front
+  set label 2 '\footnotesize stop until $t_0$, then progression' at graph 0.02, first (t3+t0+2*pi)/2 left front
+  set arrow 1 from 1.5*pi, graph 0 to 1.5*pi, graph 1 nohead dt 3 lc rgb c_grey
+  do for [y in "1 2 3 4"] { set arrow 1+y from graph 0, first (y == 1 ? t1 : (y == 2 ? t2 : (y == 3 ? t3 : t0+2*pi))) \
+        to graph 1, first (y == 1 ? t1 : (y == 2 ? t2 : (y == 3 ? t3 : t0+2*pi))) nohead lw 0.6 lc rgb "#bbbbbb" back }
+  set key at graph 0.5, graph 1.0 center bottom horizontal reverse Left samplen 0.8 spacing 1 width -1.5 maxrows 1 noopaque nobox
+  unwrap(p) = (p < t0 + 1e-12 ? p + 2*pi : p)
+  plot file using "theta":(strcol("scenario") ne "A" && abs(column("theta2_phase") - column("T")) > 1e-12 ? unwrap(column("theta2_phase")) : NaN) \
+            w p pt 7 ps 0.15 lc rgb "#606060" notitle, \
+       NaN w p pt 7 ps 0.8 lc rgb "#606060" title '$\theta_2$', \
+       for [s in present] file using "theta":(strcol("scenario") eq s ? column("T") : NaN) w p pt 7 ps 0.2 lc rgb sc_col(s) notitle, \
+       for [s in present] NaN w p pt 7 ps 0.8 lc rgb sc_col(s) title s, \
+       x w l dt 2 lw 1 lc rgb "black" title '$T=\theta$'
+  unset ylabel
 }
 unset multiplot

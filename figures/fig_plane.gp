@@ -1,16 +1,34 @@
 # Figure: the (q/a, b/a) parameter plane of thm1_parameter_plane: covering of Lemma 4 found
-# (Theorem 1's chaos certificate), t2 superstable (Theorem 2), both, neither.
+# (Theorem 1's chaos certificate), t2 superstable (Theorem 2), both, neither, or a cell whose
+# computation failed. Categories, so a discrete colour per class and a key with the number of
+# cells of each (a class with no cell is listed with 0), not a colour bar.
 load figdir."/style.gp"
-set terminal cairolatex pdf input size 12cm,8cm
+set terminal cairolatex pdf input size 14cm,7.6cm
 set output "fig_plane.tex"
-set xlabel '$q/a$'; set ylabel '$\log_{10}(b/a)$'
-set format x '$%.2f$'; set format y '$%g$'
-set palette maxcolors 4
-set palette defined (0 "#f0f0f0", 1 "#6baed6", 2 "#fd8d3c", 3 "#d62728")
-set cbrange [-0.5:3.5]
-set cbtics ("neither" 0, "covering" 1, "superstable" 2, "both" 3)
-set grid front
-set yrange [-4.05:-0.95]
-set xrange [0.72:1.0]
 f = data."/thm1_parameter_plane.tsv"
-plot f using "q_over_a":(log10(column("b_over_a"))):"class" with image
+# class: 0 neither, 1 covering, 2 superstable, 3 both, -1 error (header of the table)
+col0 = 0xe8e8e8; col1 = 0x6baed6; col2 = 0xfd8d3c; col3 = 0xd62728; colE = 0x000000
+rgbof(c) = (c == 0 ? col0 : (c == 1 ? col1 : (c == 2 ? col2 : (c == 3 ? col3 : colE))))
+red(c) = int(rgbof(c)) >> 16 & 255; green(c) = int(rgbof(c)) >> 8 & 255; blue(c) = int(rgbof(c)) & 255
+do for [c=-1:3] {
+  stats f using (column("class") == c ? 1 : 0) name "K" nooutput
+  eval sprintf("n%d = %d", c + 1, int(K_sum))
+}
+stats f using "q_over_a" name "Q" nooutput
+stats f using (log10(column("b_over_a"))) name "B" nooutput
+dq = (Q_max - Q_min) / 99.0; db = (B_max - B_min) / 99.0
+set lmargin at screen 0.11; set rmargin at screen 0.66; set bmargin at screen 0.15; set tmargin at screen 0.97
+set xlabel '$q/a$'; set ylabel '$b/a$' offset 0.5,0
+set xrange [Q_min - dq/2 : Q_max + dq/2]; set yrange [B_min - db/2 : B_max + db/2]
+set xtics 0.05 format '$%.2f$'
+set ytics ('$10^{-4}$' -4, '$10^{-3}$' -3, '$10^{-2}$' -2, '$10^{-1}$' -1)
+set mytics 10
+set grid front lc rgb "#ffffff" lw 0.5
+set key at screen 0.68, screen 0.93 left top reverse Left samplen 1 spacing 1.4 nobox
+set style fill solid 1.0 border lc rgb "#404040"
+plot f using "q_over_a":(log10(column("b_over_a"))):(red(column("class"))):(green(column("class"))):(blue(column("class"))) with rgbimage pixels notitle, \
+     NaN w boxes lc rgb sprintf("#%06x", col1) title sprintf('covering of Lemma~4 (%d)', n2), \
+     NaN w boxes lc rgb sprintf("#%06x", col2) title sprintf('$t_2$ superstable only (%d)', n3), \
+     NaN w boxes lc rgb sprintf("#%06x", col3) title sprintf('both (%d)', n4), \
+     NaN w boxes lc rgb sprintf("#%06x", col0) title sprintf('neither (%d)', n1), \
+     NaN w boxes lc rgb sprintf("#%06x", colE) title sprintf('computation failed (%d)', n0)

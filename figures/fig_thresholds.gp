@@ -1,29 +1,56 @@
-# Figure: numerical thresholds b0(q) of Lemma 1 and Lemma 4 against q/a. Lemma 1 (from
-# lemma1_progression_stop): largest b/a below which progression from rest at t0 stops in
-# [t1, t2], and the same for the proof's sufficient bound (Eq. 9). Lemma 4 (from lemma4_coverage):
-# the paper's literal construction, and the covering itself (a lower estimate).
+# Figure: numerical thresholds b0(q) of Lemma 1 and Lemma 4 against q/a.
+# Left (lemma1_progression_stop): the largest b/a below which progression from rest at t0 stops in
+# [t1, t2], and the same for the proof's sufficient bound (Eq. 9); both bisected between grid
+# points, so drawn as curves. Where q/a < sin(vartheta0) assumption (2) fails (shaded).
+# Right (lemma4_coverage): the (q/a, b/a) grid itself, every point marked by what holds there: the
+# covering (b) found, and the paper's construction (a) going through. The thresholds of this panel
+# are grid values (not bisected): b0 is the last grid point of an unbroken column, drawn as steps.
 load figdir."/style.gp"
-set terminal cairolatex pdf input size 15cm,6.8cm
+set terminal cairolatex pdf input size 15cm,7cm
 set output "fig_thresholds.tex"
-set multiplot layout 1,2 margins 0.09,0.98,0.15,0.9 spacing 0.1
-set xlabel '$q/a$'; set ylabel '$b_0/a$'
+set multiplot
+set bmargin at screen 0.16; set tmargin at screen 0.9
+s0 = 0.7246113537767086   # sin(vartheta0), Eq. (1)
+set xlabel '$q/a$'
+set ylabel '$b_0/a$' offset 1,0
 set logscale y
 set format y '$10^{%T}$'
 set format x '$%.2f$'
-set key top left samplen 2 box opaque
+
+# ---- Lemma 1
+set lmargin at screen 0.085; set rmargin at screen 0.425
 set title 'Lemma 1'
-set xrange [0.6:1]
-set xtics 0.1
-set arrow 1 from 0.7246113537767086,graph 0 to 0.7246113537767086,graph 1 nohead dt 3 lc rgb c_grey
-set label 1 '$\sin\vartheta_0$' at 0.7246113537767086,graph 0.92 right offset -0.3,0
+set xrange [0.6:1]; set xtics 0.1
+set yrange [1e-4:1]
+set object 1 rect from graph 0, graph 0 to first s0, graph 1 fc rgb "#d9d9d9" fs solid 0.5 noborder back
+set label 1 '\footnotesize (2) fails' at first (0.6+s0)/2, graph 0.5 center front
+set label 2 '$\sin\vartheta_0$' at first s0, graph 0.92 left offset 0.4,0
+set key bottom right samplen 2 spacing 1.1 box opaque
 f1 = data."/lemma1_progression_stop.tsv"
-plot f1 using "q_over_a":(column("b0_lemma1") > 0 ? column("b0_lemma1") : NaN) w l lw 2 lc rgb c_free title 'computed', \
-     f1 using "q_over_a":(column("b0_proof_bound") > 0 ? column("b0_proof_bound") : NaN) w l lw 2 dt 2 lc rgb c_prog title 'proof (9)'
-set title 'Lemma 4'
-unset arrow 1; unset label 1; unset ylabel
-set xtics 0.05
+plot f1 using "q_over_a":(column("b0_lemma1") > 0 ? column("b0_lemma1") : NaN) w l lw 2 lc rgb c_free title 'computed $b_0$', \
+     f1 using "q_over_a":(column("b0_proof_bound") > 0 ? column("b0_proof_bound") : NaN) w l lw 2 dt 2 lc rgb c_prog title "proof's bound (9)"
+unset object 1; unset label 1; unset label 2
+
+# ---- Lemma 4, on its grid
+set lmargin at screen 0.53; set rmargin at screen 0.79
+set title 'Lemma 4 on the grid'
 f4 = data."/lemma4_coverage.tsv"
-set xrange [0.72:1]
-plot f4 using "q_over_a":(column("b0_covering") > 0 ? column("b0_covering") : NaN) w lp pt 7 ps 0.5 lw 2 lc rgb c_free title 'covering (b)', \
-     f4 using "q_over_a":(column("b0_literal") > 0 ? column("b0_literal") : NaN) w lp pt 5 ps 0.5 lw 2 dt 2 lc rgb c_prog title "proof's steps (a)"
+g4 = data."/lemma4_coverage-grid.tsv"
+set autoscale xy
+stats g4 using "b_over_a" name "B" nooutput
+stats f4 using "q_over_a" name "NQ" nooutput
+dq = (NQ_max - NQ_min) / (NQ_records - 1)
+set xrange [NQ_min - dq/2 : NQ_max + dq/2]
+set xtics 0.1
+set mxtics 2
+set yrange [B_min/2 : B_max*2]
+# key outside the panel, on its right; the threshold of each q/a column is drawn over the width of its cell
+set key at screen 0.805, graph 1 left top reverse Left samplen 1.5 spacing 1.2 nobox
+plot g4 using "q_over_a":(column("covering_holds") == 0 && column("literal_all") == 0 ? column("b_over_a") : NaN) w p pt 6 ps 0.45 lc rgb c_grey title 'neither', \
+     g4 using "q_over_a":(column("covering_holds") == 1 && column("literal_all") == 0 ? column("b_over_a") : NaN) w p pt 7 ps 0.45 lc rgb c_free title 'covering (b) only', \
+     g4 using "q_over_a":(column("literal_all") == 1 ? column("b_over_a") : NaN) w p pt 5 ps 0.5 lc rgb c_prog title "(a) and (b)", \
+     f4 using "q_over_a":(column("b0_covering") > 0 ? column("b0_covering") : NaN):(column("q_over_a")-dq/2):(column("q_over_a")+dq/2) \
+        w xerrorbars pt -1 lw 2 lc rgb c_free title '$b_0$ of (b)', \
+     f4 using "q_over_a":(column("b0_literal") > 0 ? column("b0_literal") : NaN):(column("q_over_a")-dq/2):(column("q_over_a")+dq/2) \
+        w xerrorbars pt -1 lw 2 dt 2 lc rgb c_prog title '$b_0$ of (a)'
 unset multiplot

@@ -1,0 +1,68 @@
+/// @file invariant_density.cpp
+/// @brief The histogram estimate of the invariant density of T (invariant_density.hpp).
+#include "dfchaos/invariant_density.hpp"
+
+#include <cmath>
+
+#include "dfchaos/errors.hpp"
+#include "dfchaos/return_map.hpp"
+
+namespace dfchaos {
+
+double OrbitHistogram::bin_width() const { return (hi - lo) / static_cast<double>(counts.size()); }
+
+double OrbitHistogram::bin_lo(int k) const { return lo + (hi - lo) * k / static_cast<double>(counts.size()); }
+
+double OrbitHistogram::density(int k) const {
+  return static_cast<double>(counts.at(static_cast<std::size_t>(k))) / (static_cast<double>(steps) * bin_width());
+}
+
+double OrbitHistogram::atom_mass() const { return static_cast<double>(at_t2) / static_cast<double>(steps); }
+
+double OrbitHistogram::total_mass() const {
+  long double sum = 0;
+  const long double h = bin_width();
+  for (std::size_t k = 0; k < counts.size(); ++k) sum += static_cast<long double>(density(static_cast<int>(k))) * h;
+  return static_cast<double>(sum + atom_mass());
+}
+
+OrbitHistogram orbit_histogram(const Parameters& p, double theta0, long long transient, long long steps, int bins) {
+  p.require_return_map();
+  const double t2 = p.t2_required(), t3 = p.t3_required();
+  if (!(theta0 >= t2 && theta0 < t3)) throw InvalidParameter("theta", "t2 <= theta < t3", theta0);
+  if (transient < 0 || transient > 1'000'000'000) throw InvalidParameter("transient", "0 <= transient <= 10^9", static_cast<double>(transient));
+  if (steps < 1 || steps > 1'000'000'000) throw InvalidParameter("steps", "1 <= steps <= 10^9", static_cast<double>(steps));
+  if (bins < 1 || bins > 1'000'000) throw InvalidParameter("bins", "1 <= bins <= 10^6", bins);
+  OrbitHistogram h;
+  h.lo = t2;
+  h.hi = t3;
+  h.counts.assign(static_cast<std::size_t>(bins), 0);
+  double theta = theta0;
+  for (long long n = 0; n < transient; ++n) theta = T(p, theta);
+  for (long long n = 0; n < steps; ++n) {
+    if (theta == t2) {
+      ++h.at_t2;
+    } else if (theta >= t2 && theta < t3) {
+      // the bin of theta; rounding can put a point just below t3 into bin K: clamp
+      const auto k = static_cast<long long>(std::floor((theta - t2) / (t3 - t2) * bins));
+      ++h.counts[static_cast<std::size_t>(std::min<long long>(std::max<long long>(k, 0), bins - 1))];
+    } else {
+      ++h.outside;
+    }
+    if (n + 1 < steps) theta = T(p, theta);
+  }
+  h.steps = steps;
+  return h;
+}
+
+double l1_distance(const OrbitHistogram& f, const OrbitHistogram& g) {
+  if (f.counts.size() != g.counts.size() || f.lo != g.lo || f.hi != g.hi)
+    throw InvalidParameter("bins", "both histograms on the same bins of the same arc");
+  long double sum = 0;
+  const long double h = f.bin_width();
+  for (std::size_t k = 0; k < f.counts.size(); ++k)
+    sum += std::fabs(static_cast<long double>(f.density(static_cast<int>(k))) - g.density(static_cast<int>(k))) * h;
+  return static_cast<double>(sum + std::fabs(f.atom_mass() - g.atom_mass()));
+}
+
+}  // namespace dfchaos

@@ -1,0 +1,94 @@
+/// @file test_invariant_density.cpp
+/// @brief The histogram estimate of the invariant density of T (invariant_density.hpp): it is a
+/// probability (mass one, nothing outside [t2, t3)); it counts exactly the points of the orbit that
+/// iterating T by hand gives; on a superstable cycle through t2 the atom at t2 has mass 1/period
+/// with the period found independently by orbit_statistics; bad input is rejected.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "dfchaos/errors.hpp"
+#include "dfchaos/invariant_density.hpp"
+#include "dfchaos/map_derivative.hpp"
+#include "dfchaos/return_map.hpp"
+
+namespace dfchaos {
+namespace {
+
+constexpr double kMassTol = 1e-12;  // the masses sum to one up to rounding
+
+TEST(InvariantDensity, IsAProbabilityOnTheArc) {
+  for (auto [ba, qa] : {std::pair{0.01, 0.85}, std::pair{0.05, 0.85}, std::pair{0.002, 0.8}}) {
+    const Parameters p(1.0, ba, qa);
+    const OrbitHistogram h = orbit_histogram(p, *p.t2() + 0.3 * (*p.t3() - *p.t2()), 100, 20000, 50);
+    EXPECT_EQ(h.outside, 0) << "b/a=" << ba;
+    EXPECT_NEAR(h.total_mass(), 1.0, kMassTol) << "b/a=" << ba;
+    long long sum = h.at_t2;
+    for (long long c : h.counts) sum += c;
+    EXPECT_EQ(sum, h.steps);
+    EXPECT_DOUBLE_EQ(h.bin_lo(0), *p.t2());
+    EXPECT_NEAR(h.bin_lo(50), *p.t3(), 1e-15);
+  }
+}
+
+TEST(InvariantDensity, CountsTheOrbitThatIteratingTGives) {
+  const Parameters p(1.0, 0.01, 0.85);
+  const double t2 = *p.t2(), t3 = *p.t3(), theta0 = t2 + 0.6 * (t3 - t2);
+  const int bins = 7;
+  const OrbitHistogram h = orbit_histogram(p, theta0, 5, 400, bins);
+  std::vector<long long> by_hand(bins, 0);
+  long long at_t2 = 0;
+  double theta = theta0;
+  for (int n = 0; n < 5; ++n) theta = T(p, theta);
+  for (int n = 0; n < 400; ++n) {
+    if (theta == t2) ++at_t2;
+    else ++by_hand[static_cast<std::size_t>(std::min(bins - 1, static_cast<int>((theta - t2) / (t3 - t2) * bins)))];
+    theta = T(p, theta);
+  }
+  EXPECT_EQ(h.at_t2, at_t2);
+  for (int k = 0; k < bins; ++k) EXPECT_EQ(h.counts[static_cast<std::size_t>(k)], by_hand[static_cast<std::size_t>(k)]) << "bin " << k;
+}
+
+TEST(InvariantDensity, AtomAtT2OnASuperstableCycle) {
+  // At b/a = 0.01, q/a = 0.95 orbits end on a superstable cycle through t2 (Theorem 2 is one
+  // instance): the empirical measure is carried by the cycle, the atom at t2 has mass 1/period.
+  const Parameters p(1.0, 0.01, 0.95);
+  const double theta0 = *p.t2() + 0.3 * (*p.t3() - *p.t2());
+  const OrbitStatistics st = orbit_statistics(p, theta0, 2000, 5000);
+  ASSERT_GT(st.period_of_t2, 0) << "no superstable cycle through t2 at these parameters";
+  const long long steps = 20 * st.period_of_t2;
+  const OrbitHistogram h = orbit_histogram(p, theta0, 2000, steps, 200);
+  EXPECT_EQ(h.at_t2, 20);
+  EXPECT_NEAR(h.atom_mass(), 1.0 / static_cast<double>(st.period_of_t2), 1e-15);
+  EXPECT_NEAR(h.total_mass(), 1.0, kMassTol);
+  // two starts end on the same cycle: the same measure
+  const OrbitHistogram g = orbit_histogram(p, *p.t2() + 0.7 * (*p.t3() - *p.t2()), 2000, steps, 200);
+  EXPECT_LT(l1_distance(h, g), 1e-12);
+}
+
+TEST(InvariantDensity, DistanceIsAMetricOnHistograms) {
+  const Parameters p(1.0, 0.01, 0.85);
+  const double t2 = *p.t2(), t3 = *p.t3();
+  const OrbitHistogram f = orbit_histogram(p, t2 + 0.2 * (t3 - t2), 100, 5000, 40);
+  const OrbitHistogram g = orbit_histogram(p, t2 + 0.8 * (t3 - t2), 100, 5000, 40);
+  EXPECT_EQ(l1_distance(f, f), 0.0);
+  EXPECT_NEAR(l1_distance(f, g), l1_distance(g, f), 1e-15);
+  EXPECT_GE(l1_distance(f, g), 0.0);
+  EXPECT_LE(l1_distance(f, g), 2.0);
+}
+
+TEST(InvariantDensity, RejectsBadInput) {
+  const Parameters p(1.0, 0.01, 0.85);
+  const double t2 = *p.t2();
+  EXPECT_THROW(orbit_histogram(p, t2 - 0.1, 0, 10, 10), InvalidParameter);
+  EXPECT_THROW(orbit_histogram(p, *p.t3(), 0, 10, 10), InvalidParameter);
+  EXPECT_THROW(orbit_histogram(p, t2, -1, 10, 10), InvalidParameter);
+  EXPECT_THROW(orbit_histogram(p, t2, 0, 0, 10), InvalidParameter);
+  EXPECT_THROW(orbit_histogram(p, t2, 0, 10, 0), InvalidParameter);
+  EXPECT_THROW(orbit_histogram(Parameters(1.0, 0.6, 0.85), 3.5, 0, 10, 10), InvalidParameter);  // b >= a/2: no map
+  const OrbitHistogram f = orbit_histogram(p, t2, 0, 10, 10), g = orbit_histogram(p, t2, 0, 10, 11);
+  EXPECT_THROW(l1_distance(f, g), InvalidParameter);
+}
+
+}  // namespace
+}  // namespace dfchaos
