@@ -2,7 +2,14 @@
 
 #include <cmath>
 
+#include "dfchaos/double_double.hpp"
+
 namespace dfchaos {
+
+namespace {
+/// a/b above which a free flight may last over 10^4 time units and beta gets its double-double tail.
+constexpr double kLongFlightRatio = 1e4;
+}  // namespace
 
 const char* regime_code(Regime r) {
   switch (r) {
@@ -14,7 +21,7 @@ const char* regime_code(Regime r) {
 }
 
 FreeMotion::FreeMotion(const Parameters& p, const Instant& start_, double x_s, double v_s)
-    : a(p.a()), b(p.b()), start(start_), x_start(x_s), v_start(v_s) {}
+    : a(p.a()), b(p.b()), start(start_), x_start(x_s), v_start(v_s), starts_at_t2(p.t2() && start_.phase == *p.t2()) {}
 
 double FreeMotion::position(const Instant& t) const {
   const long double s = elapsed(start, t);
@@ -31,12 +38,22 @@ QuadraticPlusHarmonic FreeMotion::gap(double y) const {
   QuadraticPlusHarmonic f;
   f.origin = start;
   f.alpha = b;
-  f.beta = static_cast<long double>(v_start) + a * std::cos(start.phase);
+  // beta multiplies s, up to 10^7 for small b/a: a cos(theta) in long double (a double cosine would
+  // put an error of 1e-16 s a into the gap).
+  f.beta = static_cast<long double>(v_start) + a * std::cos(static_cast<long double>(start.phase));
+  // Flights of more than ~10^4 time units (b/a < 1e-4) need a cos(theta) beyond long double: near a
+  // discontinuity of T1 the contact is nearly tangential and an error e in beta moves it by
+  // e s / |slope|. The rest of a cos(theta), to 1e-31 relative, goes into beta_tail.
+  if (a > kLongFlightRatio * b) {
+    const dd::DD exact = dd::add(dd::two_sum(v_start, 0.0), dd::mul(dd::cos_dd(start.phase), a));
+    f.beta_tail = dd::to_long_double(dd::add(exact, dd::neg(dd::of(f.beta))));
+  }
   // (x_start - y) is formed first: exactly 0 at contact, so that f(origin) = 0 exactly.
   f.gamma = static_cast<long double>(x_start - y) + a * std::sin(start.phase);
   f.A = -a;
   f.B = 0;
   f.starts_at_rest = (x_start == y && v_start == 0);
+  f.origin_at_inflection = f.starts_at_rest && starts_at_t2;  // F(t2) = 0 by definition
   return f;
 }
 
