@@ -10,9 +10,10 @@ namespace {
 /// Whether a mass at rest at the contact at phase phi flies off: phi in [t2, t3). The rounded t3
 /// may exceed the true one by an ulp; the last doubles below it are therefore also required to
 /// have F(phi) < 0, with F in long double (its sign is exact there: |F| >= a cos(t3) ulp/2).
+constexpr double kNearT3 = 8 * 8.9e-16;  // 8 ulp of a phase in [4, 8)
 bool in_free_arc(const Parameters& p, double phi) {
   if (!p.t2() || !phase_in_arc(phi, *p.t2(), *p.t3())) return false;
-  if (*p.t3() - phi > 8 * 8.9e-16) return true;
+  if (*p.t3() - phi > kNearT3) return true;
   return p.a() * std::sin(static_cast<long double>(phi)) + 2.0L * p.b() < 0;
 }
 }  // namespace

@@ -278,7 +278,7 @@ std::optional<UpCrossing> first_upcrossing(const QuadraticPlusHarmonic& f, const
   }
   while (true) {
     if (we > 0 && s_cursor >= ws && s_cursor < we) {
-      cursor = advance(f.origin, we);
+      cursor = advance(f.origin, std::min(we, limit));  // (a window may reach far beyond a horizon)
       s_cursor = elapsed(f.origin, cursor);
       left_value.reset();
     }
