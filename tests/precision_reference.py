@@ -44,8 +44,8 @@ mp.dps = 40
 # Tolerances of the accuracy contract (docs/accuracy.md), checked for b/a >= 1e-12 (the floor).
 TOL_T_RANDOM = 1e-11        # |T - T_ref| (on the circle) at random phases
 TOL_T_NEAR_DISC = 1e-9      # |T - T_ref| at relative distance >= 1e-11 from a discontinuity of T1
-TOL_T1_ABS = 1e-11          # |T1 - T1_ref| at random phases, beyond the rounding of T1 to a double:
-TOL_T1_ROUNDING = 2.0 ** -52  #   ... + this times |T1| (T1 is an instant up to 1e12 long)
+TOL_T1_ABS = 1e-11          # |T1 - T1_ref| and |elapsed - elapsed_ref| at random phases, beyond
+TOL_T1_ROUNDING = 2.0 ** -52  #   the rounding of a number up to 1e12 to a double: + this times it
 TOL_NEAR_T3 = 1e-15         # |T - T_ref|, |T1 - T1_ref| on the last doubles below t3 (T = t2 there)
 REL_DISTANCES = (1e-11, 1e-9, 1e-7)
 RATIOS = "1e-12,1e-10,1e-7,1e-6,1e-5,1e-3,1e-2,0.1"
@@ -329,6 +329,8 @@ def compare(cli, ratios, qa, n_random, seed, verbose=True):
             eT = float(circle_distance(mpf(T), r_T))
             # error of T1 beyond the rounding of the printed double (T1 is an instant up to 1e12)
             eT1 = max(0.0, float(abs(mpf(T1) - r_T1)) - TOL_T1_ROUNDING * abs(T1))
+            # the same for the elapsed time of the step (T-hat - theta)
+            eT1 = max(eT1, float(abs(mpf(elapsed) - r_el)) - TOL_T1_ROUNDING * abs(elapsed))
             group = kind if not kind.startswith("disc") else "disc %g" % abs(float(kind.split()[1]))
             w = worst.setdefault(group, [0.0, 0.0, 0, 0, None])
             if eT > w[0]:
@@ -339,7 +341,7 @@ def compare(cli, ratios, qa, n_random, seed, verbose=True):
         for group, w in sorted(worst.items()):
             table.append((ratio, group, w[0], w[1], w[2], w[3], w[4]))
             if verbose:
-                print("b/a=%-7g q/a=%-5g %-12s n=%-3d max|T-Tref|=%.3e  max|T1-T1ref| (beyond rounding)=%.3e  scenario mismatches=%d  (worst theta %r)"
+                print("b/a=%-7g q/a=%-5g %-12s n=%-3d max|T-Tref|=%.3e  max|T1-T1ref|,|el-elref| (beyond rounding)=%.3e  scenario mismatches=%d  (worst theta %r)"
                       % (ratio, qa, group, w[3], w[0], w[1], w[2], w[4]), flush=True)
     return table
 
@@ -378,7 +380,7 @@ def main(argv):
                 if eT > tol:
                     bad.append("max|T-Tref| %.3e > %.0e" % (eT, tol))
                 if tol1 is not None and eT1 > tol1:
-                    bad.append("T1 error %.3e > %.0e" % (eT1, tol1))
+                    bad.append("T1 or elapsed error %.3e > %.0e" % (eT1, tol1))
                 if mism:
                     bad.append("%d scenario mismatches" % mism)
                 if bad:

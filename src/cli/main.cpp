@@ -69,6 +69,13 @@ int main(int argc, char** argv) {
   auto* opt_grid = map->add_option("--grid", grid, "LO HI N: N phases LO + (HI-LO) i/N, i = 0..N-1")->expected(3);
   opt_theta->excludes(opt_grid);
   opt_grid->excludes(opt_theta);
+  map->footer(
+      "Accuracy (docs/accuracy.md; checked against a 40-digit reference by the test precision_reference):\n"
+      "  needs b/a >= 1e-12 (refused below, exit 2).\n"
+      "  T: within 1e-11 of the exact T(theta) (radians); within 1e-9 down to a relative distance of\n"
+      "     1e-11 from a discontinuity of T1; at a discontinuity either one-sided value may be returned.\n"
+      "  T1, elapsed: within 1e-11 plus the rounding of the printed double (relative 2.2e-16).\n"
+      "  scenario: exact except where T is discontinuous.  penetration: to 1e-7 (vs ODE integration).");
 
   auto* orbit = app.add_subcommand("orbit", "iterate T, with elapsed time and penetration");
   add_common(orbit, c);
@@ -76,6 +83,11 @@ int main(int argc, char** argv) {
   long long steps = 0;
   orbit->add_option("--theta0", theta0, "initial phase in [t2, t3)")->required();
   orbit->add_option("--steps", steps, "number of steps, 1 .. 10^8")->required();
+  orbit->footer(
+      "Accuracy (docs/accuracy.md): needs b/a >= 1e-12. Each step is one evaluation of T with the accuracy\n"
+      "stated by `dfchaos map --help`; along an orbit these errors are amplified by |T'| (large for small\n"
+      "b/a), so a long orbit is a faithful pseudo-orbit, not the exact orbit of theta0. time and y sum\n"
+      "elapsed and penetration in long double.");
 
   auto* sim = app.add_subcommand("simulate", "event-driven simulation of the full system");
   add_common(sim, c);
@@ -88,6 +100,10 @@ int main(int argc, char** argv) {
   sim->add_option("--t-end", t_end, "final time (>= t0)")->required();
   sim->add_option("--sample", sample, "also print the state every DT time units");
   sim->add_option("--max-events", max_events, "give up after this many events");
+  sim->footer(
+      "Accuracy (docs/accuracy.md): |t0|, |t-end| <= 1e12 (refused beyond, exit 2); any b/a (no floor:\n"
+      "flights end at t-end). Events are found by the root isolation of `map` (phases agree with T to\n"
+      "1e-10, test_reduction); the t column is a double, resolving 1e-4 at 1e12, the phase column is exact.");
 
   auto* prov = app.add_subcommand("provenance", "versions of dfchaos, the compiler and the libraries it was built with");
   bool prov_latex = false;

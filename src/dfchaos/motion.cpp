@@ -7,8 +7,12 @@
 namespace dfchaos {
 
 namespace {
-/// a/b above which a free flight may last over 10^4 time units and beta gets its double-double tail.
-constexpr double kLongFlightRatio = 1e4;
+/// A flight lasts up to about a/b time units, and the coefficient beta of s in the gap carries its
+/// rounding error times s into the gap. Up to a/b = 100 the double product a cos(theta) (error
+/// ~2e-16 a, so ~2e-14 a in the gap) is kept, as it always was; above it a cos(theta) is formed in
+/// long double, and above a/b = 1e4 a double-double tail adds the bits beyond long double.
+constexpr double kLongDoubleBetaRatio = 100;
+constexpr double kLongFlightRatio = 1e4;  ///< see kLongDoubleBetaRatio
 }  // namespace
 
 const char* regime_code(Regime r) {
@@ -38,9 +42,10 @@ QuadraticPlusHarmonic FreeMotion::gap(double y) const {
   QuadraticPlusHarmonic f;
   f.origin = start;
   f.alpha = b;
-  // beta multiplies s, up to 10^7 for small b/a: a cos(theta) in long double (a double cosine would
-  // put an error of 1e-16 s a into the gap).
-  f.beta = static_cast<long double>(v_start) + a * std::cos(static_cast<long double>(start.phase));
+  // beta multiplies s, up to 10^12 for small b/a (see kLongDoubleBetaRatio).
+  f.beta = a > kLongDoubleBetaRatio * b
+               ? static_cast<long double>(v_start) + a * std::cos(static_cast<long double>(start.phase))
+               : static_cast<long double>(v_start) + a * std::cos(start.phase);
   // Flights of more than ~10^4 time units (b/a < 1e-4) need a cos(theta) beyond long double: near a
   // discontinuity of T1 the contact is nearly tangential and an error e in beta moves it by
   // e s / |slope|. The rest of a cos(theta), to 1e-31 relative, goes into beta_tail.

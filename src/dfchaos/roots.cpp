@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <utility>
 
 #include "dfchaos/double_double.hpp"
@@ -167,15 +168,24 @@ std::optional<UpCrossing> first_upcrossing(const QuadraticPlusHarmonic& f, const
     // c1 = beta + Q (exactly 0 for a flight from rest), c2 = 2 alpha - P (F at the origin for a
     // flight), c3 = -Q.
     const double phi = f.origin.phase;
-    const long double sl = std::sin(static_cast<long double>(phi)), cl = std::cos(static_cast<long double>(phi));
-    const long double P = f.A * sl + f.B * cl, Q = f.A * cl - f.B * sl;
     const long double tiny1 = 64 * 2.2e-16L * (R + 2 * std::fabs(f.alpha) + std::fabs(f.beta));
     const long double tiny2 = 64 * 1.1e-19L * (R + 2 * std::fabs(f.alpha));
-    long double c1 = (f.beta + f.beta_tail) + Q;
-    if (std::fabs(c1) <= tiny1) c1 = 0;  // e.g. a progression from rest at the rounded t0
-    long double c2 = f.origin_at_inflection ? 0.0L : 2 * f.alpha - P;
-    if (std::fabs(c2) <= tiny2) c2 = 0;
-    const long double c3 = -Q;
+    long double P = 0, Q = 0, c1 = 0, c2 = 0, c3 = 0;
+    auto taylor = [&](long double sn, long double cs) {
+      P = f.A * sn + f.B * cs;
+      Q = f.A * cs - f.B * sn;
+      c1 = (f.beta + f.beta_tail) + Q;
+      if (std::fabs(c1) <= tiny1) c1 = 0;  // e.g. a progression from rest at the rounded t0
+      c2 = f.origin_at_inflection ? 0.0L : 2 * f.alpha - P;
+      if (std::fabs(c2) <= tiny2) c2 = 0;
+      c3 = -Q;
+    };
+    // Double trigonometry resolves c2 unless it is small (the origin near an inflection, e.g. a
+    // flight from near t2 or t3); then long double, whose error 1e-19 R fixes the sign of c2 for
+    // every double phase in [t2, t3) (there |F| >= a cos(t3) ulp/2).
+    taylor(std::sin(phi), std::cos(phi));
+    if (std::fabs(c2) < 1e-9L * (R + 2 * std::fabs(f.alpha)))
+      taylor(std::sin(static_cast<long double>(phi)), std::cos(static_cast<long double>(phi)));
     if (c1 > 0 || (c1 == 0 && (c2 > 0 || (c2 == 0 && c3 > 0)))) {
       // f rises at once: the root is the origin itself (the motion never leaves the contact, e.g.
       // a start at rest at or beyond t3, where F >= 0).
@@ -188,12 +198,13 @@ std::optional<UpCrossing> first_upcrossing(const QuadraticPlusHarmonic& f, const
     }
     // f falls at once (c1 < 0, or c1 = 0 > c2, or c1 = c2 = 0 > c3). Search the rest region (0, U].
     // |f''''| <= R, so |f''(u) - c2| <= |c3| u + R u^2/2 and |f'''(u) - c3| <= R u there.
-    constexpr long double kRestRegion = 1e-3L;
+    // With no root in (0, U] the scan goes on from 1e-7 (where it always started: the common
+    // cases keep bit-identical results), f being known negative there.
+    constexpr long double kRestRegion = 1e-3L, kRestOffset = 1e-7L;
     const long double U = std::min(kRestRegion, limit);
     if (c2 < 0 && -c2 > std::fabs(c3) * U + 0.5L * R * U * U) {
-      // Case A (by far the most common): f'' < 0 on [0, U], so f' < c1 <= 0 and f < 0 on (0, U].
-      // The scan starts at 1e-7 (as it always has: results bit-identical), where f is known negative.
-      constexpr long double kRestOffset = 1e-7L;
+      // Case A (by far the most common): f'' < 0 on [0, U], so f' < c1 <= 0 and f < 0 on (0, U];
+      // the first piece of the scan is concave and falling, and is skipped whatever f is there.
       if (limit < kRestOffset) return std::nullopt;
       cursor = advance(f.origin, kRestOffset);
       s_cursor = elapsed(f.origin, cursor);
@@ -270,8 +281,8 @@ std::optional<UpCrossing> first_upcrossing(const QuadraticPlusHarmonic& f, const
       }
       // (Neither bound applies only when f'' and f''' nearly vanish together at the origin,
       // 2 alpha = +-R to about 1e-6: b/a within 5e-7 of 1/2. f < 0 on (0, U] is then assumed.)
-      if (limit <= U) return std::nullopt;
-      cursor = advance(f.origin, U);
+      if (limit < kRestOffset) return std::nullopt;
+      cursor = advance(f.origin, kRestOffset);
       s_cursor = elapsed(f.origin, cursor);
       left_value = std::min(fr(s_cursor), -0.0L);
     }
@@ -302,7 +313,8 @@ std::optional<UpCrossing> first_upcrossing(const QuadraticPlusHarmonic& f, const
     // The polynomial part on this piece: directly in s = s0 + u, or re-centred at s0 far from the
     // origin (alpha u^2 + P1 u + P0, see roots.hpp).
     const bool rc = s0 >= kRecentreFrom;
-    const auto [P0, P1] = rc ? recentred(f, cursor) : std::pair<long double, long double>{0.0L, 0.0L};
+    long double P0 = 0, P1 = 0;  // (not a structured binding: lambdas below capture them)
+    if (rc) std::tie(P0, P1) = recentred(f, cursor);
     const long double beta = f.beta + f.beta_tail;
     auto poly = [&](double u) -> long double {
       if (rc) return (f.alpha * u + P1) * u + P0;
