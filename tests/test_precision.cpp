@@ -7,6 +7,7 @@
 #include <cmath>
 #include <string>
 
+#include "dfchaos/double_double.hpp"
 #include "dfchaos/errors.hpp"
 #include "dfchaos/parameters.hpp"
 #include "dfchaos/phase.hpp"
@@ -170,4 +171,20 @@ TEST(PrecisionRegression, ParametersOutsideTheSafeRangeAreRefused) {
   }
   EXPECT_NO_THROW(Parameters(kMinParameter, kMinParameter, kMinParameter));
   EXPECT_NO_THROW(Parameters(kMaxParameter, kMaxParameter, kMaxParameter));
+}
+
+// The double-double cosine behind the coefficient a cos(theta) of long flights (issue 12, item 2),
+// against 50-digit mpmath values (hi + lo, the rounded head and the rounded remainder).
+TEST(DoubleDouble, CosineTo1e31AgainstMpmath) {
+  struct Ref {
+    double x, hi, lo;
+  };
+  constexpr double kRelTol = 1e-31;
+  for (const Ref& r : {Ref{3.5, -0.9364566872907963, 3.5955391095995e-18}, Ref{4.0, -0.6536436208636119, 2.5846614087018284e-17},
+                       Ref{1.6, -0.029199522301288815, 4.155359463897964e-19},
+                       Ref{3.1431505650355778, -0.999998786456209, -7.071280470751749e-18}}) {
+    const dd::DD c = dd::cos_dd(r.x);
+    EXPECT_EQ(c.hi, r.hi) << "x=" << r.x;
+    EXPECT_NEAR(c.lo, r.lo, kRelTol * std::fabs(r.hi)) << "x=" << r.x;
+  }
 }

@@ -26,10 +26,18 @@ inline DD fast_two_sum(double a, double b) {
   const double s = a + b;
   return {s, b - (s - a)};
 }
-/// TwoProd with a fused multiply-add: \f$ab = p + e\f$ exactly.
+/// Veltkamp's split: a = hi + lo exactly, each half with at most 26 significant bits.
+inline DD split(double a) {
+  const double t = 134217729.0 * a;  // 2^27 + 1
+  const double hi = t - (t - a);
+  return {hi, a - hi};
+}
+/// Dekker's TwoProduct: \f$ab = p + e\f$ exactly (for |ab| far from overflow). Plain arithmetic
+/// rather than std::fma, which without -mfma is a library call and costs several times more.
 inline DD two_prod(double a, double b) {
   const double p = a * b;
-  return {p, std::fma(a, b, -p)};
+  const DD x = split(a), y = split(b);
+  return {p, ((x.hi * y.hi - p) + x.hi * y.lo + x.lo * y.hi) + x.lo * y.lo};
 }
 inline DD add(DD x, DD y) {
   DD s = two_sum(x.hi, y.hi);
@@ -66,30 +74,61 @@ inline long double to_long_double(DD x) { return static_cast<long double>(x.hi) 
 /// \f$2\pi\f$ = hi + lo to \f$6\cdot 10^{-33}\f$.
 inline constexpr DD kTwoPi{6.283185307179586, 2.4492935982947064e-16};
 
-/// \f$\cos x\f$ for a double \f$|x| \le 8\f$, to about \f$10^{-31}\f$: \f$x = n\pi/2 + r\f$ with
-/// \f$|r| \le \pi/4\f$ (\f$\pi/2\f$ in three parts, the reduction exact to \f$10^{-32}\f$), then the
-/// Taylor series of \f$\cos r\f$ or \f$\sin r\f$ summed until the terms fall below \f$10^{-34}\f$
-/// (at most 17 terms).
-inline DD cos_dd(double x) {
+/// \f$x = n\pi/2 + r\f$ for a double \f$|x| \le 8\f$, \f$|r| \le \pi/4\f$: \f$\pi/2\f$ in three parts,
+/// the reduction exact to about \f$10^{-32}\f$. Returns \f$n \bmod 4\f$.
+inline long reduce_pio2(double x, DD& r) {
   constexpr double pio2_1 = 1.5707963267948966, pio2_2 = 6.123233995736766e-17, pio2_3 = -1.4973849048591698e-33;
   const double n = std::nearbyint(x / pio2_1);
-  DD r = add(two_sum(x, 0.0), neg(two_prod(n, pio2_1)));
+  r = add(two_sum(x, 0.0), neg(two_prod(n, pio2_1)));
   r = add(r, neg(two_prod(n, pio2_2)));
   r = add(r, DD{-n * pio2_3, 0.0});
-  const DD r2 = mul(r, r);
-  const long q = static_cast<long>(n) & 3;
-  // cos r = sum (-1)^k r^2k/(2k)!,  sin r = r sum (-1)^k r^2k/(2k+1)!
-  const bool want_sin = (q == 1 || q == 3);
-  DD term{1.0, 0.0}, sum{1.0, 0.0};
-  for (int k = 1; k <= 17; ++k) {
-    const double d = want_sin ? (2.0 * k) * (2.0 * k + 1) : (2.0 * k - 1) * (2.0 * k);
-    term = neg(div(mul(term, r2), d));
-    sum = add(sum, term);
-    if (std::fabs(term.hi) < 1e-34) break;
+  return static_cast<long>(n) & 3;
+}
+
+/// \f$\cos x\f$ for a double \f$|x| \le 8\f$, to about \f$10^{-31}\f$: with \f$x = n\pi/2 + r\f$
+/// (reduce_pio2), the Taylor polynomial of \f$\cos r\f$ or \f$\sin r / r\f$ in \f$y = r^2\f$ to degree
+/// 15 (remainder below \f$(\pi/4)^{32}/32! < 10^{-38}\f$) by Horner's rule: the terms of degree
+/// \f$\ge 8\f$ (below \f$10^{-15}\f$) in double, the others in double-double with coefficients
+/// \f$1/k!\f$ computed once.
+inline DD cos_dd(double x) {
+  struct Table {
+    DD inv_fact[34];  // 1/k!, k = 0..33
+    Table() {
+      inv_fact[0] = {1.0, 0.0};
+      for (int k = 1; k < 34; ++k) inv_fact[k] = div(inv_fact[k - 1], static_cast<double>(k));
+    }
+  };
+  static const Table t;
+  DD r;
+  const long q = reduce_pio2(x, r);
+  const DD y = mul(r, r);
+  // cos r = sum_k (-1)^k y^k/(2k)!,  sin r = r sum_k (-1)^k y^k/(2k+1)!,  k = 0..15
+  const int odd = (q == 1 || q == 3) ? 1 : 0;
+  double tail = -t.inv_fact[30 + odd].hi;  // k = 15, sign (-1)^15
+  for (int k = 14; k >= 8; --k) tail = tail * y.hi + ((k % 2) ? -1.0 : 1.0) * t.inv_fact[2 * k + odd].hi;
+  DD sum{tail, 0.0};
+  for (int k = 7; k >= 0; --k) {
+    const DD c = t.inv_fact[2 * k + odd];
+    sum = add(mul(sum, y), (k % 2) ? neg(c) : c);
   }
-  if (want_sin) sum = mul(sum, r);
+  if (odd) sum = mul(sum, r);
   // cos(n pi/2 + r): q = 0: cos r; 1: -sin r; 2: -cos r; 3: sin r.
   return (q == 1 || q == 2) ? neg(sum) : sum;
+}
+
+/// \f$\cos x\f$ for a double \f$|x| \le 8\f$ in long double (error about 1 ulp, \f$10^{-19}\f$):
+/// reduce_pio2, then the long-double kernel on \f$|r| \le \pi/4\f$ (which skips the slow general
+/// reduction that cosl applies to larger arguments).
+inline long double cos_ld(double x) {
+  DD r;
+  const long q = reduce_pio2(x, r);
+  const long double rl = to_long_double(r);
+  switch (q) {
+    case 0: return std::cos(rl);
+    case 1: return -std::sin(rl);
+    case 2: return -std::cos(rl);
+    default: return std::sin(rl);
+  }
 }
 
 }  // namespace dfchaos::dd

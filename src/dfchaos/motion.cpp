@@ -42,19 +42,23 @@ QuadraticPlusHarmonic FreeMotion::gap(double y) const {
   QuadraticPlusHarmonic f;
   f.origin = start;
   f.alpha = b;
+  double sn, cs;
+  ::sincos(start.phase, &sn, &cs);  // (glibc: one call for both)
   // beta multiplies s, up to 10^12 for small b/a (see kLongDoubleBetaRatio).
-  f.beta = a > kLongDoubleBetaRatio * b
-               ? static_cast<long double>(v_start) + a * std::cos(static_cast<long double>(start.phase))
-               : static_cast<long double>(v_start) + a * std::cos(start.phase);
-  // Flights of more than ~10^4 time units (b/a < 1e-4) need a cos(theta) beyond long double: near a
-  // discontinuity of T1 the contact is nearly tangential and an error e in beta moves it by
-  // e s / |slope|. The rest of a cos(theta), to 1e-31 relative, goes into beta_tail.
   if (a > kLongFlightRatio * b) {
+    // Flights of more than ~10^4 time units (b/a < 1e-4) need a cos(theta) beyond long double: near
+    // a discontinuity of T1 the contact is nearly tangential and an error e in beta moves it by
+    // e s / |slope|. beta + beta_tail = v + a cos(theta) to about 1e-31 relative.
     const dd::DD exact = dd::add(dd::two_sum(v_start, 0.0), dd::mul(dd::cos_dd(start.phase), a));
+    f.beta = dd::to_long_double(exact);
     f.beta_tail = dd::to_long_double(dd::add(exact, dd::neg(dd::of(f.beta))));
+  } else if (a > kLongDoubleBetaRatio * b) {
+    f.beta = static_cast<long double>(v_start) + a * dd::cos_ld(start.phase);
+  } else {
+    f.beta = static_cast<long double>(v_start) + a * cs;
   }
   // (x_start - y) is formed first: exactly 0 at contact, so that f(origin) = 0 exactly.
-  f.gamma = static_cast<long double>(x_start - y) + a * std::sin(start.phase);
+  f.gamma = static_cast<long double>(x_start - y) + a * sn;
   f.A = -a;
   f.B = 0;
   f.starts_at_rest = (x_start == y && v_start == 0);
