@@ -98,8 +98,6 @@ bool quadratic_roots(long double alpha, long double beta, long double k, long do
   return true;
 }
 
-}  // namespace
-
 /// What a start at rest (f(origin) = 0 exactly) leads to near the origin.
 struct RestStart {
   enum Kind { Root, NoRoot, Resume } kind;  ///< a root found; no root within the limit; scan on from kRestOffset
@@ -247,6 +245,8 @@ constexpr long double kRestOffset = 1e-7L;
     return {RestStart::Resume, {}, std::min(fr(elapsed(f.origin, advance(f.origin, kRestOffset))), -0.0L)};
   }
 }
+
+}  // namespace
 
 std::optional<UpCrossing> first_upcrossing(const QuadraticPlusHarmonic& f, const SearchLimits& limits) {
   if (f.alpha < 0) throw std::logic_error("first_upcrossing: alpha must be >= 0");
