@@ -35,9 +35,9 @@ struct Common {
 };
 
 void add_common(CLI::App* cmd, Common& c) {
-  cmd->add_option("--a", c.a, "forcing amplitude a > 0")->required();
-  cmd->add_option("--b", c.b, "half the constant force, b > 0")->required();
-  cmd->add_option("--q", c.q, "dry-friction force q > 0")->required();
+  cmd->add_option("--a", c.a, "forcing amplitude a, 1e-100 <= a <= 1e100")->required();
+  cmd->add_option("--b", c.b, "half the constant force, 1e-100 <= b <= 1e100 (T needs b/a >= 1e-12)")->required();
+  cmd->add_option("--q", c.q, "dry-friction force q, 1e-100 <= q <= 1e100")->required();
 }
 
 std::string row(std::initializer_list<std::string> cols) {
