@@ -117,17 +117,20 @@ inline DD cos_dd(double x) {
 }
 
 /// \f$\cos x\f$ for a double \f$|x| \le 8\f$ in long double (error about 1 ulp, \f$10^{-19}\f$):
-/// reduce_pio2, then the long-double kernel on \f$|r| \le \pi/4\f$ (which skips the slow general
-/// reduction that cosl applies to larger arguments).
+/// \f$r = x - n\pi/2\f$ by Cody and Waite's reduction in long double (\f$\pi/2\f$ in three parts, the
+/// first two short enough that \f$n\f$ times them is exact), then the long-double kernel on
+/// \f$|r| \le \pi/4\f$ (cosl itself would run its slow general reduction for larger arguments).
 inline long double cos_ld(double x) {
-  DD r;
-  const long q = reduce_pio2(x, r);
-  const long double rl = to_long_double(r);
-  switch (q) {
-    case 0: return std::cos(rl);
-    case 1: return -std::sin(rl);
-    case 2: return -std::cos(rl);
-    default: return std::sin(rl);
+  constexpr double c1 = 3373259426.0 / 2147483648.0;           // pi/2 to 32 bits
+  constexpr double c2 = 560513588.0 / 9223372036854775808.0;   // the next 30 bits
+  constexpr long double c3 = 8.333742918520878328295864e-20L;  // the rest
+  const double n = std::nearbyint(x * 0.63661977236758134);
+  const long double r = ((static_cast<long double>(x) - n * c1) - static_cast<long double>(n) * c2) - n * c3;
+  switch (static_cast<long>(n) & 3) {
+    case 0: return std::cos(r);
+    case 1: return -std::sin(r);
+    case 2: return -std::cos(r);
+    default: return std::sin(r);
   }
 }
 

@@ -10,9 +10,13 @@ namespace {
 /// A flight lasts up to about a/b time units, and the coefficient beta of s in the gap carries its
 /// rounding error times s into the gap. Up to a/b = 100 the double product a cos(theta) (error
 /// ~2e-16 a, so ~2e-14 a in the gap) is kept, as it always was; above it a cos(theta) is formed in
-/// long double, and above a/b = 1e4 a double-double tail adds the bits beyond long double.
+/// long double (error ~1e-19 a, so ~1e-13 a in the gap at a/b = 1e6), and above a/b = 1e6 a
+/// double-double tail adds the bits beyond long double: near a discontinuity of T1, where the
+/// contact is nearly tangential, an error e in the gap moves T1 by e / |slope| (measured at
+/// b/a = 1e-7 and relative distance 1e-11 from a discontinuity: 2e-9 in long double, 3e-12 with
+/// the tail; tests/precision_reference.py).
 constexpr double kLongDoubleBetaRatio = 100;
-constexpr double kLongFlightRatio = 1e4;  ///< see kLongDoubleBetaRatio
+constexpr double kLongFlightRatio = 1e6;  ///< see kLongDoubleBetaRatio
 }  // namespace
 
 const char* regime_code(Regime r) {
@@ -46,9 +50,8 @@ QuadraticPlusHarmonic FreeMotion::gap(double y) const {
   ::sincos(start.phase, &sn, &cs);  // (glibc: one call for both)
   // beta multiplies s, up to 10^12 for small b/a (see kLongDoubleBetaRatio).
   if (a > kLongFlightRatio * b) {
-    // Flights of more than ~10^4 time units (b/a < 1e-4) need a cos(theta) beyond long double: near
-    // a discontinuity of T1 the contact is nearly tangential and an error e in beta moves it by
-    // e s / |slope|. beta + beta_tail = v + a cos(theta) to about 1e-31 relative.
+    // Flights of more than ~10^6 time units (b/a < 1e-6): beta + beta_tail = v + a cos(theta) to
+    // about 1e-31 relative.
     const dd::DD exact = dd::add(dd::two_sum(v_start, 0.0), dd::mul(dd::cos_dd(start.phase), a));
     f.beta = dd::to_long_double(exact);
     f.beta_tail = dd::to_long_double(dd::add(exact, dd::neg(dd::of(f.beta))));
