@@ -2,7 +2,7 @@
 /// @brief Internal: double-double numbers (an unevaluated sum hi + lo, about 107 bits) built from
 /// error-free transformations, and \f$\cos\f$ of a double to that precision.
 ///
-/// Used where a quantity is multiplied by a flight time of up to \f$10^{8}\f$: the polynomial part
+/// Used where a quantity is multiplied by a flight time of up to \f$10^{12}\f$: the polynomial part
 /// of a gap re-centred far from its origin (roots.cpp), and \f$a\cos\theta\f$, the coefficient of
 /// \f$s = t - \theta\f$ in the free-flight gap (motion.cpp). Not part of the public interface.
 #pragma once

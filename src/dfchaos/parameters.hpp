@@ -31,11 +31,12 @@ inline constexpr double kMaxParameter = 1e100;  ///< see kMinParameter
 
 /// The accuracy floor of the return map: \f$T\f$ is refused for \f$b/a < 10^{-12}\f$ (see
 /// require_return_map() and docs/accuracy.md). Measured against a 40-digit reference (test
-/// precision_reference), the error of \f$T\f$ stays below \f$10^{-14}\f$ at random phases and
-/// below \f$10^{-11}\f$ at relative distance \f$10^{-11}\f$ from a discontinuity of \f$T_1\f$ down to
-/// \f$b/a = 10^{-14}\f$; below about \f$10^{-15}\f$ the shift \f$2b/a\f$ of \f$t_2, t_3\f$ from
-/// \f$\pi, 2\pi\f$ drops under the resolution of a double phase, and the search cost grows like
-/// \f$10^{-9} a/b\f$ pieces. The floor keeps a margin of 100 on both.
+/// precision_reference) for \f$b/a \in [10^{-12}, 0.1]\f$, the error of \f$T\f$ stays below
+/// \f$3\cdot 10^{-14}\f$ at random phases and below \f$10^{-10}\f$ at relative distance \f$10^{-11}\f$
+/// from a discontinuity of \f$T_1\f$ (the contract: \f$10^{-11}\f$ and \f$10^{-9}\f$). The arithmetic
+/// still holds at \f$b/a = 10^{-14}\f$, but below about \f$10^{-15}\f$ the shift \f$2b/a\f$ of
+/// \f$t_2, t_3\f$ from \f$\pi, 2\pi\f$ drops under the resolution of a double phase, and the search
+/// cost grows like \f$10^{-9} a/b\f$ pieces. The floor keeps a margin of 100 in \f$b/a\f$ to both.
 inline constexpr double kMinMapRatio = 1e-12;
 
 /// Which of the paper's standing assumptions a parameter set satisfies.
