@@ -118,20 +118,32 @@ inline DD cos_dd(double x) {
 
 /// \f$\cos x\f$ for a double \f$|x| \le 8\f$ in long double (error about 1 ulp, \f$10^{-19}\f$):
 /// \f$r = x - n\pi/2\f$ by Cody and Waite's reduction in long double (\f$\pi/2\f$ in three parts, the
-/// first two short enough that \f$n\f$ times them is exact), then the long-double kernel on
-/// \f$|r| \le \pi/4\f$ (cosl itself would run its slow general reduction for larger arguments).
+/// first two short enough that \f$n\f$ times them is exact), then the Taylor polynomial of
+/// \f$\cos r\f$ or \f$\sin r\f$ on \f$|r| \le \pi/4\f$ (cosl would run its slow general reduction).
 inline long double cos_ld(double x) {
   constexpr double c1 = 3373259426.0 / 2147483648.0;           // pi/2 to 32 bits
   constexpr double c2 = 560513588.0 / 9223372036854775808.0;   // the next 30 bits
   constexpr long double c3 = 8.333742918520878328295864e-20L;  // the rest
   const double n = std::nearbyint(x * 0.63661977236758134);
   const long double r = ((static_cast<long double>(x) - n * c1) - static_cast<long double>(n) * c2) - n * c3;
-  switch (static_cast<long>(n) & 3) {
-    case 0: return std::cos(r);
-    case 1: return -std::sin(r);
-    case 2: return -std::cos(r);
-    default: return std::sin(r);
-  }
+  // Taylor polynomials on |r| <= pi/4 (remainders below (pi/4)^24/24! ~ 1e-26): cheaper than the
+  // library's long-double kernels.
+  const long double y = r * r;
+  const long q = static_cast<long>(n) & 3;
+  long double p = 0;
+  // inv[j][k] = 1/((2k - 1 + j)(2k + j)), j = 0 for cos, 1 for sin
+  struct Inv {
+    long double v[2][12];
+    constexpr Inv() : v{} {
+      for (int j = 0; j < 2; ++j)
+        for (int k = 1; k < 12; ++k) v[j][k] = 1.0L / ((2.0L * k - 1 + j) * (2.0L * k + j));
+    }
+  };
+  static constexpr Inv inv{};
+  const int j = (q == 0 || q == 2) ? 0 : 1;
+  for (int k = 11; k >= 1; --k) p = (1.0L - p) * y * inv.v[j][k];  // nested Horner form
+  p = j ? r * (1.0L - p) : 1.0L - p;
+  return (q == 1 || q == 2) ? -p : p;
 }
 
 }  // namespace dfchaos::dd
