@@ -70,6 +70,17 @@ expect_error "arc:"   map "${P[@]}" --arc 1e8
 expect_error "arc:"   map "${P[@]}" --arc x
 expect_error "--arc"  map "${P[@]}" --arc 3 --theta 4
 expect_error "max-events:" simulate "${P[@]}" --x0 0 --y0 0 --v0 0 --t0 0 --t-end 10 --max-events 0
+# Issue 12: the accuracy contract (docs/accuracy.md).
+expect_error "a:"     info --a 1e-320 --b 0.01 --q 0.85
+expect_error "b:"     info --a 1 --b 1e-300 --q 0.85
+expect_error "q:"     info --a 1 --b 0.01 --q 1e101
+expect_error "b:"     map --a 1 --b 1e-17 --q 0.85 --theta 4
+expect_error "b:"     map --a 1 --b 1e-13 --q 0.85 --theta 4
+expect_error "b:"     orbit --a 1 --b 1e-16 --q 0.85 --theta0 4 --steps 3
+expect_error "t-end:" simulate "${P[@]}" --x0 0 --y0 0 --v0 0 --t0 4 --t-end 1e20
+expect_error "t-end:" simulate "${P[@]}" --x0 0 --y0 0 --v0 0 --t0 4 --t-end 6e19
+expect_error "t-end:" simulate "${P[@]}" --x0 0 --y0 0 --v0 0 --t0 4 --t-end 1e308
+expect_error "t0:"    simulate "${P[@]}" --x0 0 --y0 0 --v0 0 --t0 1e20 --t-end 1.00000000001e20
 expect_error "frobnicate" frobnicate "${P[@]}"
 expect_error "--bogus" map "${P[@]}" --theta 4 --bogus 1
 expect_error "subcommand" 
@@ -78,6 +89,15 @@ expect_ok "^theta	T1	T	scenario	elapsed	penetration$" map "${P[@]}" --theta 3.5 
 expect_ok "^n	theta	scenario	elapsed	penetration	time	y$" orbit "${P[@]}" --theta0 3.5 --steps 5
 expect_ok "^t	phase	before	after	kind" simulate "${P[@]}" --x0 0 --y0 0 --v0 0 --t0 4 --t-end 100 --sample 1
 expect_ok "^quantity	value" info "${P[@]}"
+expect_ok "^theta	T1	T" map --a 1 --b 1e-12 --q 0.85 --theta 3.5 4 5
+# The double just below t3 is not a fixed point (issue 12, item 1): scenario C, T = t2.
+checks=$((checks + 1))
+row=$("$cli" map "${P[@]}" --theta 6.2631839736061945 | tail -n 1)
+if [[ $(cut -f3,4 <<<"$row") != $'3.1615939871631835\tC' ]]; then
+  echo "FAIL: map just below t3 should give T = t2, scenario C: $row"; fails=$((fails + 1))
+else
+  echo "ok:   dfchaos map ${P[*]} --theta 6.2631839736061945 -> T = t2, C"
+fi
 
 expect_ok "^n	theta" orbit "${P[@]}" --theta0 3.5 --steps 1e1
 checks=$((checks + 1))

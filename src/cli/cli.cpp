@@ -10,9 +10,11 @@
 namespace dfchaos::cli {
 
 void ModelOptions::add_to(CLI::App* app) {
-  app->add_option("--a", a, "forcing amplitude, a > 0")->required()->type_name("FLOAT");
-  app->add_option("--b", b, "half the constant force, 0 < b < a/2 for the return map")->required()->type_name("FLOAT");
-  app->add_option("--q", q, "maximal dry-friction force, q > 2b for the return map")->required()->type_name("FLOAT");
+  const std::string range = format_double(kMinParameter) + " <= X <= " + format_double(kMaxParameter);
+  app->add_option("--a", a, "forcing amplitude a, " + range)->required()->type_name("FLOAT");
+  app->add_option("--b", b, "half the constant force b, " + range + "; the return map needs b < a/2 and b/a >= " + format_double(kMinMapRatio))
+      ->required()->type_name("FLOAT");
+  app->add_option("--q", q, "maximal dry-friction force q, " + range + "; the return map needs q > 2b")->required()->type_name("FLOAT");
 }
 
 Parameters ModelOptions::model() const { return Parameters(number("a", a), number("b", b), number("q", q)); }

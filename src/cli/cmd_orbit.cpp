@@ -29,7 +29,10 @@ Command add_orbit(CLI::App& app) {
       "  time         the time at which theta_n starts (theta0 at n = 0)\n"
       "  y            the delimiter position at that time (0 at n = 0)\n"
       "Memory does not grow with the number of steps; progress goes to stderr when it is a terminal.\n"
-      "Accuracy: see docs/accuracy.md (chaotic orbits separate from the exact orbit at the rate of the Lyapunov exponent).");
+      "Accuracy (docs/accuracy.md): needs b/a >= " + format_double(kMinMapRatio) + ". Each step is one evaluation of T with the\n"
+      "accuracy stated by 'dfchaos map --help'; along an orbit these errors are amplified by |T'| (large for small b/a),\n"
+      "so a long orbit is a faithful pseudo-orbit, not the exact orbit of theta0. time and y sum elapsed and penetration\n"
+      "in long double.");
   return {cmd, [o] {
             const Parameters p = o->m.model();
             p.require_return_map();

@@ -29,7 +29,10 @@ Command add_simulate(CLI::App& app) {
       "  x, y         positions of the mass and of the delimiter\n"
       "  v_before, v_after  velocities of the mass just before and after\n"
       "With --sample, after two blank lines (gnuplot's 'index 1'): t x y v regime.\n"
-      "Exit status 1 if more than --max-events events occur before t-end.");
+      "Exit status 1 if more than --max-events events occur before t-end.\n"
+      "Accuracy (docs/accuracy.md): |t0|, |t-end| <= " + format_double(kMaxSimulationTime) + " (refused beyond, exit 2); any b/a (no floor:\n"
+      "flights end at t-end). Events are found by the root isolation of 'map' (phases agree with T to 1e-10,\n"
+      "test_reduction); the t column is a double, the phase column is exact.");
   return {cmd, [o] {
             const Parameters p = o->m.model();
             SimulationOptions so;

@@ -25,6 +25,7 @@ struct FreeMotion {
   Instant start;   ///< \\f$t_s\\f$
   double x_start;  ///< \\f$x_s = x(t_s)\\f$
   double v_start;  ///< \\f$v_s = \\dot x(t_s)\\f$
+  bool starts_at_t2;  ///< \\f$t_s\\f$ has the phase \\f$t_2\\f$ (where \\f$F = 0\\f$ by definition)
 
   /// The motion of this regime through the given state at \\f$t_s\\f$.
   FreeMotion(const Parameters& p, const Instant& start, double x_start, double v_start);

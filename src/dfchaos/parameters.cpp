@@ -8,7 +8,9 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <stdexcept>
 
+#include "dfchaos/double_double.hpp"
 #include "dfchaos/errors.hpp"
 #include "dfchaos/phase.hpp"
 
@@ -57,15 +59,16 @@ double vartheta0() {
 }
 
 namespace {
-void require_positive_finite(const char* name, double v) {
-  if (!std::isfinite(v) || !(v > 0)) throw InvalidParameter(name, "0 < " + std::string(name) + " < infinity", v);
+void require_in_range(const char* name, double v) {
+  if (!std::isfinite(v) || !(v >= kMinParameter && v <= kMaxParameter))
+    throw InvalidParameter(name, "1e-100 <= " + std::string(name) + " <= 1e100 (only b/a and q/a matter: rescale)", v);
 }
 }  // namespace
 
 Parameters::Parameters(double a, double b, double q) : a_(a), b_(b), q_(q) {
-  require_positive_finite("a", a);
-  require_positive_finite("b", b);
-  require_positive_finite("q", q);
+  require_in_range("a", a);
+  require_in_range("b", b);
+  require_in_range("q", q);
   const double w = (q - 2 * b) / a;
   if (std::fabs(w) < 1) {
     const double s = std::asin(w);
@@ -93,6 +96,9 @@ double Parameters::t3_required() const {
 void Parameters::require_return_map() const {
   if (!(2 * b_ < a_)) throw InvalidParameter("b", "0 < b < a/2 for the return map T (Eq. 2)", b_);
   if (!(q_ > 2 * b_)) throw InvalidParameter("q", "q > 2b for the return map T (otherwise progression need not stop)", q_);
+  if (!(b_ >= kMinMapRatio * a_))
+    throw InvalidParameter("b", "b/a >= 1e-12 for the return map T (its accuracy floor, docs/accuracy.md; here b/a = " +
+                                    format_double(b_ / a_) + ")", b_);
 }
 
 Assumptions Parameters::assumptions() const {
@@ -135,15 +141,23 @@ double wrap_phase(double t) {
 }
 
 Instant Instant::from_time(double t) {
-  // Fast path (no long double division): a time already inside [0, 2 pi) is its own phase. The
-  // general formula below gives bit-identical results there (k = 0, or k = 1 and an exact undo).
+  // Fast path (no division): a time already inside [0, 2 pi) is its own phase.
   if (t >= 0 && t < two_pi) return Instant{0, t};
-  const long double tl = t;
-  const long double k = std::floor(tl / two_pi_l);
-  long double r = tl - k * two_pi_l;
+  if (!(std::fabs(t) <= kMaxInstantTime))
+    throw std::domain_error("Instant::from_time: |t| = " + format_double(t) + " exceeds 1e15 (callers must refuse such times)");
+  // t - 2 pi k in double-double: k 2 pi = k hi + k lo with k hi exact (TwoProd) and 2 pi to 107
+  // bits, so the phase is right to the last bit for every |t| <= 1e15 (a long-double 2 pi would be
+  // off by 2e-19 k, 3.5e-8 at t = 1e12).
+  double k = std::floor(t / two_pi);
+  auto reduce = [&](double kk) {
+    return dd::add(dd::two_sum(t, 0.0), dd::neg(dd::add(dd::two_prod(kk, dd::kTwoPi.hi), dd::DD{kk * dd::kTwoPi.lo, 0.0})));
+  };
+  dd::DD r = reduce(k);
+  if (r.hi < 0 || (r.hi == 0 && r.lo < 0)) r = reduce(--k);
+  else if (r.hi >= two_pi) r = reduce(++k);
+  double ph = r.hi;
   std::int64_t turn = static_cast<std::int64_t>(k);
-  if (r < 0) { r += two_pi_l; --turn; }
-  double ph = static_cast<double>(r);
+  if (ph < 0) ph = 0.0;
   if (ph >= two_pi) { ph = 0.0; ++turn; }
   return Instant{turn, ph};
 }

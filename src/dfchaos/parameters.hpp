@@ -21,6 +21,24 @@ double vartheta0();
 /// It increases strictly on \f$(0, \pi/2]\f$ from \f$-\infty\f$ to \f$\pi/2 - 1 > 0\f$.
 double eq1_residual(double vartheta);
 
+/// Smallest and largest accepted \f$a\f$, \f$b\f$, \f$q\f$. The motion depends only on \f$b/a\f$ and
+/// \f$q/a\f$ (Section 2: divide \f$x\f$ by \f$a\f$), so this loses nothing: rescale. Inside it every
+/// intermediate quantity (\f$b s^2\f$ for flights up to \f$10^{12}\f$, Taylor terms of the gap near a
+/// start at rest, products of two parameters) is a normal double, and \f$b/a\f$, \f$q/a\f$ are
+/// finite normal numbers.
+inline constexpr double kMinParameter = 1e-100;
+inline constexpr double kMaxParameter = 1e100;  ///< see kMinParameter
+
+/// The accuracy floor of the return map: \f$T\f$ is refused for \f$b/a < 10^{-12}\f$ (see
+/// require_return_map() and docs/accuracy.md). Measured against a 40-digit reference (test
+/// precision_reference) for \f$b/a \in [10^{-12}, 0.1]\f$, the error of \f$T\f$ stays below
+/// \f$3\cdot 10^{-14}\f$ at random phases and below \f$10^{-10}\f$ at relative distance \f$10^{-11}\f$
+/// from a discontinuity of \f$T_1\f$ (the contract: \f$10^{-11}\f$ and \f$10^{-9}\f$). The arithmetic
+/// still holds at \f$b/a = 10^{-14}\f$, but below about \f$10^{-15}\f$ the shift \f$2b/a\f$ of
+/// \f$t_2, t_3\f$ from \f$\pi, 2\pi\f$ drops under the resolution of a double phase, and the search
+/// cost grows like \f$10^{-9} a/b\f$ pieces. The floor keeps a margin of 100 in \f$b/a\f$ to both.
+inline constexpr double kMinMapRatio = 1e-12;
+
 /// Which of the paper's standing assumptions a parameter set satisfies.
 struct Assumptions {
   bool b_in_range;            ///< \f$0 < b < a/2\f$ (Eq. 2): the free regime exists (\f$t_2, t_3\f$ defined)
@@ -33,11 +51,13 @@ struct Assumptions {
 
 /// The parameters of the system (non-dimensional, as in Section 2).
 ///
-/// Construction checks only that all three are finite and positive; the stronger conditions of
-/// the paper are reported by assumptions() and demanded by the operations that need them.
+/// Construction checks only that all three lie in [kMinParameter, kMaxParameter]; the stronger
+/// conditions of the paper are reported by assumptions() and demanded by the operations that need
+/// them.
 class Parameters {
  public:
-  /// @throws InvalidParameter naming `a`, `b` or `q` if it is not finite or not positive.
+  /// @throws InvalidParameter naming `a`, `b` or `q` if it is not finite or outside
+  ///         [kMinParameter, kMaxParameter] (which also excludes zero, negative and subnormal values).
   Parameters(double a, double b, double q);
 
   double a() const { return a_; }  ///< amplitude of the harmonic forcing
@@ -66,8 +86,9 @@ class Parameters {
   /// Which assumptions of the paper hold.
   Assumptions assumptions() const;
 
-  /// Demands what the return map \f$T\f$ needs: \f$b < a/2\f$ (so that \f$t_2, t_3\f$ exist) and
-  /// \f$q > 2b\f$ (so that every progression stops).
+  /// Demands what the return map \f$T\f$ needs: \f$b < a/2\f$ (so that \f$t_2, t_3\f$ exist),
+  /// \f$q > 2b\f$ (so that every progression stops) and \f$b/a \ge\f$ kMinMapRatio (the accuracy
+  /// floor, docs/accuracy.md).
   /// @throws InvalidParameter naming `b` or `q`.
   void require_return_map() const;
 

@@ -26,6 +26,10 @@ double wrap_phase(double t);
 /// Distance of two phases on the circle, \f$\min_k |x - y + 2\pi k| \in [0, \pi]\f$.
 double circle_distance(double x, double y);
 
+/// Largest \f$|t|\f$ that Instant::from_time accepts: there the turn count is about \f$1.6\cdot 10^{14}\f$,
+/// far inside int64, and the double-double reduction still gives the phase to the last bit.
+inline constexpr double kMaxInstantTime = 1e15;
+
 /// An instant \f$t = 2\pi\,\mathrm{turn} + \mathrm{phase}\f$, \f$\mathrm{phase} \in [0, 2\pi)\f$.
 struct Instant {
   std::int64_t turn = 0;  ///< number of whole forcing periods
@@ -34,7 +38,9 @@ struct Instant {
   /// The instant as one real number (loses phase digits for large turns: for output only).
   double value() const { return static_cast<double>(static_cast<long double>(turn) * two_pi_l + phase); }
 
-  /// Splits a real time into turn and phase.
+  /// Splits a real time into turn and phase, the phase correctly rounded (double-double reduction).
+  /// @throws std::domain_error if \f$|t| >\f$ kMaxInstantTime or t is not finite (a bug of the
+  ///         caller: user-given times are checked before, e.g. by simulate()).
   static Instant from_time(double t);
   /// The instant in turn 0 with the given phase (any real, reduced mod \f$2\pi\f$).
   static Instant at_phase(double phase) { return from_time(phase); }

@@ -7,8 +7,14 @@ namespace dfchaos {
 const char* transition_code(TransitionKind k) { return k == TransitionKind::Impact ? "fp" : "is"; }
 
 namespace {
+/// Whether a mass at rest at the contact at phase phi flies off: phi in [t2, t3). The rounded t3
+/// may exceed the true one by an ulp; the last doubles below it are therefore also required to
+/// have F(phi) < 0, with F in long double (its sign is exact there: |F| >= a cos(t3) ulp/2).
+constexpr double kNearT3 = 8 * 8.9e-16;  // 8 ulp of a phase in [4, 8)
 bool in_free_arc(const Parameters& p, double phi) {
-  return p.t2() && phase_in_arc(phi, *p.t2(), *p.t3());
+  if (!p.t2() || !phase_in_arc(phi, *p.t2(), *p.t3())) return false;
+  if (*p.t3() - phi > kNearT3) return true;
+  return p.a() * std::sin(static_cast<long double>(phi)) + 2.0L * p.b() < 0;
 }
 }  // namespace
 
@@ -38,7 +44,14 @@ std::optional<Transition> next_transition(const Parameters& p, const MechanicalS
       tr.pieces = root->pieces;
       tr.x = tr.y = s.y;
       tr.v_before = std::max(root->slope, 0.0);
-      if (tr.v_before > 0) {
+      if (root->s == 0) {
+        // The gap rises at once from a start at rest (F >= 0 there: at or just beyond t3): the
+        // mass never leaves the delimiter. Zero-velocity contact (is) into stop, or progression
+        // if F exceeds q.
+        tr.kind = TransitionKind::InstantaneousStop;
+        tr.v_before = 0;
+        tr.to = (p.F(tr.t.phase) > p.q() || (p.t0() && tr.t.phase == *p.t0())) ? Regime::Progression : Regime::Stop;
+      } else if (tr.v_before > 0) {
         tr.kind = TransitionKind::Impact;
         tr.to = Regime::Progression;
         tr.v_after = tr.v_before;

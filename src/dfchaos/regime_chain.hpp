@@ -8,7 +8,11 @@
 ///  - **free** ends at the first contact \f$x = y\f$ (first up-crossing of the gap). With a
 ///    positive impact velocity the mass drags the delimiter: progression (transition *fp*). With
 ///    zero velocity (a grazing touch) it flies on if the phase is in \f$[t_2, t_3)\f$, otherwise
-///    it stops (an instantaneous stop *is*; the degenerate Scenarios C′, D′ start at \f$t_3\f$).
+///    it stops (an instantaneous stop *is*; the degenerate Scenarios C′, D′ start at \f$t_3\f$). A
+///    flight from rest whose gap rises at once (\f$F \ge 0\f$ at the start, i.e. at or beyond the
+///    true \f$t_3\f$) has length 0: the mass never leaves and stops (or progresses if \f$F > q\f$).
+///    The free arc \f$[t_2, t_3)\f$ excludes the last doubles below the rounded \f$t_3\f$ where
+///    \f$F \ge 0\f$ (long-double sign test).
 ///  - **progression** ends when \f$\dot x\f$ returns to 0: free if the phase is in \f$[t_2, t_3)\f$,
 ///    stop otherwise.
 ///  - **stop** ends at the next phase \f$t_2\f$ (free) or \f$t_0\f$ (progression from rest),

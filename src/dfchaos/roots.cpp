@@ -5,23 +5,59 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <utility>
 
+#include "dfchaos/double_double.hpp"
 #include "dfchaos/errors.hpp"
 
 namespace dfchaos {
 
 long double QuadraticPlusHarmonic::value_at(long double s, double phi) const {
-  return (alpha * s + beta) * s + gamma + static_cast<long double>(A * std::sin(phi) + B * std::cos(phi));
+  return (alpha * s + (beta + beta_tail)) * s + gamma + static_cast<long double>(A * std::sin(phi) + B * std::cos(phi));
 }
 long double QuadraticPlusHarmonic::slope_at(long double s, double phi) const {
-  return 2 * alpha * s + beta + static_cast<long double>(A * std::cos(phi) - B * std::sin(phi));
+  return 2 * alpha * s + (beta + beta_tail) + static_cast<long double>(A * std::cos(phi) - B * std::sin(phi));
 }
 long double QuadraticPlusHarmonic::curvature_at(double phi) const {
   return 2 * alpha - static_cast<long double>(A * std::sin(phi) + B * std::cos(phi));
 }
-long double QuadraticPlusHarmonic::value(const Instant& t) const { return value_at(elapsed(origin, t), t.phase); }
-long double QuadraticPlusHarmonic::slope(const Instant& t) const { return slope_at(elapsed(origin, t), t.phase); }
+
+namespace {
+
+using dd::DD;
+
+/// Pieces that start this far (in time) from the origin are evaluated re-centred. Below it the direct
+/// long-double evaluation loses at most ~2e-19 s a < 4e-15 a (s itself resolved to 2e-15), results
+/// stay bit-identical to the direct evaluation, and no per-piece double-double work is spent.
+constexpr long double kRecentreFrom = 16384;
+/// Re-centred pieces between two exact (double-double) re-centrings.
+constexpr int kRecentreEvery = 16;
+
+/// The polynomial part p(s) = alpha s^2 + beta s + gamma and its slope at the instant `at`, with
+/// s = elapsed(origin, at) formed exactly as 2 pi * turns + (phase difference) in double-double.
+std::pair<long double, long double> recentred(const QuadraticPlusHarmonic& f, const Instant& at) {
+  const double k = static_cast<double>(at.turn - f.origin.turn);  // |k| < 2^53
+  const DD S = dd::add(dd::add(dd::two_prod(k, dd::kTwoPi.hi), DD{k * dd::kTwoPi.lo, 0.0}), dd::two_sum(at.phase, -f.origin.phase));
+  const DD aS = dd::mul(dd::of(f.alpha), S);
+  const DD W = dd::add(aS, dd::add(dd::of(f.beta), dd::of(f.beta_tail)));  // alpha s + beta
+  const DD P0 = dd::add(dd::mul(S, W), dd::of(f.gamma));                    // s (alpha s + beta) + gamma
+  const DD P1 = dd::add(W, aS);                                             // 2 alpha s + beta
+  return {dd::to_long_double(P0), dd::to_long_double(P1)};
+}
+
+}  // namespace
+
+long double QuadraticPlusHarmonic::value(const Instant& t) const {
+  const long double s = elapsed(origin, t);
+  if (!(s >= kRecentreFrom)) return value_at(s, t.phase);
+  return recentred(*this, t).first + static_cast<long double>(A * std::sin(t.phase) + B * std::cos(t.phase));
+}
+long double QuadraticPlusHarmonic::slope(const Instant& t) const {
+  const long double s = elapsed(origin, t);
+  if (!(s >= kRecentreFrom)) return slope_at(s, t.phase);
+  return recentred(*this, t).second + static_cast<long double>(A * std::cos(t.phase) - B * std::sin(t.phase));
+}
 
 namespace {
 
@@ -60,6 +96,154 @@ bool quadratic_roots(long double alpha, long double beta, long double k, long do
   r2 = k / qq;
   if (r1 > r2) std::swap(r1, r2);
   return true;
+}
+
+/// What a start at rest (f(origin) = 0 exactly) leads to near the origin.
+struct RestStart {
+  enum Kind { Root, NoRoot, Resume } kind;  ///< a root found; no root within the limit; scan on from kRestOffset
+  UpCrossing root;                          ///< (Root) the root, possibly the origin itself
+  long double left_value;                   ///< (Resume) f at kRestOffset, or -1 for "negative"
+};
+
+/// Distance from the origin at which the scan of a start at rest resumes (where it always started).
+constexpr long double kRestOffset = 1e-7L;
+
+/// The start-at-rest analysis of first_upcrossing (see QuadraticPlusHarmonic::starts_at_rest), out of
+/// line: it runs once per search, and keeps the piece loop small.
+[[gnu::noinline]] RestStart rest_start(const QuadraticPlusHarmonic& f, long double R, long double limit) {
+  // f(origin) = 0 exactly, and near the origin f = c1 u + c2 u^2/2 + c3 u^3/6 + ... lies below the
+  // rounding noise (~1e-16 R) of a direct evaluation. Taylor coefficients at the origin, with
+  // P = A sin(phi) + B cos(phi), Q = A cos(phi) - B sin(phi) in long double:
+  // c1 = beta + Q (exactly 0 for a flight from rest), c2 = 2 alpha - P (F at the origin for a
+  // flight), c3 = -Q.
+  const double phi = f.origin.phase;
+  const long double tiny1 = 64 * 2.2e-16L * (R + 2 * std::fabs(f.alpha) + std::fabs(f.beta));
+  const long double tiny2 = 64 * 1.1e-19L * (R + 2 * std::fabs(f.alpha));
+  long double P = 0, Q = 0, c1 = 0, c2 = 0, c3 = 0;
+  auto taylor = [&](long double sn, long double cs) {
+    P = f.A * sn + f.B * cs;
+    Q = f.A * cs - f.B * sn;
+    c1 = (f.beta + f.beta_tail) + Q;
+    if (std::fabs(c1) <= tiny1) c1 = 0;  // e.g. a progression from rest at the rounded t0
+    c2 = f.origin_at_inflection ? 0.0L : 2 * f.alpha - P;
+    if (std::fabs(c2) <= tiny2) c2 = 0;
+    c3 = -Q;
+  };
+  // Double trigonometry resolves c2 unless it is small (the origin near an inflection, e.g. a
+  // flight from near t2 or t3); then long double, whose error 1e-19 R fixes the sign of c2 for
+  // every double phase in [t2, t3) (there |F| >= a cos(t3) ulp/2).
+  double sd, cd;
+  ::sincos(phi, &sd, &cd);  // (glibc; std::sin and std::cos here would be two calls)
+  {
+    // Fast path, in double, for the common Case A below (f'' < 0 well beyond rounding on the
+    // whole rest region, f' not rising): the decision is the same as in long double.
+    const double Rd = static_cast<double>(R), al = static_cast<double>(f.alpha);
+    const double Pd = f.A * sd + f.B * cd, Qd = f.A * cd - f.B * sd;
+    const double c1d = static_cast<double>(f.beta + f.beta_tail) + Qd, c2d = 2 * al - Pd;
+    const double scale = Rd + 2 * al;
+    if (!f.origin_at_inflection && c1d <= static_cast<double>(tiny1) &&
+        -c2d > std::fabs(Qd) * 1e-3 + 0.5e-6 * Rd + 1e-12 * scale && limit >= 1e-3L)
+      return {RestStart::Resume, {}, -1.0L};
+  }
+  taylor(sd, cd);
+  if (std::fabs(c2) < 1e-9L * (R + 2 * std::fabs(f.alpha)))
+    taylor(std::sin(static_cast<long double>(phi)), std::cos(static_cast<long double>(phi)));
+  if (c1 > 0 || (c1 == 0 && (c2 > 0 || (c2 == 0 && c3 > 0)))) {
+    // f rises at once: the root is the origin itself (the motion never leaves the contact, e.g.
+    // a start at rest at or beyond t3, where F >= 0).
+    UpCrossing r;
+    r.t = f.origin;
+    r.s = 0;
+    r.slope = 0;
+    r.pieces = 0;
+    return {RestStart::Root, r, 0};
+  }
+  // f falls at once (c1 < 0, or c1 = 0 > c2, or c1 = c2 = 0 > c3). Search the rest region (0, U].
+  // |f''''| <= R, so |f''(u) - c2| <= |c3| u + R u^2/2 and |f'''(u) - c3| <= R u there.
+  // With no root in (0, U] the scan goes on from 1e-7 (where it always started: the common
+  // cases keep bit-identical results), f being known negative there.
+  constexpr long double kRestRegion = 1e-3L;
+  const long double U = std::min(kRestRegion, limit);
+  if (c2 < 0 && -c2 > std::fabs(c3) * U + 0.5L * R * U * U) {
+    // Case A (by far the most common): f'' < 0 on [0, U], so f' < c1 <= 0 and f < 0 on (0, U];
+    // the first piece of the scan is concave and falling, and is skipped whatever f is there.
+    if (limit < kRestOffset) return {RestStart::NoRoot, {}, 0};
+    return {RestStart::Resume, {}, -1.0L};
+  } else {
+    // Cases B, C: the cancellation-free form, accurate to a few ulp relative to its terms.
+    auto half_minus_h1 = [](long double u) {  // 1/2 - (1 - cos u)/u^2
+      const long double u2 = u * u;
+      return u2 * (1.0L / 24 - u2 * (1.0L / 720 - u2 / 40320));
+    };
+    auto h2 = [](long double u) {  // (u - sin u)/u^3
+      const long double u2 = u * u;
+      return 1.0L / 6 - u2 * (1.0L / 120 - u2 * (1.0L / 5040 - u2 / 362880));
+    };
+    auto m = [&](long double u) { return 0.5L * c2 + P * half_minus_h1(u) - Q * u * h2(u); };  // (f - c1 u)/u^2
+    auto fr = [&](long double u) { return c1 * u + u * u * m(u); };
+    auto dr = [&](long double u) { return c1 + c2 * u + P * u * u * u * h2(u) - Q * u * u * (0.5L - half_minus_h1(u)); };
+    auto cr = [&](long double u) { return c2 + P * u * u * (0.5L - half_minus_h1(u)) - Q * (u - u * u * u * h2(u)); };
+    // g keeps the sign of f on (0, U] and stays away from 0 near u = 0: g = f/u^2 when c1 = 0
+    // (g(0) = c2/2 < 0), else g = f/u (g(0) = c1 < 0).
+    auto g = [&](long double u) { return c1 == 0 ? m(u) : c1 + u * m(u); };
+    auto root_at = [&](long double u) {
+      UpCrossing r;
+      r.t = advance(f.origin, u);
+      r.s = elapsed(f.origin, r.t);
+      r.slope = static_cast<double>(std::max(dr(r.s), 0.0L));
+      r.pieces = 1;
+      return r;
+    };
+    // The single sign change of g on (0, hi] (g(hi) >= 0), by Illinois regula falsi to relative
+    // long-double precision; returns the end where g >= 0. Bounded: 300 iterations.
+    auto solve_sign_change = [&](long double hi) {
+      long double lo = 0, glo = c1 == 0 ? 0.5L * c2 : c1, ghi = g(hi);
+      int side = 0;
+      for (int it = 0; it < 300 && hi - lo > 4 * 1.1e-19L * hi; ++it) {
+        long double x = hi - ghi * (hi - lo) / (ghi - glo);
+        if (!(x > lo && x < hi)) x = 0.5L * (lo + hi);
+        const long double gx = g(x);
+        if (gx < 0) {
+          lo = x, glo = gx;
+          if (side == -1) ghi *= 0.5L;
+          side = -1;
+        } else {
+          hi = x, ghi = gx;
+          if (side == 1) glo *= 0.5L;
+          side = 1;
+        }
+      }
+      return hi;
+    };
+    // Bisection for the sign change of a function h that goes from > 0 to <= 0 on [lo, hi].
+    auto last_positive = [](auto&& h, long double lo, long double hi) {
+      for (int it = 0; it < 200 && hi - lo > 4 * 1.1e-19L * hi; ++it) {
+        const long double x = 0.5L * (lo + hi);
+        (h(x) > 0 ? lo : hi) = x;
+      }
+      return lo;
+    };
+    if (std::fabs(c3) > R * U) {  // f''' keeps the sign of c3 on [0, U]: f'' is monotone
+      if (c3 > 0) {
+        // Case B: f'' increasing, f' convex with f'(0) = c1 <= 0: f falls, then may rise once.
+        // (A flight from rest just below t3: c2 = F(theta) < 0 tiny, root near 3 (t3 - theta).)
+        if (g(U) >= 0) return {RestStart::Root, root_at(solve_sign_change(U)), 0};
+      } else if (c2 > 0) {
+        // Case C: f'' decreasing from c2 > 0 (so c1 < 0): f' rises while f'' > 0, then falls;
+        // f increases between the up- and down-crossings of f', and is largest at the latter.
+        const long double ui = cr(U) < 0 ? last_positive(cr, 0, U) : U;
+        if (dr(ui) > 0) {
+          const long double ub = dr(U) < 0 ? last_positive(dr, ui, U) : U;
+          if (g(ub) >= 0) return {RestStart::Root, root_at(solve_sign_change(ub)), 0};
+        }
+      }
+      // Otherwise f'' < 0 on (0, U] (c3 < 0, c2 <= 0) and f < 0 there.
+    }
+    // (Neither bound applies only when f'' and f''' nearly vanish together at the origin,
+    // 2 alpha = +-R to about 1e-6: b/a within 5e-7 of 1/2. f < 0 on (0, U] is then assumed.)
+    if (limit < kRestOffset) return {RestStart::NoRoot, {}, 0};
+    return {RestStart::Resume, {}, std::min(fr(elapsed(f.origin, advance(f.origin, kRestOffset))), -0.0L)};
+  }
 }
 
 }  // namespace
@@ -124,36 +308,28 @@ std::optional<UpCrossing> first_upcrossing(const QuadraticPlusHarmonic& f, const
 
   Instant cursor = f.origin;
   long double s_cursor = 0;
-  bool left_known_negative = false;
+  // f at the cursor when it is known better than a direct evaluation there would give it (after
+  // the rest region below); -1 stands for "known negative, value not needed" (Case A).
+  std::optional<long double> left_value;
   long pieces = 0;
+  // Re-centred polynomial carried from piece to piece (see the piece loop).
+  bool rc_valid = false;
+  Instant rc_at;
+  long double rc_P0 = 0, rc_P1 = 0;
+  int rc_steps = 0;
   if (f.starts_at_rest) {
-    // f(origin) = 0 and the slope is O(u) or smaller: evaluations near the origin are below
-    // rounding noise. The direction is decided by the first non-negligible Taylor coefficient.
-    const double phi = f.origin.phase;
-    const long double tiny = 64 * 2.2e-16L * (R + 2 * std::fabs(f.alpha) + std::fabs(f.beta) + 1);
-    const long double c1 = f.slope_at(0, phi), c2 = f.curvature_at(phi);
-    const long double c3 = static_cast<long double>(-f.A * std::cos(phi) + f.B * std::sin(phi));
-    const long double dir = std::fabs(c1) > tiny ? c1 : (std::fabs(c2) > tiny ? c2 : c3);
-    if (dir > 0) {  // f rises at once: the root is the origin itself (e.g. contact at rest at t3)
-      UpCrossing r;
-      r.t = f.origin;
-      r.s = 0;
-      r.slope = 0;
-      r.pieces = 0;
-      return r;
-    }
-    // f < 0 on (0, kRestOffset]: the Taylor terms dominate there by orders of magnitude.
-    constexpr long double kRestOffset = 1e-7L;
-    if (limit < kRestOffset) return std::nullopt;
+    const RestStart rs = rest_start(f, R, limit);
+    if (rs.kind == RestStart::Root) return rs.root;
+    if (rs.kind == RestStart::NoRoot) return std::nullopt;
     cursor = advance(f.origin, kRestOffset);
     s_cursor = elapsed(f.origin, cursor);
-    left_known_negative = true;
+    left_value = rs.left_value;
   }
   while (true) {
     if (we > 0 && s_cursor >= ws && s_cursor < we) {
-      cursor = advance(f.origin, we);
+      cursor = advance(f.origin, std::min(we, limit));  // (a window may reach far beyond a horizon)
       s_cursor = elapsed(f.origin, cursor);
-      left_known_negative = false;
+      left_value.reset();
     }
     if (s_cursor >= limit) break;
     if (++pieces > limits.max_pieces)
@@ -172,18 +348,40 @@ std::optional<UpCrossing> first_upcrossing(const QuadraticPlusHarmonic& f, const
     const double L = static_cast<double>(elapsed(cursor, end));
     const double phi0 = cursor.phase;
     const long double s0 = s_cursor;
-    auto val = [&](double u) -> long double { return f.value_at(s0 + u, phi0 + u); };
-    auto der = [&](double u) -> long double { return f.slope_at(s0 + u, phi0 + u); };
+    // The polynomial part on this piece, (alpha s + c1) s + c0 with s = base + u: directly
+    // (base = s0, c1 = beta, c0 = gamma), or re-centred at s0 far from the origin (base = 0,
+    // c1 = P1, c0 = P0; see roots.hpp). One formula, no branch in the evaluations.
+    long double base = s0, c1 = f.beta + f.beta_tail, c0 = f.gamma;
+    if (s0 >= kRecentreFrom) {
+      base = 0;
+      // Exactly (double-double) at the first far piece and every kRecentreEvery pieces; in
+      // between carried over from the previous piece in long double, P0 += (P1 + alpha L) L,
+      // P1 += 2 alpha L (each step adds ~1e-19 a: the pieces there have P0, P1 = O(a)).
+      if (rc_valid && rc_at == cursor && rc_steps < kRecentreEvery) {
+        c0 = rc_P0;
+        c1 = rc_P1;
+        ++rc_steps;
+      } else {
+        std::tie(c0, c1) = recentred(f, cursor);
+        rc_steps = 0;
+      }
+    }
+    auto poly = [&](double u) -> long double {
+      const long double s = base + u;
+      return (f.alpha * s + c1) * s + c0;
+    };
+    auto dpoly = [&](double u) -> long double { return 2 * f.alpha * (base + u) + c1; };
+    auto val = [&](double u) -> long double { return poly(u) + static_cast<long double>(f.A * std::sin(phi0 + u) + f.B * std::cos(phi0 + u)); };
+    auto der = [&](double u) -> long double { return dpoly(u) + static_cast<long double>(f.A * std::cos(phi0 + u) - f.B * std::sin(phi0 + u)); };
     // Value and slope, or slope and curvature, from one sine-cosine evaluation.
     auto val_der = [&](double u) {
       const double sn = std::sin(phi0 + u), cs = std::cos(phi0 + u);
-      const long double s = s0 + u;
-      return std::pair<long double, long double>{(f.alpha * s + f.beta) * s + f.gamma + static_cast<long double>(f.A * sn + f.B * cs),
-                                                 2 * f.alpha * s + f.beta + static_cast<long double>(f.A * cs - f.B * sn)};
+      return std::pair<long double, long double>{poly(u) + static_cast<long double>(f.A * sn + f.B * cs),
+                                                 dpoly(u) + static_cast<long double>(f.A * cs - f.B * sn)};
     };
     auto der_curv = [&](double u) {
       const double sn = std::sin(phi0 + u), cs = std::cos(phi0 + u);
-      return std::pair<long double, long double>{2 * f.alpha * (s0 + u) + f.beta + static_cast<long double>(f.A * cs - f.B * sn),
+      return std::pair<long double, long double>{dpoly(u) + static_cast<long double>(f.A * cs - f.B * sn),
                                                  2 * f.alpha - static_cast<long double>(f.A * sn + f.B * cs)};
     };
 
@@ -199,7 +397,7 @@ std::optional<UpCrossing> first_upcrossing(const QuadraticPlusHarmonic& f, const
       // Value and slope at both ends (one sine-cosine evaluation each).
       const auto [f_end, d1] = val_der(L);
       const auto [f_start_computed, d0] = val_der(0);
-      const long double f_start = left_known_negative ? -1.0L : f_start_computed;
+      const long double f_start = left_value ? *left_value : f_start_computed;
       // On a piece f' is monotone, so f is increasing, decreasing, convex with one minimum or
       // concave with one maximum. Two shortcuts avoid the split point m below:
       // (1) f(0) < 0 <= f(L): in every one of these shapes there is exactly one up-crossing in
@@ -249,9 +447,16 @@ std::optional<UpCrossing> first_upcrossing(const QuadraticPlusHarmonic& f, const
         }
       }
     }
+    if (base == 0) {  // re-centred: carry P0, P1 over to the next piece
+      const long double Lp = elapsed(cursor, end);
+      rc_P0 = c0 + (c1 + f.alpha * Lp) * Lp;
+      rc_P1 = c1 + 2 * f.alpha * Lp;
+      rc_at = end;
+      rc_valid = true;
+    }
     cursor = end;
     s_cursor = s_end;
-    left_known_negative = false;
+    left_value.reset();
   }
   if (limit_is_bound && limit < limits.horizon)
     throw std::logic_error("first_upcrossing: no root found before the guaranteed bound (a bug)");

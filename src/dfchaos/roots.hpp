@@ -32,30 +32,51 @@ namespace dfchaos {
 
 /// \f$f(t) = \alpha s^2 + \beta s + \gamma + A\sin t + B\cos t\f$ with \f$s = t - \mathrm{origin}\f$,
 /// \f$\alpha \ge 0\f$. The polynomial part is kept in long double: for small \f$b/a\f$ its terms
-/// reach \f$10^6 a\f$ and cancel to \f$O(a)\f$ at the root.
+/// reach \f$10^7 a\f$ and cancel to \f$O(a)\f$ at the root.
+///
+/// **Evaluation far from the origin.** At \f$s \sim 10^7\f$ a long double \f$s\f$ is resolved only to
+/// \f$10^{-12}\f$, and \f$\alpha s^2 + \beta s\f$ loses \f$10^{-12} a\f$ to rounding. The root search
+/// therefore re-centres the polynomial at the start \f$s_0\f$ of every piece:
+/// \f$\alpha(s_0+u)^2 + \beta(s_0+u) + \gamma = P_0 + P_1 u + \alpha u^2\f$ with
+/// \f$P_1 = 2\alpha s_0 + \beta\f$, \f$P_0 = s_0(\alpha s_0 + \beta) + \gamma\f$, where \f$s_0\f$ (exactly
+/// \f$2\pi\f$ times whole turns plus a difference of two phases) and \f$P_0, P_1\f$ are formed in
+/// double-double arithmetic (error-free TwoSum/TwoProd, \f$2\pi\f$ to 107 bits). Near a root
+/// \f$P_0, P_1 = O(a)\f$, so rounding them to long double costs only \f$10^{-19}a\f$. What remains is
+/// the error of \f$\beta\f$ itself, multiplied by \f$s_0\f$: callers form it in long double, and may
+/// add a further correction in beta_tail.
 struct QuadraticPlusHarmonic {
   Instant origin;              ///< \f$s = 0\f$
-  long double alpha = 0;       ///< \f$\alpha\f$, coefficient of \f$s^2\f$
+  long double alpha = 0;       ///< \f$\alpha\f$, coefficient of \f$s^2\f$ (a double value)
   long double beta = 0;        ///< \f$\beta\f$, coefficient of \f$s\f$
+  long double beta_tail = 0;   ///< optional low-order part: the coefficient of \f$s\f$ is beta + beta_tail
   long double gamma = 0;       ///< \f$\gamma\f$, constant term
   double A = 0;                ///< \f$A\f$, coefficient of \f$\sin t\f$
   double B = 0;                ///< \f$B\f$, coefficient of \f$\cos t\f$
   /// True when \f$f(\mathrm{origin}) = 0\f$ holds exactly by construction (a motion starting at rest
-  /// at the contact). Near such an origin \f$f\f$ is \f$O(u^2)\f$ or \f$O(u^3)\f$, below rounding
-  /// noise; the search then takes the direction of departure from the first non-negligible Taylor
-  /// coefficient \f$f', f'', f'''\f$ at the origin: upward means a root at the origin itself,
-  /// downward means \f$f < 0\f$ on \f$(0, 10^{-7}]\f$ and the scan starts there.
+  /// at the contact). Near such an origin \f$f = c_1u + c_2u^2/2 + c_3u^3/6 + \dots\f$ lies far below
+  /// the rounding noise of a direct evaluation. The search then decides the direction of departure
+  /// from the Taylor coefficients at the origin (\f$c_1\f$ below \f$64\epsilon\f$ of its terms counts
+  /// as 0; \f$c_2\f$ from long-double trigonometry), and searches \f$(0, 10^{-3}]\f$ with the
+  /// cancellation-free form \f$f(u) = c_1u + u^2\bigl[c_2/2 + P(\tfrac12 - h_1(u)) - Q\,u\,h_2(u)\bigr]\f$,
+  /// \f$P = A\sin\varphi + B\cos\varphi\f$, \f$Q = A\cos\varphi - B\sin\varphi\f$ at the origin's phase
+  /// \f$\varphi\f$, \f$h_1 = (1-\cos u)/u^2\f$, \f$h_2 = (u-\sin u)/u^3\f$ (short series). A root there,
+  /// such as the return after \f$3(t_3-\theta)\f$ of a flight from rest just below \f$t_3\f$, is found to
+  /// full relative precision, with its tiny positive slope.
   bool starts_at_rest = false;
+  /// With starts_at_rest: \f$f''(\mathrm{origin}) = 0\f$ by definition (a flight from rest at the phase
+  /// \f$t_2\f$, where \f$F = 0\f$, although the rounded \f$t_2\f$ may give \f$F\f$ either sign in the
+  /// last bit). The direction of departure is then that of \f$f'''\f$.
+  bool origin_at_inflection = false;
 
-  /// \f$f\f$ at elapsed time \f$s\f$ whose phase is \f$\varphi\f$.
+  /// \f$f\f$ at elapsed time \f$s\f$ whose phase is \f$\varphi\f$ (direct long-double evaluation).
   long double value_at(long double s, double phi) const;
-  /// \f$f' = 2\alpha s + \beta + A\cos\varphi - B\sin\varphi\f$.
+  /// \f$f' = 2\alpha s + \beta + A\cos\varphi - B\sin\varphi\f$ (direct long-double evaluation).
   long double slope_at(long double s, double phi) const;
   /// \f$f'' = 2\alpha - A\sin\varphi - B\cos\varphi\f$.
   long double curvature_at(double phi) const;
-  /// \f$f\f$ at an instant.
+  /// \f$f\f$ at an instant, with the polynomial re-centred there in double-double (see above).
   long double value(const Instant& t) const;
-  /// \f$f'\f$ at an instant.
+  /// \f$f'\f$ at an instant, re-centred as value().
   long double slope(const Instant& t) const;
   /// The phases in \f$[0, 2\pi)\f$ where \f$f''\f$ changes sign (zero, one or two), ascending.
   std::vector<double> inflection_phases() const;
@@ -77,7 +98,9 @@ struct SearchLimits {
 };
 
 /// The first root \f$t > \mathrm{origin}\f$ of \f$f\f$ reached from below, assuming
-/// \f$f < 0\f$ just after the origin (or starts_at_rest with \f$f'' < 0\f$ there).
+/// \f$f < 0\f$ just after the origin (or starts_at_rest). With starts_at_rest and \f$f\f$ rising at
+/// once (\f$c_1 > 0\f$, or \f$c_1 = 0 < c_2\f$, or \f$c_1 = c_2 = 0 < c_3\f$) the root is the origin
+/// itself (s = 0, slope 0): the motion never leaves the contact.
 /// @return nothing when \f$f < 0\f$ on the whole horizon.
 /// @throws GaveUp when max_pieces is reached, or when neither the horizon nor a root bound
 ///         limits the search.

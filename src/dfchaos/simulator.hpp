@@ -35,6 +35,11 @@ struct Sample {
   Regime regime = Regime::Free;  ///< regime at t
 };
 
+/// Largest \f$|t_0|\f$, \f$|t_{end}|\f$ accepted by simulate(): a double time near \f$10^{12}\f$ is
+/// resolved to \f$1.2\cdot 10^{-4}\f$ (the printed event times and the sample grid), and the phases
+/// (exact there) are what the dynamics depends on. Larger times are refused, not wrapped.
+inline constexpr double kMaxSimulationTime = 1e12;
+
 /// Bounds and sampling of a simulation.
 struct SimulationOptions {
   double sample_dt = 0;          ///< spacing of samples; 0 for none
@@ -52,7 +57,8 @@ struct Simulation {
 
 /// Simulates from \f$x(t_0) = x_0\f$, \f$y(t_0) = y_0\f$, \f$\dot x(t_0) = v_0\f$ until \f$t_{end}\f$.
 /// @throws InvalidParameter (`x0`, `y0`, `v0`, `t0`, `t-end`, `sample`) for non-finite values,
-///         \f$x_0 > y_0\f$, \f$t_{end} < t_0\f$, a negative sample step or too many samples.
+///         \f$|t_0|\f$ or \f$|t_{end}| >\f$ kMaxSimulationTime, \f$x_0 > y_0\f$, \f$t_{end} < t_0\f$,
+///         a negative sample step or too many samples.
 /// @throws GaveUp if more than max_events events occur.
 Simulation simulate(const Parameters& p, double x0, double y0, double v0, double t0, double t_end,
                     const SimulationOptions& options = {});
