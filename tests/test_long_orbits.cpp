@@ -22,7 +22,8 @@ using namespace dfchaos;
 constexpr long long kSteps = 10'000'000;
 constexpr long long kFullStepEvery = 1000;      // every k-th step also through return_map_step
 constexpr long long kReferenceEvery = 100'000;  // every k-th step also by numerical integration
-constexpr double kOdeAgreement = 1e-7;          // |T - T_ode| (event tolerance of the integration 1e-12)
+constexpr double kOdeAgreement = 1e-7;          // |T - T_ode| per 100 time units of the step (the integration's
+                                                // error grows with the flight: 1e4 time units at b/a = 1e-4)
 
 struct Set {
   double b, q;
@@ -47,9 +48,9 @@ TEST_P(LongOrbit, TenMillionStepsStayFiniteAndInTheArc) {
       const MapStep s = return_map_step(p, theta);
       const OdeMapStep o = ode_return_map_step(p, theta);
       ++reference_checks;
-      worst_reference = std::max(worst_reference, circle_distance(s.T, o.T));
+      worst_reference = std::max(worst_reference, circle_distance(s.T, o.T) / std::max(1.0, s.elapsed / 100));
       EXPECT_EQ(s.chain, o.chain) << "step " << n << " theta=" << theta;
-      EXPECT_NEAR(s.penetration, o.penetration, kOdeAgreement) << "step " << n;
+      EXPECT_NEAR(s.penetration, o.penetration, kOdeAgreement * std::max(1.0, s.elapsed / 100)) << "step " << n;
       next = s.T;
     } else if (n % kFullStepEvery == 0) {
       const MapStep s = return_map_step(p, theta);

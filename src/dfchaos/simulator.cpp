@@ -42,9 +42,14 @@ Simulation simulate(const Parameters& p, double x0, double y0, double v0, double
   finite("v0", v0);
   finite("t0", t0);
   finite("t-end", t_end);
+  // Positions and velocities on the scale of the parameters' range: beyond it x(t) can overflow.
+  for (const auto& [name, v] : {std::pair{"x0", x0}, std::pair{"y0", y0}, std::pair{"v0", v0}})
+    if (!(std::fabs(v) <= kMaxParameter))
+      throw InvalidParameter(name, std::string("|") + name + "| <= " + format_double(kMaxParameter), v);
   for (const auto& [name, v] : {std::pair{"t0", t0}, std::pair{"t-end", t_end}})
     if (!(std::fabs(v) <= kMaxSimulationTime))
-      throw InvalidParameter(name, std::string("|") + name + "| <= 1e12 (beyond it a double time no longer resolves 1e-4)", v);
+      throw InvalidParameter(name, std::string("|") + name + "| <= " + format_double(kMaxSimulationTime) +
+                                         " (beyond it a double time no longer resolves 1e-4)", v);
   if (x0 > y0) throw InvalidParameter("x0", "x0 <= y0 (the mass cannot pass the delimiter)", x0);
   if (t_end < t0) throw InvalidParameter("t-end", "t-end >= t0 = " + format_double(t0), t_end);
   if (!std::isfinite(options.sample_dt) || options.sample_dt < 0)
