@@ -26,7 +26,7 @@ const Experiment experiment{
     .body = [](Run& run) {
       const int nq = run.count_int("nq"), nb = run.count_int("nb");
       const double ba_min = run.real("ba-min");
-      const double s0 = std::sin(vartheta0());
+      const double s0 = sin_vartheta0();
       const Axis q_axis = Axis::centres(0, 1, nq), b_axis = Axis::log(ba_min, 0.49, nb);
 
       Table curve({"q_over_a", "b0_lemma1", "b0_proof_bound", "holds_at_smallest_b", "outcome_at_smallest_b"});

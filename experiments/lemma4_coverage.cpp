@@ -37,7 +37,7 @@ const Experiment experiment{
     .body = [](Run& run) {
       const int nq = run.count_int("nq"), nb = run.count_int("nb");
       const double ba_min = run.real("ba-min");
-      const double s0 = std::sin(vartheta0()), ba_max = 0.045;
+      const double s0 = sin_vartheta0(), ba_max = 0.045;
       CoveringSearch search;
       search.scan = run.count_int("scan");
       search.uniform = run.count_int("uniform");

@@ -67,7 +67,7 @@ const Experiment experiment{
       // The line (b/a from 1e-4 to 0.3 at q_fixed), then the plane (q/a slowest, over the cell
       // centres of [sin(vartheta0), 1]; b/a from 1e-4 to 0.1).
       const Axis line_b = Axis::log_ratio(1e-4, 3000.0, nb);
-      const Axis plane_q = Axis::centres(std::sin(vartheta0()), 1.0, plane_n), plane_b = Axis::log_ratio(1e-4, 1000.0, plane_n);
+      const Axis plane_q = Axis::centres(sin_vartheta0(), 1.0, plane_n), plane_b = Axis::log_ratio(1e-4, 1000.0, plane_n);
       std::vector<std::pair<double, double>> pts;  // (b/a, q/a)
       for (int j = 0; j < nb; ++j) pts.push_back({line_b[j], q_fixed});
       for (int i = 0; i < plane_n; ++i)

@@ -32,7 +32,7 @@ const Experiment experiment{
     .paper = {"Section 10", "Lemma 4", "Theorem 1"},
     .tests = {"test_perturbed", "test_beyond", "test_covering"},
     .options = {real("b", 0.01, "b/a (a = 1); the perturbed map is integrated, at a cost growing like a/b").range(1e-3, 0.2).recorded_as("b_over_a"),
-                real("q", 0.95, "q/a").range(0.5, 1).recorded_as("q_over_a"),
+                real("q", 0.95, "q/a; assumption (2) asks sin(vartheta0) < q/a < 1").range(1e-3, 1).recorded_as("q_over_a"),
                 count("global", 600, "grid points of [t2, 3pi/2) for the search of the perturbed covering anywhere").range(20, 100000).fast_value(150),
                 count("n", 400, "grid points per widened segment").range(20, 100000).fast_value(60),
                 count("n-check", 200, "phases of the eps = 0 validation").range(2, 100000).fast_value(20)},
@@ -45,6 +45,7 @@ const Experiment experiment{
       const double b = run.real("b"), q = run.real("q");
       const int n_check = run.count_int("n-check");
       const Parameters p(1.0, b, q);
+      p.require_eq2();
       p.require_return_map();
       run.out.parameter("perturbation", "G = eps (cos(2t+1) + v/(1+v^2))");
 

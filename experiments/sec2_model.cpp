@@ -36,7 +36,7 @@ const Experiment experiment{
 
       // Eq. (2): over the region a sin(vartheta0) < q < a, 0 < b < min(a/2, a sin(vartheta0)/2), the
       // phases t0 < t1 and t2 < t3 exist and c = b - q/2 < 0, so every progression ends.
-      const double s0 = std::sin(vartheta0());
+      const double s0 = sin_vartheta0();
       long long grid_points = 0, violations = 0;
       const Axis q_axis = Axis::centres(s0, 1.0, ng), b_axis = Axis::log(1e-8, s0 / 2 * (1 - 1e-9), ng);
       for (int i = 0; i < ng; ++i)

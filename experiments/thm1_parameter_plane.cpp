@@ -30,7 +30,7 @@ const Experiment experiment{
     .outputs = {data("", "class: 0 neither, 1 covering (Theorem 1), 2 t2 superstable (Theorem 2), 3 both, -1 error")},
     .body = [](Run& run) {
       const int nq = run.count_int("nq"), nb = run.count_int("nb");
-      const double s0 = std::sin(vartheta0());
+      const double s0 = sin_vartheta0();
       const Axis q_axis = Axis::centres(s0, 1, nq), b_axis = Axis::log_ratio(1e-4, 1000.0, nb);
       const auto cells = sweep<PlaneCell>(
           q_axis, b_axis,

@@ -34,7 +34,7 @@ const Experiment experiment{
       long long under_eq2 = 0, remark23_windows = 0, outside_hypotheses = 0, all_21 = 0;
       long long nondegenerate = 0, degenerate = 0;
       double smallest_eps = INFINITY;
-      const double s0 = std::sin(vartheta0());
+      const double s0 = sin_vartheta0();
       for (double qa : run.reals("q")) {
         const auto w = superstable_windows(1.0, qa, b_lo, b_hi, samples);
         const auto w4 = superstable_windows(1.0, qa, b_lo, b_hi, 4 * samples);

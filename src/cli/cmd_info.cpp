@@ -27,7 +27,7 @@ Command add_info(CLI::App& app) {
             w.row({"t2", opt(p.t2())});
             w.row({"t3", opt(p.t3())});
             w.row({"vartheta0", num(vartheta0())});
-            w.row({"a*sin(vartheta0)", num(p.a() * std::sin(vartheta0()))});
+            w.row({"a*sin(vartheta0)", num(p.a() * sin_vartheta0())});
             w.row({"assumptions", p.assumptions().describe()});
             w.flush();
             return 0;

@@ -28,23 +28,24 @@ const char* regime_code(Regime r) {
   return "?";
 }
 
-FreeMotion::FreeMotion(const Parameters& p, const Instant& start_, double x_s, double v_s)
-    : a(p.a()), b(p.b()), start(start_), x_start(x_s), v_start(v_s), starts_at_t2(p.t2() && start_.phase == *p.t2()) {}
-
-double FreeMotion::position(const Instant& t) const {
+double HarmonicMotion::position(const Instant& t) const {
   const long double s = elapsed(start, t);
-  const long double poly = (b * s + (v_start + a * std::cos(start.phase))) * s + x_start + a * std::sin(start.phase);
+  const long double poly = (k * s + (v_start + a * std::cos(start.phase))) * s + x_start + a * std::sin(start.phase);
   return static_cast<double>(poly - a * std::sin(t.phase));
 }
 
-double FreeMotion::velocity(const Instant& t) const {
+double HarmonicMotion::velocity(const Instant& t) const {
   const long double s = elapsed(start, t);
-  return static_cast<double>(2 * b * s + v_start + a * std::cos(start.phase) - a * std::cos(t.phase));
+  return static_cast<double>(v_start + 2 * k * s - a * (std::cos(t.phase) - std::cos(start.phase)));
 }
+
+FreeMotion::FreeMotion(const Parameters& p, const Instant& start_, double x_s, double v_s)
+    : HarmonicMotion{p.a(), p.b(), start_, x_s, v_s}, starts_at_t2(p.t2() && start_.phase == *p.t2()) {}
 
 QuadraticPlusHarmonic FreeMotion::gap(double y) const {
   QuadraticPlusHarmonic f;
   f.origin = start;
+  const double b = k;
   f.alpha = b;
   double sn, cs;
   ::sincos(start.phase, &sn, &cs);  // (glibc: one call for both)
@@ -70,24 +71,13 @@ QuadraticPlusHarmonic FreeMotion::gap(double y) const {
 }
 
 ProgressionMotion::ProgressionMotion(const Parameters& p, const Instant& start_, double x_s, double v_s)
-    : a(p.a()), c(p.c()), start(start_), x_start(x_s), v_start(v_s) {}
-
-double ProgressionMotion::position(const Instant& t) const {
-  const long double s = elapsed(start, t);
-  const long double poly = (c * s + (v_start + a * std::cos(start.phase))) * s + x_start + a * std::sin(start.phase);
-  return static_cast<double>(poly - a * std::sin(t.phase));
-}
-
-double ProgressionMotion::velocity(const Instant& t) const {
-  const long double s = elapsed(start, t);
-  return static_cast<double>(v_start + 2 * c * s - a * (std::cos(t.phase) - std::cos(start.phase)));
-}
+    : HarmonicMotion{p.a(), p.c(), start_, x_s, v_s} {}
 
 QuadraticPlusHarmonic ProgressionMotion::minus_velocity() const {
   QuadraticPlusHarmonic f;
   f.origin = start;
   f.alpha = 0;
-  f.beta = -2.0L * c;
+  f.beta = -2.0L * k;
   f.gamma = -static_cast<long double>(v_start) - a * std::cos(start.phase);
   f.A = 0;
   f.B = a;

@@ -16,44 +16,41 @@ enum class Regime { Free, Progression, Stop };
 /// "f", "p" or "s", the paper's labels.
 const char* regime_code(Regime r);
 
-/// Free motion (Eq. 3): \f$\ddot x = a\sin t + 2b\f$, delimiter at rest at \f$y\f$. From
-/// \f$x(t_s) = x_s\f$, \f$\dot x(t_s) = v_s\f$, with \f$s = t - t_s\f$:
-/// \f$x(t) = -a\sin t + b s^2 + (v_s + a\cos t_s)s + x_s + a\sin t_s\f$.
-struct FreeMotion {
-  double a;        ///< forcing amplitude \\f$a\\f$
-  double b;        ///< \\f$b\\f$ (half the constant force)
-  Instant start;   ///< \\f$t_s\\f$
-  double x_start;  ///< \\f$x_s = x(t_s)\\f$
-  double v_start;  ///< \\f$v_s = \\dot x(t_s)\\f$
-  bool starts_at_t2;  ///< \\f$t_s\\f$ has the phase \\f$t_2\\f$ (where \\f$F = 0\\f$ by definition)
+/// The motion \f$\ddot x = a\sin t + 2k\f$ shared by free flight (Eq. 3, \f$k = b\f$) and progression
+/// (Eqs. 4, 6, \f$k = c = b - q/2\f$): from \f$x(t_s) = x_s\f$, \f$\dot x(t_s) = v_s\f$, with \f$s = t - t_s\f$,
+/// \f[ x(t) = -a\sin t + k s^2 + (v_s + a\cos t_s)s + x_s + a\sin t_s, \qquad
+///     \dot x(t) = v_s + 2ks - a(\cos t - \cos t_s). \f]
+/// (Eq. 7 is the velocity with \f$k = c\f$, \f$t_s = t_0\f$, \f$v_s = 0\f$.)
+struct HarmonicMotion {
+  double a;        ///< forcing amplitude \f$a\f$
+  double k;        ///< half the constant force of the regime: \f$b\f$ (free) or \f$c\f$ (progression)
+  Instant start;   ///< \f$t_s\f$
+  double x_start;  ///< \f$x_s = x(t_s)\f$
+  double v_start;  ///< \f$v_s = \dot x(t_s)\f$
 
-  /// The motion of this regime through the given state at \\f$t_s\\f$.
-  FreeMotion(const Parameters& p, const Instant& start, double x_start, double v_start);
-  /// \\f$x(t)\\f$ by the closed form above.
+  /// \f$x(t)\f$ by the closed form above.
   double position(const Instant& t) const;
-  /// \\f$\\dot x(t)\\f$ by the closed form above.
+  /// \f$\dot x(t)\f$ by the closed form above.
   double velocity(const Instant& t) const;
+};
+
+/// Free motion (Eq. 3): \f$\ddot x = a\sin t + 2b\f$, delimiter at rest at \f$y\f$ (HarmonicMotion with
+/// \f$k = b\f$).
+struct FreeMotion : HarmonicMotion {
+  bool starts_at_t2;  ///< \f$t_s\f$ has the phase \f$t_2\f$ (where \f$F = 0\f$ by definition)
+
+  /// The motion of this regime through the given state at \f$t_s\f$.
+  FreeMotion(const Parameters& p, const Instant& start, double x_start, double v_start);
   /// The gap \f$x(t) - y\f$ as a QuadraticPlusHarmonic: its first up-crossing is the next contact.
   /// Starts at rest when the mass starts at the delimiter with zero velocity (Eq. 10).
   QuadraticPlusHarmonic gap(double y) const;
 };
 
-/// Motion with progression (Eqs. 4, 6): \f$\ddot x = a\sin t + 2c\f$, \f$y = x\f$, \f$2c = 2b - q\f$.
-/// \f$x(t) = -a\sin t + c s^2 + (v_s + a\cos t_s)s + x_s + a\sin t_s\f$ and
-/// \f$\dot x(t) = v_s + 2cs - a(\cos t - \cos t_s)\f$ (Eq. 7 when \f$t_s = t_0\f$, \f$v_s = 0\f$).
-struct ProgressionMotion {
-  double a;        ///< forcing amplitude \\f$a\\f$
-  double c;        ///< \\f$c = b - q/2\\f$
-  Instant start;   ///< \\f$t_s\\f$
-  double x_start;  ///< \\f$x_s = x(t_s)\\f$
-  double v_start;  ///< \\f$v_s = \\dot x(t_s)\\f$
-
-  /// The motion of this regime through the given state at \\f$t_s\\f$.
+/// Motion with progression (Eqs. 4, 6): \f$\ddot x = a\sin t + 2c\f$, \f$y = x\f$, \f$2c = 2b - q\f$
+/// (HarmonicMotion with \f$k = c\f$).
+struct ProgressionMotion : HarmonicMotion {
+  /// The motion of this regime through the given state at \f$t_s\f$.
   ProgressionMotion(const Parameters& p, const Instant& start, double x_start, double v_start);
-  /// \\f$x(t)\\f$ by the closed form above.
-  double position(const Instant& t) const;
-  /// \\f$\\dot x(t)\\f$ by the closed form above.
-  double velocity(const Instant& t) const;
   /// \f$-\dot x(t)\f$ as a QuadraticPlusHarmonic: its first up-crossing is where progression stops.
   QuadraticPlusHarmonic minus_velocity() const;
 };

@@ -13,9 +13,14 @@
 namespace dfchaos {
 
 /// \f$\vartheta_0 \in (0, \pi/2]\f$, the unique solution of \f$\pi - \vartheta = \cot(\vartheta/2)\f$
-/// (Eq. 1), found with GSL's Brent bracketing solver to full double precision.
+/// (Eq. 1): bracketed by GSL's Brent solver, refined by Newton's method in long double, and rounded
+/// to the nearest double (the certified layer proves it correctly rounded).
 /// The threshold of assumption (2) is \f$q > a\sin\vartheta_0\f$.
 double vartheta0();
+
+/// \f$\sin\vartheta_0\f$, the threshold of assumption (2) for \f$q/a\f$, correctly rounded to double
+/// (computed from the long-double \f$\vartheta_0\f$; `std::sin(vartheta0())` can differ by an ulp).
+double sin_vartheta0();
 
 /// The left-hand side minus the right-hand side of Eq. (1): \f$\pi - \vartheta - \cot(\vartheta/2)\f$.
 /// It increases strictly on \f$(0, \pi/2]\f$ from \f$-\infty\f$ to \f$\pi/2 - 1 > 0\f$.
@@ -90,6 +95,10 @@ class Parameters {
   /// \f$q > 2b\f$ (so that every progression stops) and \f$b/a \ge\f$ kMinMapRatio (the accuracy
   /// floor, docs/accuracy.md).
   /// @throws InvalidParameter naming `b` or `q`.
+  /// Demands assumption (2) of the paper: \f$0 < b < a/2\f$ and \f$a\sin\vartheta_0 < q < a\f$.
+  /// @throws InvalidParameter naming `b` or `q`, whichever breaks it (b first).
+  void require_eq2() const;
+
   void require_return_map() const;
 
   /// "a=... b=... q=..." with 17 significant digits.
