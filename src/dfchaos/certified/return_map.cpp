@@ -1,0 +1,82 @@
+#include "dfchaos/certified/return_map.hpp"
+
+#include <cmath>
+
+namespace dfchaos::certified {
+
+const char* chain_name(Chain c) {
+  switch (c) {
+    case Chain::Free: return "free";
+    case Chain::Stop: return "stop";
+    case Chain::None: return "none";
+  }
+  return "none";
+}
+
+TProof certify_T(const Model& m, const StartSet& set, Budget& budget, const Lemma1Proof* lemma1) {
+  TProof r;
+  r.t1 = certify_T1(m, set, budget);
+  r.tests += r.t1.stats.tests;
+  if (!r.t1.verdict) {
+    r.verdict = r.t1.verdict;
+    return r;
+  }
+  r.theta2 = certify_theta2(m, set, r.t1, budget);
+  r.tests += r.theta2.stats.tests;
+  if (!r.theta2.verdict) {
+    r.verdict = r.theta2.verdict;
+    return r;
+  }
+  const Ball& lo = r.theta2.u_lo;
+  const Ball& hi = r.theta2.u_hi;
+  // Free: [t1 + 2 pi k, t3 + 2 pi k).
+  {
+    const long long k = static_cast<long long>(std::floor((lo.mid() - m.t1.mid()) / (2 * M_PI)));
+    const Ball shift = Ball(static_cast<double>(k)) * m.two_pi;
+    if (le(m.t1 + shift, lo) && lt(hi, m.t3 + shift)) {
+      r.chain = Chain::Free;
+      r.turn = k;
+      r.theta2_phase = r.theta2.enclosure - shift;
+      if (lt(hi - shift, m.t2)) {
+        r.T = m.t2;
+        r.constant_t2 = true;
+      } else {
+        r.T = max(r.theta2_phase, m.t2);
+      }
+      r.verdict = Verdict::ok();
+      return r;
+    }
+  }
+  // Stop: [t3 + 2 pi k, t2 + 2 pi (k + 1)).
+  {
+    const long long k = static_cast<long long>(std::floor((lo.mid() - m.t3.mid()) / (2 * M_PI)));
+    const Ball shift = Ball(static_cast<double>(k)) * m.two_pi;
+    if (le(m.t3 + shift, lo) && lt(hi, m.t2 + shift + m.two_pi)) {
+      r.chain = Chain::Stop;
+      r.turn = k;
+      r.theta2_phase = r.theta2.enclosure - shift;
+      // Lemma 1 is needed unless the whole enclosure lies in [t1, t2) of the next turn (scenario B).
+      if (!le(m.t1 + shift + m.two_pi, lo)) {
+        Lemma1Proof own;
+        if (!lemma1) {
+          own = certify_lemma1(m);
+          lemma1 = &own;
+        }
+        if (!lemma1->verdict) {
+          r.verdict = Verdict::fail("T: stop until t0 needs Lemma 1", lemma1->verdict.describe());
+          return r;
+        }
+        r.used_lemma1 = true;
+      }
+      r.T = m.t2;
+      r.constant_t2 = true;
+      r.verdict = Verdict::ok();
+      return r;
+    }
+  }
+  r.verdict = Verdict::fail("T: chain", "the phase of theta2, " + r.theta2.enclosure.str(12) +
+                                            ", is not inside one arc [t1, t3) or [t3, t2 + 2 pi) (T may jump at t3)");
+  return r;
+}
+
+}  // namespace dfchaos::certified
