@@ -17,6 +17,13 @@ StartSet StartSet::interval(double lo, double hi) {
   return s;
 }
 
+StartSet StartSet::balls(const Ball& lo, const Ball& hi) {
+  StartSet s;
+  s.lo = lo.mid_ball();
+  s.hi = hi.mid_ball();
+  return s;
+}
+
 StartSet StartSet::from_t2(const Model& m, double hi) {
   if (!m.box().is_point()) throw std::invalid_argument("StartSet::from_t2: a point box is required");
   StartSet s;

@@ -51,6 +51,8 @@ struct StartSet {
   static StartSet interval(double lo, double hi);
   /// The single phase \f$\theta\f$.
   static StartSet point(double theta) { return interval(theta, theta); }
+  /// \f$[lo, hi]\f$ with exact ball ends (their midpoints are used; radii must be 0).
+  static StartSet balls(const Ball& lo, const Ball& hi);
   /// \f$[t_2, hi]\f$ at a point box (the neighbourhood of Theorem 2).
   static StartSet from_t2(const Model& m, double hi);
   /// \f$\{t_2(b)\}\f$, one start per b of the box (Section 8 as a function of b).

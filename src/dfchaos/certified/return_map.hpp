@@ -53,4 +53,11 @@ struct TProof {
 /// Lemma 1 over the same box, used when the Stop case needs it (else it is proved here on demand).
 TProof certify_T(const Model& m, const StartSet& set, Budget& budget, const Lemma1Proof* lemma1 = nullptr);
 
+/// Enclosure of \f$T'\f$ over a set where `t` proved the Free chain with the phase of \f$\theta_2\f$
+/// strictly inside \f$(t_2, t_3)\f$ (scenario A, T smooth), by the implicit function theorem on
+/// Eqs. (11) and (17): \f$T_1' = F(\theta)(\theta_1 - \theta)/\partial_t G_1\f$,
+/// \f$T' = (F(\theta) - q T_1')/(F(\theta_2) - q)\f$. Returns false (and leaves `dT`) if the set is not
+/// of that kind.
+bool derivative_T(const Model& m, const StartSet& set, const TProof& t, Ball& dT);
+
 }  // namespace dfchaos::certified
