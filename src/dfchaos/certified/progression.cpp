@@ -127,6 +127,58 @@ Theta2Proof certify_theta2(const Model& m, const StartSet& set, const T1Proof& t
   return r;
 }
 
+StopArcProof certify_stop_arc(const Model& m, const StartSet& set, const T1Proof& t1, Budget& budget) {
+  StopArcProof r;
+  if (!t1.verdict) {
+    r.verdict = Verdict::fail("stop arc: needs T1", "T1 not proved");
+    return r;
+  }
+  const Ball th_min = set.theta_min(m), th_max = set.theta_max(m);
+  const Velocity gmin(m, th_min, t1.t_lo, m.b_lo, m.q_hi, 1.0);
+  const Velocity gmax(m, th_max, t1.t_hi, m.b_hi, m.q_lo, 1.0);
+  const double guess = oracle::theta2(m.box().a, m.box().b_hi, m.box().q_lo, th_max.mid());
+  if (std::isnan(guess)) {
+    r.verdict = Verdict::fail("stop arc: guess", "the floating-point layer gave no theta2");
+    return r;
+  }
+  const Ball rho = newton_velocity(gmax, Ball(guess));
+  bool ok = false;
+  Ball d = delta_for(rho);
+  for (int k = 0; k < 5 && !ok; ++k, d = d * Ball(std::ldexp(1.0, 16))) {
+    r.tau = (rho + d).upper_ball();
+    ok = gmax.value(r.tau).is_negative() && lt(t1.t_hi, r.tau);
+  }
+  if (!ok) {
+    r.verdict = Verdict::fail("stop arc: G2 < 0", "no certified negative velocity after the impact near t = " + rho.mid_str(17));
+    return r;
+  }
+  r.k = static_cast<long long>(std::floor((r.tau.mid() - m.t3.mid()) / (2 * M_PI)));
+  const Ball shift = Ball(static_cast<double>(r.k)) * m.two_pi;
+  const Ball A = m.t3 + shift, E = m.t2 + shift + m.two_pi;
+  if (!lt(r.tau, E)) {
+    r.verdict = Verdict::fail("stop arc: end", "the velocity is not proved negative before t2 of the arc");
+    return r;
+  }
+  if (le(A, t1.t_lo)) {
+    r.from = t1.t_lo;
+  } else {
+    const Ball A_up = A.upper_ball();
+    if (!lt(t1.t_lo, A_up) || !lt(A_up, r.tau)) {
+      r.verdict = Verdict::fail("stop arc: start", "t3 of the arc not between the impact and the stop");
+      return r;
+    }
+    const Velocity minus_gmin(m, th_min, t1.t_lo, m.b_lo, m.q_hi, -1.0);
+    if (Verdict v = prove_negative(minus_gmin, t1.t_lo, A_up, budget, "stop arc: no stop before t3", &r.stats); !v) {
+      r.verdict = v;
+      return r;
+    }
+    r.from = A;
+  }
+  r.needs_lemma1 = !le(m.t1 + shift + m.two_pi, r.from);
+  r.verdict = Verdict::ok();
+  return r;
+}
+
 // ---- Lemma 1 --------------------------------------------------------------------------------------
 
 Ball lemma1_velocity_at_t2(const Ball& a, const Ball& b, const Ball& q) {

@@ -43,6 +43,23 @@ struct Theta2Proof {
 /// \f$\theta_2\f$ over `set` given the certified \f$T_1\f$ (which must be proved).
 Theta2Proof certify_theta2(const Model& m, const StartSet& set, const T1Proof& t1, Budget& budget);
 
+/// The weaker statement that suffices where T is constant: the first zero of \f$G_2\f$ after
+/// \f$\theta_1\f$ lies in the stop arc \f$R_k = [t_3 + 2\pi k, t_2 + 2\pi(k+1))\f$, for every point of the set.
+/// Proved by \f$G_2^{\min} > 0\f$ on \f$[t_{lo}, t_3 + 2\pi k]\f$ (or \f$\theta_1 \ge t_3 + 2\pi k\f$ already) and
+/// \f$G_2^{\max}(\tau) < 0\f$ at some \f$\tau \in (t_{hi}, t_2 + 2\pi(k+1))\f$. No simplicity is needed:
+/// wherever in \f$R_k\f$ the progression stops (at most tangentially at \f$t_0\f$), the mass waits for
+/// \f$t_2\f$, or for \f$t_0\f$ and then (Lemma 1) for \f$t_2\f$: T = t2.
+struct StopArcProof {
+  Verdict verdict;        ///< proved: the first stop lies in [from, tau] inside R_k
+  long long k = 0;        ///< the arc
+  Ball from, tau;         ///< the first stop lies in (from, tau)
+  bool needs_lemma1 = true;  ///< the range meets [t3, t0] + 2 pi k (the mass may wait for t0)
+  NegativityStats stats;  ///< work
+};
+
+/// Proves that the first progression ends in a stop arc (see StopArcProof).
+StopArcProof certify_stop_arc(const Model& m, const StartSet& set, const T1Proof& t1, Budget& budget);
+
 /// \f$u(t_2) = -a(\cos t_2 - \cos t_0) + (2b - q)(t_2 - t_0)\f$ (Eq. 8) over balls of b and q
 /// (b = 0 allowed; needs \f$|q - 2b| < a\f$, \f$2b < a\f$).
 Ball lemma1_velocity_at_t2(const Ball& a, const Ball& b, const Ball& q);

@@ -23,10 +23,36 @@ TProof certify_T(const Model& m, const StartSet& set, Budget& budget, const Lemm
   }
   r.theta2 = certify_theta2(m, set, r.t1, budget);
   r.tests += r.theta2.stats.tests;
-  if (!r.theta2.verdict) {
-    r.verdict = r.theta2.verdict;
+  // Where theta2 is not a proved simple zero, T may still be proved constant: the first stop lies
+  // in a stop arc (certify_stop_arc).
+  auto try_stop_arc = [&](const Verdict& why) {
+    const StopArcProof s = certify_stop_arc(m, set, r.t1, budget);
+    r.tests += s.stats.tests;
+    if (!s.verdict) {
+      r.verdict = Verdict::fail(why.step, why.detail + "; stop-arc test: " + s.verdict.describe());
+      return r;
+    }
+    if (s.needs_lemma1) {
+      Lemma1Proof own;
+      if (!lemma1) {
+        own = certify_lemma1(m);
+        lemma1 = &own;
+      }
+      if (!lemma1->verdict) {
+        r.verdict = Verdict::fail("T: stop until t0 needs Lemma 1", lemma1->verdict.describe());
+        return r;
+      }
+      r.used_lemma1 = true;
+    }
+    r.chain = Chain::Stop;
+    r.turn = s.k;
+    r.theta2_phase = Ball::hull(s.from, s.tau) - Ball(static_cast<double>(s.k)) * m.two_pi;
+    r.T = m.t2;
+    r.constant_t2 = true;
+    r.verdict = Verdict::ok();
     return r;
-  }
+  };
+  if (!r.theta2.verdict) return try_stop_arc(r.theta2.verdict);
   const Ball& lo = r.theta2.u_lo;
   const Ball& hi = r.theta2.u_hi;
   // Free: [t1 + 2 pi k, t3 + 2 pi k).
@@ -74,9 +100,8 @@ TProof certify_T(const Model& m, const StartSet& set, Budget& budget, const Lemm
       return r;
     }
   }
-  r.verdict = Verdict::fail("T: chain", "the phase of theta2, " + r.theta2.enclosure.str(12) +
-                                            ", is not inside one arc [t1, t3) or [t3, t2 + 2 pi) (T may jump at t3)");
-  return r;
+  return try_stop_arc(Verdict::fail("T: chain", "the phase of theta2, " + r.theta2.enclosure.str(12) +
+                                                    ", is not inside one arc [t1, t3) or [t3, t2 + 2 pi) (T may jump at t3)"));
 }
 
 bool derivative_T(const Model& m, const StartSet& set, const TProof& t, Ball& dT) {
