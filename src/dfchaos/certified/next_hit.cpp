@@ -148,6 +148,40 @@ Ball newton_G1(const Model& m, const Ball& theta, const Ball& b, const Ball& gue
   return x;
 }
 
+Verdict certify_no_contact(const Model& m, const StartSet& set, const Ball& t_end, Budget& budget,
+                           const std::vector<std::pair<Ball, Ball>>& skip, NegativityStats* stats) {
+  if (Verdict v = set.valid(m); !v) return v;
+  const Ball th_min = set.theta_min(m), th_max = set.theta_max(m);
+  // 1. departure over the whole set.
+  const Ball w = (th_max - th_min).upper_ball();
+  Ball s0;
+  Verdict dep = Verdict::fail("T1: departure", "start set wider than 1/2");
+  for (double c : {0.5, 0.125, 1.0 / 32, 1.0 / 256}) {
+    s0 = Ball(c);
+    if (lt(s0, w)) break;
+    dep = prove_departure(m, set, s0);
+    if (dep) break;
+  }
+  if (!dep) return dep;
+  // 2. no earlier root at the max corner, s in [s0, t_end - theta_max] minus the skipped windows.
+  FlightGap gap(m, th_max, m.b_hi);
+  std::vector<std::pair<Ball, Ball>> segs;
+  Ball start = s0;
+  const Ball s_end = (t_end - th_max).upper_ball();
+  for (const auto& [wl, wh] : skip) {
+    const Ball a_end = (wl - th_max).upper_ball(), b_start = (wh - th_max).lower_ball();
+    if (lt(start, a_end)) segs.emplace_back(start, min(a_end, s_end));
+    if (lt(start, b_start)) start = b_start;
+  }
+  if (lt(start, s_end)) segs.emplace_back(start, s_end);
+  for (const auto& [x1, x2] : segs) {
+    if (!le(x1, x2)) continue;
+    Verdict v = prove_negative(gap, x1, x2, budget, "T1: no earlier root", stats);
+    if (!v) return v;
+  }
+  return Verdict::ok();
+}
+
 T1Proof certify_T1(const Model& m, const StartSet& set, Budget& budget, const T1Options& opt) {
   T1Proof r;
   if (Verdict v = set.valid(m); !v) {
@@ -200,39 +234,10 @@ T1Proof certify_T1(const Model& m, const StartSet& set, Budget& budget, const T1
       return r;
     }
   }
-  // 1. departure over the whole set.
-  const Ball w = (th_max - th_min).upper_ball();
-  Ball s0;
-  Verdict dep = Verdict::fail("T1: departure", "start set wider than 1/2");
-  for (double c : {0.5, 0.125, 1.0 / 32, 1.0 / 256}) {
-    s0 = Ball(c);
-    if (lt(s0, w)) break;
-    dep = prove_departure(m, set, s0);
-    if (dep) break;
-  }
-  if (!dep) {
-    r.verdict = dep;
+  // 1-2. departure, and no earlier root.
+  if (Verdict v = certify_no_contact(m, set, r.t_lo, budget, opt.skip, &r.stats); !v) {
+    r.verdict = v;
     return r;
-  }
-  // 2. no earlier root at the max corner, s in [s0, t_lo - theta_max] minus the skipped windows.
-  {
-    FlightGap gap(m, th_max, m.b_hi);
-    std::vector<std::pair<Ball, Ball>> segs;
-    Ball start = s0;
-    const Ball s_end = (r.t_lo - th_max).upper_ball();
-    for (const auto& [wl, wh] : opt.skip) {
-      const Ball a_end = (wl - th_max).upper_ball(), b_start = (wh - th_max).lower_ball();
-      if (lt(start, a_end)) segs.emplace_back(start, a_end);
-      if (lt(start, b_start)) start = b_start;
-    }
-    if (lt(start, s_end)) segs.emplace_back(start, s_end);
-    for (const auto& [x1, x2] : segs) {
-      Verdict v = prove_negative(gap, x1, x2, budget, "T1: no earlier root", &r.stats);
-      if (!v) {
-        r.verdict = v;
-        return r;
-      }
-    }
   }
   r.v1_at_max = dG1_dt(m, th_max, r.t_lo, m.b_hi);
   r.verdict = Verdict::ok();

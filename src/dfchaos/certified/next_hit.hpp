@@ -79,6 +79,12 @@ Ball dG1_dt(const Model& m, const Ball& theta, const Ball& t, const Ball& b);
 /// and every b of the box. `s0` must be in (0, 1].
 Verdict prove_departure(const Model& m, const StartSet& set, const Ball& s0);
 
+/// No contact before \f$t_{end}\f$: \f$G_1(\theta, t; b) < 0\f$ for \f$t \in (\theta, t_{end}]\f$, every start and b
+/// (steps 1 and 2 of the file comment: departure over the set, then prove_negative() at the max
+/// corner), except on the `skip` windows of t (sorted, disjoint), which the caller proves otherwise.
+Verdict certify_no_contact(const Model& m, const StartSet& set, const Ball& t_end, Budget& budget,
+                           const std::vector<std::pair<Ball, Ball>>& skip = {}, NegativityStats* stats = nullptr);
+
 /// Options of certify_T1().
 struct T1Options {
   /// Windows \f$[w_{lo}, w_{hi}]\f$ of t excluded from the "no earlier root" check at the max corner:
