@@ -254,6 +254,7 @@ int ExperimentOutput::finish() const {
     Json j = Json::object();
     j.set("id", c.id).set("reference", c.reference).set("statement", c.statement);
     j.set("parameters", c.parameters).set("evidence", c.evidence);
+    j.set("evidence_kind", c.evidence_kind.empty() ? std::string("unspecified") : c.evidence_kind);
     j.set("verdict", c.holds ? "holds" : "fails").set("expected_to_hold", c.expected);
     list.push(j);
     if (c.expected && !c.holds) ++failed_expected;

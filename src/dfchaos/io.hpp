@@ -71,6 +71,10 @@ struct Claim {
   Json evidence = Json::object();    ///< the numbers the verdict rests on
   bool holds = false;      ///< the computed verdict
   bool expected = true;    ///< whether the experiment asserts that it holds (a failure is then an error)
+  /// How the verdict was reached (DESIGN.md §2): "analytic", "sampled", "certified" (ball arithmetic
+  /// over the whole claim) or "precision-limited". Written to the claims JSON as "evidence_kind"
+  /// ("unspecified" when left empty).
+  std::string evidence_kind;
 };
 
 /// Collects everything an experiment produces and writes it under an output root:
