@@ -74,7 +74,7 @@ struct Claim {
   /// How the verdict was reached (DESIGN.md §2): "analytic", "sampled", "certified" (ball arithmetic
   /// over the whole claim) or "precision-limited". Written to the claims JSON as "evidence_kind"
   /// ("unspecified" when left empty).
-  std::string evidence_kind;
+  std::string evidence_kind{};
 };
 
 /// Collects everything an experiment produces and writes it under an output root:

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <exception>
 
+#include "dfchaos/certified/oracle.hpp"
 #include "dfchaos/covering.hpp"
 #include "dfchaos/phase.hpp"
 
@@ -60,20 +61,111 @@ double move_top(const Parameters& p, const dfchaos::CoveringSegment& s, double t
   return walk(p, s.label, s.theta_at_top, dir, scale, [&](const MapStep& st) { return st.T >= target; });
 }
 
-/// Moves the t2 end away from the top end, inside the label, to where the phase of theta2 is
-/// t2 - margin (inside [t1, t2): the mass stops until t2).
-double move_t2(const Parameters& p, const dfchaos::CoveringSegment& s, double margin) {
+/// Moves the t2 end away from the top end to the middle of the plateau where T = t2: from the first
+/// phase with T = t2 to where T leaves t2 or the branch of T1 ends (the progression may end in the
+/// arc [t1, t2) or, after a jump of theta2, in [t3, t0]: T = t2 on both).
+double move_t2(const Parameters& p, const dfchaos::CoveringSegment& s) {
   const double dir = s.theta_at_t2 < s.theta_at_top ? -1.0 : 1.0;
   const double scale = std::fabs(s.theta_at_t2 - s.theta_at_top);
-  const double t1 = *p.t1(), t2 = *p.t2();
-  const double target = t2 - margin > t1 ? t2 - margin : 0.5 * (t1 + t2);
-  const long double base = return_map_step(p, s.theta_at_t2).theta2.value();
-  const long long k = static_cast<long long>(std::floor((base - t1) / two_pi_l));
-  return walk(p, s.label, s.theta_at_t2, dir, scale,
-              [&](const MapStep& st) { return static_cast<double>(st.theta2.value() - k * two_pi_l) <= target; });
+  const double t2 = *p.t2();
+  const long long branch = return_map_step(p, s.theta_at_t2).hit.maxima_before;
+  auto on_plateau = [&](double th) {
+    if (th <= t2 || th >= kThreeHalvesPi) return false;
+    const MapStep st = return_map_step(p, th);
+    return st.hit.maxima_before == branch && st.T == t2;
+  };
+  if (!on_plateau(s.theta_at_t2)) return s.theta_at_t2;
+  double x = s.theta_at_t2, h = std::max(1e-13, scale * 1e-4);
+  double y = x + dir * h;
+  for (int i = 0; i < 200 && on_plateau(y); ++i) {
+    x = y;
+    h *= 1.5;
+    y = x + dir * h;
+  }
+  for (int it = 0; it < 60; ++it) {  // x on the plateau, y off it
+    const double mid = 0.5 * (x + y);
+    if (on_plateau(mid)) x = mid; else y = mid;
+  }
+  return s.theta_at_t2 + 0.5 * (x - s.theta_at_t2);
+}
+
+/// The plateau of T = t2 around `th` in the branch of T1 at `th`, and its middle; NaN if T(th) != t2.
+double plateau_middle(const Parameters& p, double th, double scale) {
+  const double t2 = *p.t2();
+  if (th <= t2 || th >= kThreeHalvesPi) return NAN;
+  const MapStep s0 = return_map_step(p, th);
+  if (s0.T != t2) return NAN;
+  const long long branch = s0.hit.maxima_before;
+  auto on = [&](double x) {
+    if (x <= t2 || x >= kThreeHalvesPi) return false;
+    const MapStep st = return_map_step(p, x);
+    return st.hit.maxima_before == branch && st.T == t2;
+  };
+  double ends[2];
+  for (int side = 0; side < 2; ++side) {
+    const double dir = side == 0 ? -1.0 : 1.0;
+    double x = th, h = std::max(1e-13, scale * 1e-3), y = x + dir * h;
+    for (int i = 0; i < 200 && on(y); ++i) {
+      x = y;
+      h *= 1.6;
+      y = x + dir * h;
+    }
+    for (int it = 0; it < 24; ++it) {
+      const double mid = 0.5 * (x + y);
+      if (on(mid)) x = mid; else y = mid;
+    }
+    ends[side] = x;
+  }
+  return 0.5 * (ends[0] + ends[1]);
 }
 
 }  // namespace
+
+std::vector<Candidate> track_candidates(double a, double b, double q, const std::vector<Candidate>& old, const CoveringOptions& opt) {
+  std::vector<Candidate> out;
+  try {
+    const Parameters p(a, b, q);
+    p.require_return_map();
+    const double lo_target = kThreeHalvesPi + 0.25 * opt.margin_top, hi_limit = *p.t3() - 0.25;
+    for (const Candidate& c : old) {
+      Candidate n = c;
+      const double scale = std::fabs(c.theta_t2 - c.theta_top);
+      n.theta_t2 = plateau_middle(p, c.theta_t2, scale);
+      if (std::isnan(n.theta_t2)) return {};
+      const double T_top = return_map_step(p, c.theta_top).T;
+      if (!(T_top >= lo_target && T_top <= hi_limit)) {
+        // Re-aim the top end at 3pi/2 + margin by bisection between it and the t2 end (T continuous and
+        // decreasing there on a run of the chain; the proof checks).
+        const double target = kThreeHalvesPi + opt.margin_top;
+        double x = c.theta_top, y = n.theta_t2;  // T(x) should be >= target, T(y) = t2
+        if (T_top < target) {
+          // Move away from the t2 end until T >= target (bounded), else give up.
+          const double dir = c.theta_top < c.theta_t2 ? -1.0 : 1.0;
+          double h = scale * 1e-3;
+          bool found = false;
+          for (int i = 0; i < 60 && !found; ++i, h *= 1.5) {
+            const double z = c.theta_top + dir * h;
+            const double Tz = return_map_step(p, z).T;
+            if (Tz > hi_limit) break;
+            if (Tz >= target) { x = z; found = true; }
+          }
+          if (!found) return {};
+        }
+        for (int it = 0; it < 30; ++it) {
+          const double mid = 0.5 * (x + y);
+          if (return_map_step(p, mid).T >= target) x = mid; else y = mid;
+        }
+        n.theta_top = x;
+      }
+      if (!out.empty() && !(out.back().hi() < n.lo())) return {};
+      if (n.lo() < *p.t2() || n.hi() > kThreeHalvesPi) return {};
+      out.push_back(n);
+    }
+  } catch (const std::exception&) {
+    return {};
+  }
+  return out;
+}
 
 std::vector<Candidate> covering_candidates(double a, double b, double q, const CoveringOptions& opt) {
   std::vector<Candidate> out;
@@ -89,7 +181,7 @@ std::vector<Candidate> covering_candidates(double a, double b, double q, const C
     for (const auto& s : segs) {
       Candidate c;
       c.theta_top = move_top(p, s, kThreeHalvesPi + opt.margin_top);
-      c.theta_t2 = move_t2(p, s, opt.margin_t2);
+      c.theta_t2 = move_t2(p, s);
       if (c.lo() < lo) continue;
       if (c.hi() > hi) continue;
       if (!out.empty() && !(out.back().hi() < c.lo())) continue;  // keep them disjoint
@@ -100,6 +192,67 @@ std::vector<Candidate> covering_candidates(double a, double b, double q, const C
   }
   return out;
 }
+
+namespace {
+
+/// Which of theta and b moves T1 more over a ball x box (floating estimate): true to split b.
+bool split_b_first(const ParamBox& box, double th_lo, double th_hi) {
+  if (box.b_lo == box.b_hi) return false;
+  if (th_lo == th_hi) return true;
+  const double bm = 0.5 * (box.b_lo + box.b_hi), tm = 0.5 * (th_lo + th_hi);
+  const double by_b = std::fabs(oracle::T1(box.a, box.b_lo, tm) - oracle::T1(box.a, box.b_hi, tm));
+  const double by_t = std::fabs(oracle::T1(box.a, bm, th_lo) - oracle::T1(box.a, bm, th_hi));
+  if (std::isnan(by_b) || std::isnan(by_t)) return box.b_hi - box.b_lo > 0;
+  return by_b > by_t;
+}
+
+/// Proves `check` on [th_lo, th_hi] x box by an adaptive cover that splits theta or b.
+template <class Check>
+Verdict cover_2d(const ParamBox& box, double th_lo, double th_hi, const CoveringOptions& opt, int max_depth, Budget& budget,
+                 SegmentProof& r, const std::string& step, Check&& check) {
+  struct Item { double t0, t1; ParamBox box; int depth; };
+  std::vector<Item> stack{{th_lo, th_hi, box, 0}};
+  while (!stack.empty()) {
+    const Item it = stack.back();
+    stack.pop_back();
+    const Model m(it.box);
+    Verdict why;
+    if (check(m, it.t0, it.t1, why)) {
+      ++r.balls;
+      r.depth = std::max(r.depth, it.depth);
+      if (it.t1 > it.t0) r.min_width = std::min(r.min_width, it.t1 - it.t0);
+      if (r.balls > opt.max_balls) return Verdict::fail(step, "more than " + std::to_string(opt.max_balls) + " balls");
+      continue;
+    }
+    const double tm = 0.5 * (it.t0 + it.t1), bm = 0.5 * (it.box.b_lo + it.box.b_hi), qm = 0.5 * (it.box.q_lo + it.box.q_hi);
+    // Splitting stops at relative widths where ball arithmetic gains nothing more.
+    const bool can_t = tm > it.t0 && tm < it.t1;
+    const bool can_b = it.box.b_hi - it.box.b_lo > 1e-9 * it.box.b_hi && bm > it.box.b_lo && bm < it.box.b_hi;
+    const bool can_q = it.box.q_hi - it.box.q_lo > 1e-7 && qm > it.box.q_lo && qm < it.box.q_hi;
+    if (it.depth >= max_depth || (!can_t && !can_b && !can_q) || budget.exhausted())
+      return Verdict::fail(step, "at theta in [" + fmt17(it.t0) + ", " + fmt17(it.t1) + "], " + it.box.describe() + ": " + why.describe());
+    const bool by_b = can_b && (!can_t || split_b_first(it.box, it.t0, it.t1));
+    if (by_b) {
+      ParamBox lo = it.box, hi = it.box;
+      lo.b_hi = bm;
+      hi.b_lo = bm;
+      stack.push_back({it.t0, it.t1, hi, it.depth + 1});
+      stack.push_back({it.t0, it.t1, lo, it.depth + 1});
+    } else if (!can_t) {
+      ParamBox lo = it.box, hi = it.box;
+      lo.q_hi = qm;
+      hi.q_lo = qm;
+      stack.push_back({it.t0, it.t1, hi, it.depth + 1});
+      stack.push_back({it.t0, it.t1, lo, it.depth + 1});
+    } else {
+      stack.push_back({tm, it.t1, it.box, it.depth + 1});
+      stack.push_back({it.t0, tm, it.box, it.depth + 1});
+    }
+  }
+  return Verdict::ok();
+}
+
+}  // namespace
 
 SegmentProof prove_segment(const Model& m, const Candidate& c, const CoveringOptions& opt) {
   SegmentProof r;
@@ -120,64 +273,43 @@ SegmentProof prove_segment(const Model& m, const Candidate& c, const CoveringOpt
   }
   Budget budget;
   budget.max_tests = opt.max_tests;
-  // The two ends.
-  {
-    TProof top = certify_T(m, StartSet::point(c.theta_top), budget);
-    r.tests += top.tests;
-    if (!top.verdict) {
-      r.verdict = Verdict::fail("covering: T at the top end", top.verdict.describe());
-      return r;
-    }
-    r.T_top = top.T;
-    if (!le(three_halves_pi, top.T)) {
-      r.verdict = Verdict::fail("covering: T >= 3pi/2 at the top end", "T = " + top.T.str(12) + " at theta = " + fmt17(c.theta_top));
-      return r;
-    }
-    TProof bot = certify_T(m, StartSet::point(c.theta_t2), budget);
-    r.tests += bot.tests;
-    if (!bot.verdict) {
-      r.verdict = Verdict::fail("covering: T at the t2 end", bot.verdict.describe());
-      return r;
-    }
-    r.theta2_t2end = bot.theta2_phase;
-    if (!bot.constant_t2) {
-      r.verdict = Verdict::fail("covering: T = t2 at the t2 end", "T = " + bot.T.str(12) + " at theta = " + fmt17(c.theta_t2));
-      return r;
-    }
-    r.used_lemma1 = r.used_lemma1 || bot.used_lemma1;
-  }
-  // Continuity on J: adaptive cover by closed balls.
-  struct Item { double x, y; int depth; };
-  std::vector<Item> stack{{r.lo, r.hi, 0}};
-  while (!stack.empty()) {
-    const Item it = stack.back();
-    stack.pop_back();
-    TProof t = certify_T(m, StartSet::interval(it.x, it.y), budget);
-    r.tests += t.tests;
-    if (t.verdict) {
-      ++r.balls;
-      r.depth = std::max(r.depth, it.depth);
-      r.min_width = std::min(r.min_width, it.y - it.x);
-      r.used_lemma1 = r.used_lemma1 || t.used_lemma1;
-      if (r.balls > opt.max_balls) {
-        r.verdict = Verdict::fail("covering: continuity on J", "more than " + std::to_string(opt.max_balls) + " balls");
-        return r;
-      }
-      continue;
-    }
-    const double mid = 0.5 * (it.x + it.y);
-    if (t.verdict.refuted && it.x == it.y) {
-      r.verdict = Verdict::fail("covering: continuity on J", t.verdict.describe());
-      return r;
-    }
-    if (it.depth >= opt.max_depth || !(mid > it.x && mid < it.y) || budget.exhausted()) {
-      r.verdict = Verdict::fail("covering: continuity on J", "at theta in [" + fmt17(it.x) + ", " + fmt17(it.y) + "]: " + t.verdict.describe());
-      return r;
-    }
-    stack.push_back({mid, it.y, it.depth + 1});
-    stack.push_back({it.x, mid, it.depth + 1});
-  }
-  r.verdict = Verdict::ok();
+  bool first_top = true, first_bot = true;
+  // The two ends (over sub-boxes of b if needed).
+  Verdict v = cover_2d(m.box(), c.theta_top, c.theta_top, opt, opt.end_depth, budget, r, "covering: T >= 3pi/2 at the top end",
+                       [&](const Model& mm, double t0, double t1, Verdict& why) {
+                         TProof top = certify_T(mm, StartSet::interval(t0, t1), budget);
+                         r.tests += top.tests;
+                         if (!top.verdict) { why = top.verdict; return false; }
+                         if (!le(1.5 * mm.pi, top.T)) { why = Verdict::fail("T >= 3pi/2", "T = " + top.T.str(12)); return false; }
+                         r.T_top = first_top ? top.T : Ball::hull(r.T_top, top.T);
+                         first_top = false;
+                         return true;
+                       });
+  if (!v) { r.verdict = v; return r; }
+  v = cover_2d(m.box(), c.theta_t2, c.theta_t2, opt, opt.end_depth, budget, r, "covering: T = t2 at the t2 end",
+               [&](const Model& mm, double t0, double t1, Verdict& why) {
+                 TProof bot = certify_T(mm, StartSet::interval(t0, t1), budget);
+                 r.tests += bot.tests;
+                 if (!bot.verdict) { why = bot.verdict; return false; }
+                 if (!bot.constant_t2) { why = Verdict::fail("T = t2", "T = " + bot.T.str(12)); return false; }
+                 r.theta2_t2end = first_bot ? bot.theta2_phase : Ball::hull(r.theta2_t2end, bot.theta2_phase);
+                 first_bot = false;
+                 r.used_lemma1 = r.used_lemma1 || bot.used_lemma1;
+                 return true;
+               });
+  if (!v) { r.verdict = v; return r; }
+  const int end_balls = r.balls;
+  // Continuity on J.
+  v = cover_2d(m.box(), r.lo, r.hi, opt, opt.max_depth, budget, r, "covering: continuity on J",
+               [&](const Model& mm, double t0, double t1, Verdict& why) {
+                 TProof t = certify_T(mm, StartSet::interval(t0, t1), budget);
+                 r.tests += t.tests;
+                 if (!t.verdict) { why = t.verdict; return false; }
+                 r.used_lemma1 = r.used_lemma1 || t.used_lemma1;
+                 return true;
+               });
+  r.balls -= end_balls;
+  r.verdict = v;
   return r;
 }
 

@@ -13,9 +13,9 @@
 ///
 /// Candidates come from the floating-point search (dfchaos::covering_segments), only to know where
 /// to look; their ends are moved inside their continuity label to where the proofs have margin
-/// (T about \f$3\pi/2 + 0.3\f$ at the top end, the phase of \f$\theta_2\f$ about \f$t_2 - 0.3\f$ at the
-/// other, inside the arc where the mass stops until \f$t_2\f$). Nothing of the floating search enters
-/// the proof.
+/// (T about \f$3\pi/2 + 0.3\f$ at the top end; at the other end, the middle of the plateau where
+/// \f$T = t_2\f$, between the phase where \f$\theta_2\f$ crosses \f$t_2\f$ and the end of the branch of
+/// \f$T_1\f$). Nothing of the floating search enters the proof.
 #pragma once
 
 #include <string>
@@ -29,9 +29,9 @@ namespace dfchaos::certified {
 /// Options of the covering proofs.
 struct CoveringOptions {
   double margin_top = 0.3;        ///< target T at the top end: \f$3\pi/2 + \f$ this
-  double margin_t2 = 0.3;         ///< target phase of \f$\theta_2\f$ at the other end: \f$t_2 - \f$ this
   int max_balls = 20000;          ///< closed balls per segment
-  int max_depth = 48;             ///< bisection depth of a segment
+  int max_depth = 30;             ///< bisection depth of a segment (theta, b and q splits together)
+  int end_depth = 6;              ///< bisection depth (b and q) of the checks at the two ends
   long max_tests = 4'000'000;     ///< interval tests per segment
   int candidates = 6;             ///< floating-point candidates examined (at most)
   double lo = 0.0 / 0.0;          ///< search window for candidates (NaN: \f$t_2\f$)
@@ -48,6 +48,11 @@ struct Candidate {
 
 /// Floating-point candidates at (a, b, q), ends moved as in the file comment, ascending, disjoint.
 std::vector<Candidate> covering_candidates(double a, double b, double q, const CoveringOptions& opt = {});
+
+/// The candidates `old` (of nearby parameters) moved to (a, b, q) by local floating searches: the t2
+/// end to the middle of its plateau, the top end re-aimed if T there lost its margin. Empty when a
+/// candidate cannot be followed (then search afresh with covering_candidates()).
+std::vector<Candidate> track_candidates(double a, double b, double q, const std::vector<Candidate>& old, const CoveringOptions& opt = {});
 
 /// The proof of one covering segment.
 struct SegmentProof {
