@@ -25,7 +25,7 @@ int main(int argc, char** argv) {
   r.q_lo = 0.76;
   r.q_hi = 0.99;
   r.q_columns = 23;
-  long long max_boxes = 4000;
+  long long max_boxes = 3000;
   return experiments::run(
       argc, argv, "certified_region", "Theorem 1 (Lemma 4) proved over boxes of parameters (issue 14)",
       [&](experiments::OptionSet& app) {

@@ -90,7 +90,8 @@ double move_t2(const Parameters& p, const dfchaos::CoveringSegment& s) {
 }
 
 /// The plateau of T = t2 around `th` in the branch of T1 at `th`, and its middle; NaN if T(th) != t2.
-double plateau_middle(const Parameters& p, double th, double scale) {
+/// `width` receives the plateau's width.
+double plateau_middle(const Parameters& p, double th, double scale, double& width) {
   const double t2 = *p.t2();
   if (th <= t2 || th >= kThreeHalvesPi) return NAN;
   const MapStep s0 = return_map_step(p, th);
@@ -110,12 +111,13 @@ double plateau_middle(const Parameters& p, double th, double scale) {
       h *= 1.6;
       y = x + dir * h;
     }
-    for (int it = 0; it < 24; ++it) {
+    for (int it = 0; it < 12; ++it) {
       const double mid = 0.5 * (x + y);
       if (on(mid)) x = mid; else y = mid;
     }
     ends[side] = x;
   }
+  width = ends[1] - ends[0];
   return 0.5 * (ends[0] + ends[1]);
 }
 
@@ -130,8 +132,26 @@ std::vector<Candidate> track_candidates(double a, double b, double q, const std:
     for (const Candidate& c : old) {
       Candidate n = c;
       const double scale = std::fabs(c.theta_t2 - c.theta_top);
-      n.theta_t2 = plateau_middle(p, c.theta_t2, scale);
-      if (std::isnan(n.theta_t2)) return {};
+      // Keep the t2 end while the plateau still reaches a quarter of its width on both sides of it.
+      bool keep = false;
+      if (c.plateau > 0) {
+        const double t2 = *p.t2();
+        auto on = [&](double x) { return x > t2 && x < kThreeHalvesPi && return_map_step(p, x).T == t2; };
+        const long long br = return_map_step(p, c.theta_t2).hit.maxima_before;
+        auto same = [&](double x) { return return_map_step(p, x).hit.maxima_before == br; };
+        const double d = 0.25 * c.plateau;
+        keep = on(c.theta_t2) && on(c.theta_t2 - d) && on(c.theta_t2 + d) && same(c.theta_t2 - d) && same(c.theta_t2 + d);
+      }
+      if (!keep) {
+        n.theta_t2 = plateau_middle(p, c.theta_t2, scale, n.plateau);
+        // The plateau moved off the old end: look for it nearby (it moves by about its width per box).
+        const double step = c.plateau > 0 ? 0.25 * c.plateau : 1e-3 * scale;
+        for (int k = 1; k <= 12 && std::isnan(n.theta_t2); ++k) {
+          const double x = c.theta_t2 + (k % 2 ? 1.0 : -1.0) * step * ((k + 1) / 2);
+          if (return_map_step(p, x).T == *p.t2()) n.theta_t2 = plateau_middle(p, x, scale, n.plateau);
+        }
+        if (std::isnan(n.theta_t2)) return {};
+      }
       const double T_top = return_map_step(p, c.theta_top).T;
       if (!(T_top >= lo_target && T_top <= hi_limit)) {
         // Re-aim the top end at 3pi/2 + margin by bisection between it and the t2 end (T continuous and
@@ -182,6 +202,11 @@ std::vector<Candidate> covering_candidates(double a, double b, double q, const C
       Candidate c;
       c.theta_top = move_top(p, s, kThreeHalvesPi + opt.margin_top);
       c.theta_t2 = move_t2(p, s);
+      {
+        double w = 0;
+        const double mid = plateau_middle(p, c.theta_t2, std::fabs(c.theta_t2 - c.theta_top), w);
+        if (!std::isnan(mid)) c.plateau = w;
+      }
       if (c.lo() < lo) continue;
       if (c.hi() > hi) continue;
       if (!out.empty() && !(out.back().hi() < c.lo())) continue;  // keep them disjoint

@@ -42,6 +42,7 @@ struct CoveringOptions {
 struct Candidate {
   double theta_top = 0;  ///< end where T should be at least \f$3\pi/2\f$
   double theta_t2 = 0;   ///< end where T should be \f$t_2\f$
+  double plateau = 0;    ///< width of the plateau T = t2 around theta_t2 when it was centred (0: unknown)
   double lo() const { return theta_top < theta_t2 ? theta_top : theta_t2; }  ///< left end
   double hi() const { return theta_top < theta_t2 ? theta_t2 : theta_top; }  ///< right end
 };

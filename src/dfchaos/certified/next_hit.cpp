@@ -224,12 +224,17 @@ T1Proof certify_T1(const Model& m, const StartSet& set, Budget& budget, const T1
     r.verdict = Verdict::fail("T1: bracket", "the corners' roots are out of order (different branches of T1?)");
     return r;
   }
+  if (!lt(th_max, r.t_lo)) {  // the monotonicity in theta needs t > theta
+    r.verdict = Verdict::fail("T1: bracket", "the bracket does not start after the start phases");
+    return r;
+  }
   r.enclosure = Ball::hull(r.t_lo, r.t_hi);
   // 4. simple root: dG1/dt > 0 on the bracket at the min corner.
   {
     MinusVelocity mv(m, th_min, m.b_lo);
     Verdict v = prove_negative(mv, r.t_lo, r.t_hi, budget, "T1: simple root (dG1/dt > 0)", &r.stats);
     if (!v) {
+      v.refuted = false;  // the bracket is ours: dG1/dt <= 0 somewhere in it refutes nothing about T1
       r.verdict = v;
       return r;
     }

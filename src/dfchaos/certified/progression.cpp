@@ -113,13 +113,16 @@ Theta2Proof certify_theta2(const Model& m, const StartSet& set, const T1Proof& t
   r.enclosure = Ball::hull(r.u_lo, r.u_hi);
   // G2 > 0 from the impact to u_lo: the first zero is not earlier.
   const Velocity minus_gmin(m, th_min, t1.t_lo, m.b_lo, m.q_hi, -1.0);
+  // (Failures of the corner functions refute nothing: they mix the corners of the set.)
   if (Verdict v = prove_negative(minus_gmin, t1.t_lo, r.u_lo, budget, "theta2: no earlier stop", &r.stats); !v) {
+    v.refuted = false;
     r.verdict = v;
     return r;
   }
   // dG2/dt < 0 on the bracket: a simple zero.
   const Acceleration acc(m, m.b_hi, m.q_lo);
   if (Verdict v = prove_negative(acc, r.u_lo, r.u_hi, budget, "theta2: simple zero (F - q < 0)", &r.stats); !v) {
+    v.refuted = false;
     r.verdict = v;
     return r;
   }
@@ -169,6 +172,7 @@ StopArcProof certify_stop_arc(const Model& m, const StartSet& set, const T1Proof
     }
     const Velocity minus_gmin(m, th_min, t1.t_lo, m.b_lo, m.q_hi, -1.0);
     if (Verdict v = prove_negative(minus_gmin, t1.t_lo, A_up, budget, "stop arc: no stop before t3", &r.stats); !v) {
+      v.refuted = false;
       r.verdict = v;
       return r;
     }

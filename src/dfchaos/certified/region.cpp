@@ -34,31 +34,41 @@ CoveringProof prove_covering_split(const ParamBox& box, const std::vector<Candid
 
 namespace {
 
-RegionColumn tile_column(const RegionOptions& opt, double q_lo, double q_hi, long budget) {
-  const auto start = std::chrono::steady_clock::now();
+/// The state of a column between passes (so that a later pass resumes where the last stopped).
+struct ColumnState {
   RegionColumn col;
-  col.q_lo = q_lo;
-  col.q_hi = q_hi;
-  double b = opt.b_lo, c = opt.c_start;
+  double b = 0, c = 0;
   std::vector<Candidate> cand;
-  while (b < opt.b_hi && col.attempts < budget) {
+  bool done = false;
+};
+
+void tile_column(const RegionOptions& opt, ColumnState& st, long budget) {
+  const auto start = std::chrono::steady_clock::now();
+  RegionColumn& col = st.col;
+  const double q_lo = col.q_lo, q_hi = col.q_hi;
+  double& b = st.b;
+  double& c = st.c;
+  std::vector<Candidate>& cand = st.cand;
+  long used = 0;
+  while (b < opt.b_hi && used < budget) {
     const double w = std::min(c * b * b / opt.a, opt.b_hi - b);
     ParamBox box{opt.a, b, b + w, q_lo, q_hi};
     if (box.b_hi == box.b_lo) break;
+    ++used;
     ++col.attempts;
-    // Candidates are kept from box to box while they prove; recomputed at this box's centre otherwise.
+    // Candidates are followed from box to box (track_candidates); searched afresh when lost.
     int sub = 0;
-    CoveringProof p;
     const double bc = 0.5 * (box.b_lo + box.b_hi), qc = 0.5 * (q_lo + q_hi);
     if (!cand.empty()) cand = track_candidates(opt.a, bc, qc, cand);
-    bool fresh = cand.empty();
+    const bool fresh = cand.empty();
     if (fresh) cand = covering_candidates(opt.a, bc, qc);
+    // A box too wide fails at its ends: no splitting there (the width is adapted instead).
     CoveringOptions copt;
-    copt.end_depth = 2;
+    copt.end_depth = 0;
     copt.max_depth = 12;
-    p = prove_covering_split(box, cand, opt.split_depth, sub, copt);
+    CoveringProof p = prove_covering_split(box, cand, opt.split_depth, sub, copt);
     if (!p.verdict && !fresh && c <= opt.c_min) {
-      cand = covering_candidates(opt.a, 0.5 * (box.b_lo + box.b_hi), 0.5 * (q_lo + q_hi));
+      cand = covering_candidates(opt.a, bc, qc);
       sub = 0;
       p = prove_covering_split(box, cand, opt.split_depth, sub, copt);
     }
@@ -77,9 +87,9 @@ RegionColumn tile_column(const RegionOptions& opt, double q_lo, double q_hi, lon
     b = box.b_hi;
     cand.clear();
   }
+  st.done = !(b < opt.b_hi);
   col.b_reached = b;
-  col.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return col;
+  col.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 }  // namespace
@@ -89,18 +99,38 @@ RegionResult certify_region(const RegionOptions& opt) {
   RegionResult r;
   r.options = opt;
   const int n = std::max(1, opt.q_columns);
-  r.columns.resize(static_cast<std::size_t>(n));
-  const long per_column = std::max(1L, opt.max_boxes / n);
-#pragma omp parallel for schedule(dynamic, 1)
+  std::vector<ColumnState> st(static_cast<std::size_t>(n));
   for (int i = 0; i < n; ++i) {
-    const double q0 = opt.q_lo + (opt.q_hi - opt.q_lo) * i / n;
-    const double q1 = i + 1 == n ? opt.q_hi : opt.q_lo + (opt.q_hi - opt.q_lo) * (i + 1) / n;
-    r.columns[static_cast<std::size_t>(i)] = tile_column(opt, q0, q1, per_column);
+    ColumnState& s = st[static_cast<std::size_t>(i)];
+    s.col.q_lo = opt.q_lo + (opt.q_hi - opt.q_lo) * i / n;
+    s.col.q_hi = i + 1 == n ? opt.q_hi : opt.q_lo + (opt.q_hi - opt.q_lo) * (i + 1) / n;
+    s.b = opt.b_lo;
+    s.c = opt.c_start;
+  }
+  // Passes: the box budget left is shared equally among the unfinished columns; a column that
+  // finishes early leaves its share to the others. Each pass's shares are fixed before it starts,
+  // so the result does not depend on the number of threads.
+  long left = opt.max_boxes;
+  for (int pass = 0; pass < 64 && left > 0; ++pass) {
+    std::vector<int> open;
+    for (int i = 0; i < n; ++i)
+      if (!st[static_cast<std::size_t>(i)].done) open.push_back(i);
+    if (open.empty()) break;
+    const long share = std::max(1L, left / static_cast<long>(open.size()));
+    const int m = static_cast<int>(open.size());
+#pragma omp parallel for schedule(dynamic, 1)
+    for (int j = 0; j < m; ++j) tile_column(opt, st[static_cast<std::size_t>(open[static_cast<std::size_t>(j)])], share);
+    long used = 0;
+    for (int i : open) used += st[static_cast<std::size_t>(i)].col.attempts;
+    left = opt.max_boxes;
+    for (const auto& s : st) left -= s.col.attempts;
+    if (used == 0) break;
   }
   r.complete = true;
-  for (const auto& col : r.columns) {
-    for (const auto& bx : col.boxes) (bx.proved ? r.boxes_proved : r.boxes_failed)++;
-    if (col.b_reached < opt.b_hi) r.complete = false;
+  for (auto& s : st) {
+    for (const auto& bx : s.col.boxes) (bx.proved ? r.boxes_proved : r.boxes_failed)++;
+    if (!s.done) r.complete = false;
+    r.columns.push_back(std::move(s.col));
   }
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;

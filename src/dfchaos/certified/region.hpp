@@ -27,7 +27,7 @@ struct RegionOptions {
   double c_start = 0.05;        ///< initial box width in units of b^2/a
   double c_min = 0.003;         ///< smallest width tried before a box is given up (then fresh candidates are tried once)
   double c_max = 0.5;           ///< largest width
-  int split_depth = 1;          ///< halvings in b of a failed box (same candidates)
+  int split_depth = 0;          ///< halvings in b of a failed box (same candidates)
   long max_boxes = 20000;       ///< boxes attempted in total (proved or not), all columns
 };
 
