@@ -39,10 +39,10 @@ class Ball {
   Ball() { arb_init(x_); }                        ///< exactly 0
   explicit Ball(double d);                        ///< exactly d (finite)
   explicit Ball(long n) : Ball() { arb_set_si(x_, n); }  ///< exactly n
-  Ball(const Ball& o) : Ball() { arb_set(x_, o.x_); }
-  Ball(Ball&& o) noexcept : Ball() { arb_swap(x_, o.x_); }
-  Ball& operator=(const Ball& o) { if (this != &o) arb_set(x_, o.x_); return *this; }
-  Ball& operator=(Ball&& o) noexcept { arb_swap(x_, o.x_); return *this; }
+  Ball(const Ball& o) : Ball() { arb_set(x_, o.x_); }  ///< copy
+  Ball(Ball&& o) noexcept : Ball() { arb_swap(x_, o.x_); }  ///< move
+  Ball& operator=(const Ball& o) { if (this != &o) arb_set(x_, o.x_); return *this; }  ///< copy
+  Ball& operator=(Ball&& o) noexcept { arb_swap(x_, o.x_); return *this; }  ///< move
   ~Ball() { arb_clear(x_); }
 
   /// The interval \f$[lo, hi]\f$ with exact double endpoints (lo <= hi).

@@ -58,7 +58,8 @@ std::vector<Candidate> track_candidates(double a, double b, double q, const std:
 /// The proof of one covering segment.
 struct SegmentProof {
   Verdict verdict;          ///< proved: T continuous on J, T = t2 at theta_t2, T >= 3pi/2 at theta_top
-  double lo = 0, hi = 0;    ///< J
+  double lo = 0;            ///< left end of J
+  double hi = 0;            ///< right end of J
   double theta_top = 0;     ///< the end with \f$T \ge 3\pi/2\f$
   double theta_t2 = 0;      ///< the end with \f$T = t_2\f$
   Ball T_top;               ///< enclosure of T at theta_top (over the box)
@@ -77,7 +78,8 @@ SegmentProof prove_segment(const Model& m, const Candidate& c, const CoveringOpt
 struct CoveringProof {
   Verdict verdict;          ///< proved: J0, J1 disjoint, both certified covering segments
   ParamBox box;             ///< the parameters
-  SegmentProof J0, J1;      ///< the segments (J0 left of J1)
+  SegmentProof J0;          ///< the left segment
+  SegmentProof J1;          ///< the right segment (J0.hi < J1.lo)
   int candidates_tried = 0; ///< candidates examined
   double seconds = 0;       ///< wall time of the whole proof
 };

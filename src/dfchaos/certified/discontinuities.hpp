@@ -46,7 +46,8 @@ struct Tangency {
 /// Lemma 2 on a segment.
 struct DiscontinuityProof {
   Verdict verdict;          ///< proved: exactly the z below, T1 continuous and decreasing elsewhere on [lo, hi]
-  double lo = 0, hi = 0;    ///< the segment covered (contains the requested one)
+  double lo = 0;            ///< left end of the segment covered (contains the requested one)
+  double hi = 0;            ///< right end of the segment covered
   std::vector<Tangency> z;  ///< ascending
   int balls = 0;            ///< certify_T1 calls that succeeded (pieces of the cover)
   double seconds = 0;       ///< wall time

@@ -43,13 +43,22 @@ class Model {
   /// (\f$t_0, t_1\f$ exist).
   Verdict admissible() const;
 
-  Ball a, b, q;            ///< the parameter balls (b, q: the whole ranges)
-  Ball b_lo, b_hi;         ///< the ends of the b range, exact
-  Ball q_lo, q_hi;         ///< the ends of the q range, exact
+  Ball a;                  ///< a (exact)
+  Ball b;                  ///< the whole range of b
+  Ball q;                  ///< the whole range of q
+  Ball b_lo;               ///< lower end of the b range, exact
+  Ball b_hi;               ///< upper end of the b range, exact
+  Ball q_lo;               ///< lower end of the q range, exact
+  Ball q_hi;               ///< upper end of the q range, exact
   Ball two_c;              ///< \f$2c = 2b - q\f$ over the box
-  Ball t0, t1, t2, t3;     ///< the phases over the box
-  Ball t2_at_b_lo, t2_at_b_hi;  ///< \f$t_2\f$ at the two ends of the b range (thin balls)
-  Ball pi, two_pi;         ///< \f$\pi\f$, \f$2\pi\f$
+  Ball t0;                 ///< \f$t_0\f$ over the box
+  Ball t1;                 ///< \f$t_1\f$ over the box
+  Ball t2;                 ///< \f$t_2\f$ over the box
+  Ball t3;                 ///< \f$t_3\f$ over the box
+  Ball t2_at_b_lo;         ///< \f$t_2\f$ at the lower end of the b range (a thin ball)
+  Ball t2_at_b_hi;         ///< \f$t_2\f$ at the upper end of the b range (a thin ball)
+  Ball pi;                 ///< \f$\pi\f$
+  Ball two_pi;             ///< \f$2\pi\f$
 
   /// \f$F(t) = a\sin t + 2b\f$ over the box.
   Ball F(const Ball& t) const;

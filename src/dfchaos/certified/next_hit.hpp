@@ -42,9 +42,11 @@ namespace dfchaos::certified {
 /// A set of start phases over the parameter box: either \f$\theta \in [lo, hi]\f$ for every b of the
 /// box, or the family \f$\theta = t_2(b)\f$ (one start per b).
 struct StartSet {
+  /// Interval: \f$\theta \in [lo, hi]\f$ for every b; AtT2: \f$\theta = t_2(b)\f$.
   enum class Kind { Interval, AtT2 };
   Kind kind = Kind::Interval;  ///< which of the two
-  Ball lo, hi;                 ///< Interval: the ends (exact balls, or lo = the ball of t2 when lo_is_t2)
+  Ball lo;                     ///< Interval: the lower end (exact, or the ball of t2 when lo_is_t2)
+  Ball hi;                     ///< Interval: the upper end (exact)
   bool lo_is_t2 = false;       ///< Interval: the lower end is exactly \f$t_2\f$ (point boxes only)
 
   /// \f$[lo, hi]\f$ with double ends.
@@ -91,13 +93,15 @@ struct T1Options {
   /// the caller proves \f$G_1 < 0\f$ there by another argument (a tangency, Lemma 2).
   std::vector<std::pair<Ball, Ball>> skip;
   /// Float guesses of \f$T_1\f$ at the max and min corners (NaN: ask the floating-point layer).
-  double guess_at_max = 0.0 / 0.0, guess_at_min = 0.0 / 0.0;
+  double guess_at_max = 0.0 / 0.0;
+  double guess_at_min = 0.0 / 0.0;  ///< the same at the min corner
 };
 
 /// The certified next hit over a start set and a parameter box.
 struct T1Proof {
   Verdict verdict;        ///< proved: for every start and b, the first root of \f$G_1\f$ is simple and in [t_lo, t_hi]
-  Ball t_lo, t_hi;        ///< the bracket (exact balls)
+  Ball t_lo;              ///< left end of the bracket (exact)
+  Ball t_hi;              ///< right end of the bracket (exact)
   Ball enclosure;         ///< \f$[t_{lo}, t_{hi}]\f$
   Ball v1_at_max;         ///< \f$\partial_t G_1\f$ at the max corner's root side (impact velocity, for reports)
   NegativityStats stats;  ///< work of the negativity proofs

@@ -35,7 +35,8 @@ Ball G2(const Model& m, const Ball& theta, const Ball& theta1, const Ball& t, co
 /// The certified end of the first progression.
 struct Theta2Proof {
   Verdict verdict;        ///< proved: for every point, \f$\theta_2\f$ is the first zero after \f$\theta_1\f$, simple, in [u_lo, u_hi]
-  Ball u_lo, u_hi;        ///< the bracket (exact balls)
+  Ball u_lo;              ///< left end of the bracket (exact)
+  Ball u_hi;              ///< right end of the bracket (exact)
   Ball enclosure;         ///< \f$[u_{lo}, u_{hi}]\f$
   NegativityStats stats;  ///< work
 };
@@ -52,7 +53,8 @@ Theta2Proof certify_theta2(const Model& m, const StartSet& set, const T1Proof& t
 struct StopArcProof {
   Verdict verdict;        ///< proved: the first stop lies in [from, tau] inside R_k
   long long k = 0;        ///< the arc
-  Ball from, tau;         ///< the first stop lies in (from, tau)
+  Ball from;              ///< the first stop lies after this
+  Ball tau;               ///< and before this
   bool needs_lemma1 = true;  ///< the range meets [t3, t0] + 2 pi k (the mass may wait for t0)
   NegativityStats stats;  ///< work
 };

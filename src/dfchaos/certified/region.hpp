@@ -21,8 +21,10 @@ namespace dfchaos::certified {
 /// What to tile and how much work to allow.
 struct RegionOptions {
   double a = 1;                 ///< forcing amplitude
-  double b_lo = 1e-3, b_hi = 2e-3;  ///< the band in b
-  double q_lo = 0.76, q_hi = 0.99;  ///< the band in q
+  double b_lo = 1e-3;           ///< lower end of the band in b
+  double b_hi = 2e-3;           ///< upper end of the band in b
+  double q_lo = 0.76;           ///< lower end of the band in q
+  double q_hi = 0.99;           ///< upper end of the band in q
   int q_columns = 23;           ///< columns of equal width in q
   double c_start = 0.05;        ///< initial box width in units of b^2/a
   double c_min = 0.003;         ///< smallest width tried before a box is given up (then fresh candidates are tried once)
@@ -33,7 +35,10 @@ struct RegionOptions {
 
 /// One box of the tiling.
 struct RegionBox {
-  double b_lo = 0, b_hi = 0, q_lo = 0, q_hi = 0;  ///< the box
+  double b_lo = 0;              ///< lower end of the box in b
+  double b_hi = 0;              ///< upper end of the box in b
+  double q_lo = 0;              ///< lower end of the box in q
+  double q_hi = 0;              ///< upper end of the box in q
   bool proved = false;          ///< Lemma 4 proved for every parameter in it
   int sub_boxes = 0;            ///< sub-boxes of the proof (1 unless it was split)
   std::string failed_step;      ///< when not proved
@@ -41,7 +46,8 @@ struct RegionBox {
 
 /// The tiling of one column.
 struct RegionColumn {
-  double q_lo = 0, q_hi = 0;    ///< the column
+  double q_lo = 0;              ///< lower end of the column in q
+  double q_hi = 0;              ///< upper end of the column in q
   std::vector<RegionBox> boxes; ///< in increasing b (proved and not proved)
   double b_reached = 0;         ///< the column is tiled (proved or not) from b_lo up to here
   double proved_length = 0;     ///< total b-length of proved boxes

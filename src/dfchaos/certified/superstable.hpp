@@ -60,11 +60,15 @@ int superstable_condition(const Model& m, const TProof& t);
 /// \f$t_2\f$ by \f$\theta_2(t_2)\f$, or the flight from \f$t_2\f$ grazing the delimiter at \f$t_3\f$).
 struct WindowProof {
   Verdict verdict;                        ///< all parts proved
-  double b_lo_float = 0, b_hi_float = 0;  ///< the floating estimate of the window
+  double b_lo_float = 0;                  ///< the floating estimate of the window: left end
+  double b_hi_float = 0;                  ///< the floating estimate of the window: right end
   SuperstableProof inside;                ///< at the middle: Theorem 2 with a certified epsilon
-  double left_out = 0, left_in = 0;       ///< the left edge lies in [left_out, left_in]
-  double right_in = 0, right_out = 0;     ///< the right edge lies in [right_in, right_out]
-  Ball T_left_out, T_right_out;           ///< T(t2) at the outer points (certainly not t2)
+  double left_out = 0;                    ///< the left edge lies in [left_out, left_in]
+  double left_in = 0;                     ///< (see left_out)
+  double right_in = 0;                    ///< the right edge lies in [right_in, right_out]
+  double right_out = 0;                   ///< (see right_in)
+  Ball T_left_out;                        ///< T(t2) at left_out (certainly not t2)
+  Ball T_right_out;                       ///< T(t2) at right_out (certainly not t2)
   int boxes = 0;                          ///< b-boxes of the cover of [left_in, right_in]
   double seconds = 0;                     ///< wall time
 };

@@ -25,7 +25,7 @@ struct Verdict {
   static Verdict fail(std::string step, std::string detail) { return Verdict{false, false, std::move(step), std::move(detail)}; }
   /// A step shown false.
   static Verdict refute(std::string step, std::string detail) { return Verdict{false, true, std::move(step), std::move(detail)}; }
-  explicit operator bool() const { return proved; }
+  explicit operator bool() const { return proved; }  ///< proved
   /// "proved", or "not proved: STEP (DETAIL)".
   std::string describe() const;
 };
