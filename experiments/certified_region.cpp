@@ -50,6 +50,7 @@ int main(int argc, char** argv) {
           max_boxes = std::min(max_boxes, 20LL);
         }
         r.max_boxes = max_boxes;
+        r.progress = true;
         out.parameter("b_lo", r.b_lo);
         out.parameter("b_hi", r.b_hi);
         out.parameter("q_lo", r.q_lo);

@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 
 namespace dfchaos::certified {
 
@@ -118,14 +119,24 @@ RegionResult certify_region(const RegionOptions& opt) {
     if (open.empty()) break;
     const long share = std::max(1L, left / static_cast<long>(open.size()));
     const int m = static_cast<int>(open.size());
+    int finished = 0;
 #pragma omp parallel for schedule(dynamic, 1)
-    for (int j = 0; j < m; ++j) tile_column(opt, st[static_cast<std::size_t>(open[static_cast<std::size_t>(j)])], share);
+    for (int j = 0; j < m; ++j) {
+      ColumnState& s = st[static_cast<std::size_t>(open[static_cast<std::size_t>(j)])];
+      tile_column(opt, s, share);
+      if (opt.progress) {
+#pragma omp critical
+        std::fprintf(stderr, "\rcertified_region: pass %d, column %d/%d done (q/a in [%.4f, %.4f] reached b/a = %.6g)   ", pass + 1, ++finished, m,
+                     s.col.q_lo, s.col.q_hi, s.col.b_reached);
+      }
+    }
     long used = 0;
     for (int i : open) used += st[static_cast<std::size_t>(i)].col.attempts;
     left = opt.max_boxes;
     for (const auto& s : st) left -= s.col.attempts;
     if (used == 0) break;
   }
+  if (opt.progress) std::fprintf(stderr, "\n");
   r.complete = true;
   for (auto& s : st) {
     for (const auto& bx : s.col.boxes) (bx.proved ? r.boxes_proved : r.boxes_failed)++;

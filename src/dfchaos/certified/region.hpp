@@ -31,6 +31,7 @@ struct RegionOptions {
   double c_max = 0.5;           ///< largest width
   int split_depth = 0;          ///< halvings in b of a failed box (same candidates)
   long max_boxes = 20000;       ///< boxes attempted in total (proved or not), all columns
+  bool progress = false;        ///< print progress on stderr
 };
 
 /// One box of the tiling.
