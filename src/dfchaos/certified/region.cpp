@@ -45,6 +45,7 @@ struct ColumnState {
 
 void tile_column(const RegionOptions& opt, ColumnState& st, long budget) {
   const auto start = std::chrono::steady_clock::now();
+  const PrecisionScope precision_of_this_thread(opt.precision);
   RegionColumn& col = st.col;
   const double q_lo = col.q_lo, q_hi = col.q_hi;
   double& b = st.b;

@@ -32,6 +32,7 @@ struct RegionOptions {
   int split_depth = 0;          ///< halvings in b of a failed box (same candidates)
   long max_boxes = 20000;       ///< boxes attempted in total (proved or not), all columns
   bool progress = false;        ///< print progress on stderr
+  long precision = 64;          ///< bits of the ball arithmetic (64: one limb, enough for b/a >= 1e-5)
 };
 
 /// One box of the tiling.
