@@ -117,7 +117,7 @@ bench: deps configure
 # reproduce` certifies (its default is a thin strip that fits the reproduce budget). Rewrites
 # $(BUILD)/data/certified_region*.tsv; `make report` then shows this region. Measured time: see
 # docs/certified.md. Override the band with CERT_REGION="--b-lo ... --b-hi ... --max-boxes ...".
-CERT_REGION ?= --b-lo 1e-3 --b-hi 2e-3 --q-lo 0.76 --q-hi 0.99 --columns 23 --max-boxes 400000
+CERT_REGION ?= --b-lo 1.5e-3 --b-hi 2e-3 --q-lo 0.76 --q-hi 0.99 --columns 23 --max-boxes 200000
 certify-region: build-tools
 	@mkdir -p $(BUILD)/stamps
 	@$(BUILD)/bin/experiments/certified_region --out $(BUILD) $(CERT_REGION)
