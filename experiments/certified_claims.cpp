@@ -76,9 +76,9 @@ int main(int argc, char** argv) {
         auto time_row = [&](const std::string& what, double s) {
           timing_rows += latex_escape(what) + " & " + fmt(s, 3) + "\\\\\n";
         };
-        std::string tex = "\\begin{tabular}{llp{0.45\\linewidth}r}\n\\toprule\nresult & parameters & certified enclosure / outcome & balls\\\\\n\\midrule\n";
+        std::string tex = "\\begin{tabular}{@{}llp{0.5\\linewidth}r@{}}\n\\toprule\nresult & $(q/a,\\ b/a)$ & certified enclosure / outcome & balls\\tabularnewline\n\\midrule\n";
         auto tex_row = [&](const std::string& r, const std::string& p, const std::string& e, const std::string& n) {
-          tex += latex_escape(r) + " & " + p + " & " + e + " & " + n + "\\\\\n";
+          tex += latex_escape(r) + " & " + p + " & \\raggedright " + e + " & " + n + "\\tabularnewline\n";
         };
 
         // ---- Eq. (1) ------------------------------------------------------------------------------
@@ -104,7 +104,8 @@ int main(int argc, char** argv) {
           out.macro("CertSinVarthetaZero", v.sine.mid_str(40));
           out.macro("CertVarthetaZeroDouble", shortest_double(v.value_double));
           out.macro("CertSinVarthetaZeroDouble", shortest_double(v.sine_double));
-          tex_row("Eq. (1)", "---", "$\\vartheta_0 \\in " + v.value.mid_str(30) + "\\pm" + latex_number(v.value.rad_str()) + "$", "---");
+          tex_row("Eq. (1)", "---", "$\\vartheta_0 = " + v.value.mid_str(22) + "\\ldots$, $\\sin\\vartheta_0 = " + v.sine.mid_str(22) + "\\ldots$ (radius " +
+                                        latex_number(v.value.rad_str()) + ")", "---");
         }
 
         // ---- the parameter points ------------------------------------------------------------------
@@ -116,7 +117,7 @@ int main(int argc, char** argv) {
         std::vector<std::pair<const Point*, CoveringProof>> coverings;
         for (const Point& pt : points) {
           const ParamBox box = ParamBox::point(1.0, pt.b, pt.q);
-          const std::string ptxt = "$q/a=$ " + num(pt.q) + ", $b/a=$ " + num(pt.b);
+          const std::string ptxt = "(" + num(pt.q) + ", " + num(pt.b) + ")";
           Json params = Json::object();
           params.set("a", 1.0).set("b", pt.b).set("q", pt.q);
           // Lemma 1 at the point.
@@ -201,7 +202,7 @@ int main(int argc, char** argv) {
                                     to_json(cov), !cov.verdict.proved);
           c.evidence_kind = "sampled";
           out.claim(c);
-          tex_row("Lemma 4 (control)", "$q/a=0.85$, $b/a=0.02$", "not proved: " + latex_escape(cov.verdict.step), "---");
+          tex_row("Lemma 4 (control)", "(0.85, 0.02)", "not proved (" + latex_escape(cov.verdict.step) + ")", "---");
         }
 
         // ---- Lemma 2 -----------------------------------------------------------------------------
@@ -222,7 +223,7 @@ int main(int argc, char** argv) {
             for (const auto& z : p.z)
               t.row({std::string(r.tag), r.b, std::string(r.l2 ? "L2" : "L0"), static_cast<long long>(z.k), z.z.mid(), z.z.radius(), z.t_star.mid(),
                      z.verdict.proved ? z.jump.lower() : NAN});
-            tex_row("Lemma 2", "$b/a=$ " + num(r.b) + ", $" + (r.l2 ? std::string("L_2") : std::string("L_0")) + "$",
+            tex_row(std::string("Lemma 2 on ") + (r.l2 ? "L2" : "L0"), "(---, " + num(r.b) + ")",
                     p.verdict.proved ? "exactly " + std::to_string(p.z.size()) + " discontinuities, enclosed" : "not proved: " + latex_escape(p.verdict.step),
                     std::to_string(p.balls));
             if (std::string(r.tag) == "D") out.macro("CertLTwoCountD", std::to_string(p.z.size()));
@@ -259,7 +260,7 @@ int main(int argc, char** argv) {
                                     e, ok, cov.verdict.proved ? &d.verdict : &cov.verdict);
           c.parameters = Json::object().set("a", 1.0).set("b", b).set("q", q);
           out.claim(c);
-          tex_row("Lemma 4 (the paper's L1, L2)", "$q/a=0.85$, $b/a=5\\cdot10^{-5}$",
+          tex_row("Lemma 4 (paper's L1, L2)", "(0.85, " + num(b) + ")",
                   ok ? "$n=" + std::to_string(d.z.size()) + "$ on $L_2$; $J_0=[" + fmt(cov.J0.lo, 8) + ", " + fmt(cov.J0.hi, 8) + "]$, $J_1=[" +
                            fmt(cov.J1.lo, 8) + ", " + fmt(cov.J1.hi, 8) + "]$ in branches of $L_2$"
                      : "not proved",
@@ -315,9 +316,9 @@ int main(int argc, char** argv) {
             out.claim(c);
             t.row({static_cast<long long>(i), lo, hi, static_cast<long long>(w.verdict.proved), w.left_out, w.left_in, w.right_in, w.right_out,
                    static_cast<long long>(w.inside.condition), w.inside.eps, static_cast<long long>(w.boxes)});
-            tex_row("Theorem 2", "$q/a=0.85$",
-                    w.verdict.proved ? "window $b/a\\in[" + fmt(w.left_in, 10) + ", " + fmt(w.right_in, 10) + "]$, edges to $\\pm$" +
-                                           num(w.left_in - w.left_out, 2) + "; (" + std::to_string(w.inside.condition) + "), $\\varepsilon=" +
+            tex_row("Theorem 2", "(0.85, ---)",
+                    w.verdict.proved ? "$T(t_2)=t_2$ on $b/a\\in[" + fmt(w.left_in, 10) + ", " + fmt(w.right_in, 10) + "]$, edges within " +
+                                           num(w.left_in - w.left_out, 2) + "; middle: (" + std::to_string(w.inside.condition) + "), $\\varepsilon=" +
                                            fmt(w.inside.eps, 3) + "$"
                                      : "not proved: " + latex_escape(w.verdict.step),
                     std::to_string(w.boxes));
