@@ -150,7 +150,7 @@ std::vector<Candidate> track_candidates(double a, double b, double q, const std:
           const double x = c.theta_t2 + (k % 2 ? 1.0 : -1.0) * step * ((k + 1) / 2);
           if (return_map_step(p, x).T == *p.t2()) n.theta_t2 = plateau_middle(p, x, scale, n.plateau);
         }
-        if (std::isnan(n.theta_t2)) return {};
+        if (std::isnan(n.theta_t2)) continue;  // this one is lost
       }
       const double T_top = return_map_step(p, c.theta_top).T;
       if (!(T_top >= lo_target && T_top <= hi_limit)) {
@@ -169,7 +169,7 @@ std::vector<Candidate> track_candidates(double a, double b, double q, const std:
             if (Tz > hi_limit) break;
             if (Tz >= target) { x = z; found = true; }
           }
-          if (!found) return {};
+          if (!found) continue;
         }
         for (int it = 0; it < 30; ++it) {
           const double mid = 0.5 * (x + y);
@@ -177,13 +177,14 @@ std::vector<Candidate> track_candidates(double a, double b, double q, const std:
         }
         n.theta_top = x;
       }
-      if (!out.empty() && !(out.back().hi() < n.lo())) return {};
-      if (n.lo() < *p.t2() || n.hi() > kThreeHalvesPi) return {};
+      if (!out.empty() && !(out.back().hi() < n.lo())) continue;
+      if (n.lo() < *p.t2() || n.hi() > kThreeHalvesPi) continue;
       out.push_back(n);
     }
   } catch (const std::exception&) {
     return {};
   }
+  if (out.size() < 2) return {};
   return out;
 }
 

@@ -51,8 +51,9 @@ struct Candidate {
 std::vector<Candidate> covering_candidates(double a, double b, double q, const CoveringOptions& opt = {});
 
 /// The candidates `old` (of nearby parameters) moved to (a, b, q) by local floating searches: the t2
-/// end to the middle of its plateau, the top end re-aimed if T there lost its margin. Empty when a
-/// candidate cannot be followed (then search afresh with covering_candidates()).
+/// end to the middle of its plateau, the top end re-aimed if T there lost its margin. Candidates
+/// that cannot be followed are dropped; empty when fewer than two remain (then search afresh with
+/// covering_candidates()).
 std::vector<Candidate> track_candidates(double a, double b, double q, const std::vector<Candidate>& old, const CoveringOptions& opt = {});
 
 /// The proof of one covering segment.

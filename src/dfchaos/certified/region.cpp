@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <algorithm>
 #include <cstdio>
 
 namespace dfchaos::certified {
@@ -35,6 +36,16 @@ CoveringProof prove_covering_split(const ParamBox& box, const std::vector<Candid
 
 namespace {
 
+/// The two candidates whose plateau T = t2 is widest (they survive the widest boxes), ascending.
+std::vector<Candidate> widest_two(std::vector<Candidate> c) {
+  if (c.size() <= 2) return c;
+  std::vector<std::size_t> idx(c.size());
+  for (std::size_t i = 0; i < idx.size(); ++i) idx[i] = i;
+  std::stable_sort(idx.begin(), idx.end(), [&](std::size_t x, std::size_t y) { return c[x].plateau > c[y].plateau; });
+  const std::size_t i = std::min(idx[0], idx[1]), j = std::max(idx[0], idx[1]);
+  return {c[i], c[j]};
+}
+
 /// The state of a column between passes (so that a later pass resumes where the last stopped).
 struct ColumnState {
   RegionColumn col;
@@ -63,14 +74,14 @@ void tile_column(const RegionOptions& opt, ColumnState& st, long budget) {
     const double bc = 0.5 * (box.b_lo + box.b_hi), qc = 0.5 * (q_lo + q_hi);
     if (!cand.empty()) cand = track_candidates(opt.a, bc, qc, cand);
     const bool fresh = cand.empty();
-    if (fresh) cand = covering_candidates(opt.a, bc, qc);
+    if (fresh) cand = widest_two(covering_candidates(opt.a, bc, qc));
     // A box too wide fails at its ends: no splitting there (the width is adapted instead).
     CoveringOptions copt;
     copt.end_depth = 0;
     copt.max_depth = 12;
     CoveringProof p = prove_covering_split(box, cand, opt.split_depth, sub, copt);
     if (!p.verdict && !fresh && c <= opt.c_min) {
-      cand = covering_candidates(opt.a, bc, qc);
+      cand = widest_two(covering_candidates(opt.a, bc, qc));
       sub = 0;
       p = prove_covering_split(box, cand, opt.split_depth, sub, copt);
     }
