@@ -20,12 +20,12 @@ using namespace dfchaos::certified;
 
 int main(int argc, char** argv) {
   RegionOptions r;
-  r.b_lo = 1.99e-3;
+  r.b_lo = 1.95e-3;
   r.b_hi = 2e-3;
   r.q_lo = 0.76;
   r.q_hi = 0.99;
   r.q_columns = 23;
-  long long max_boxes = 3000;
+  long long max_boxes = 12000;
   return experiments::run(
       argc, argv, "certified_region", "Theorem 1 (Lemma 4) proved over boxes of parameters (issue 14)",
       [&](experiments::OptionSet& app) {
