@@ -337,6 +337,21 @@ int main(int argc, char** argv) {
             }
           }
           out.table("windows", t, "superstability windows at q/a = 0.85: the certified brackets of both edges");
+          // Erratum: (2) and (22) do not suffice when b exceeds b0(q) (Lemma 1 fails).
+          const double bx = 0.10854;
+          const Theorem2Counterexample x = prove_theorem2_counterexample(1.0, bx, q);
+          Json e = Json::object();
+          e.set("theta2_phase", ball_json(x.theta2_phase, 15)).set("u_at_t2", ball_json(x.u_at_t2, 10)).set("u_at_t3", ball_json(x.u_at_t3, 10));
+          e.set("T_at_t2", ball_json(x.T, 15));
+          Claim ce = certified_claim("cert.thm2.erratum", "Theorem 2, Lemma 1",
+                                     "Theorem 2 needs b < b0(q) besides (2) and (22): at (q/a, b/a) = (0.85, 0.10854) (doubles), (2) and (22) hold "
+                                     "(certified), but the progression from rest at t0 does not stop before t2 (u(t2) > 0 > u(t3), Eq. 8 reversed): "
+                                     "it stops at t4 in (t2, t3) where the mass flies (scenario D), so T(t2) = t4 != t2 and t2 is not superstable.",
+                                     e, x.verdict.proved, &x.verdict);
+          ce.parameters = Json::object().set("a", 1.0).set("b", bx).set("q", q);
+          out.claim(ce);
+          tex_row("Theorem 2 (erratum)", "(0.85, " + num(bx) + ")",
+                  x.verdict.proved ? "(2), (22) hold; $T(t_2)=t_4\\in" + x.T.mid_str(10) + "\\ne t_2$ (scenario D)" : "not proved", "---");
         }
 
         tex += "\\bottomrule\n\\end{tabular}\n";

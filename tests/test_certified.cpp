@@ -253,6 +253,18 @@ TEST(CertifiedSuperstable, WindowEdgesAndNoSuperstabilityOutside) {
   EXPECT_FALSE(superstable_check(Parameters(1, w.right_out, 0.85), 2).fixed);
 }
 
+// Erratum: Theorem 2's hypotheses (2) and (22) hold, but b > b0(q): T(t2) != t2.
+TEST(CertifiedSuperstable, Theorem2NeedsLemma1) {
+  const Theorem2Counterexample x = prove_theorem2_counterexample(1, 0.10854, 0.85);
+  ASSERT_TRUE(x.verdict.proved) << x.verdict.describe();
+  const MapStep s = return_map_step(Parameters(1, 0.10854, 0.85), *Parameters(1, 0.10854, 0.85).t2());
+  EXPECT_EQ(s.scenario, Scenario::D);
+  EXPECT_TRUE(within(x.T, s.T, kPhaseAbsTol));
+  EXPECT_FALSE(prove_superstable(1, 0.10854, 0.85).verdict.proved);
+  // Below b0(q) there is no such counterexample at a superstable point.
+  EXPECT_FALSE(prove_theorem2_counterexample(1, 0.0641, 0.85).verdict.proved);
+}
+
 TEST(CertifiedRegion, SmallBandIsDeterministicAndProved) {
   RegionOptions o;
   o.b_lo = 1.999e-3;

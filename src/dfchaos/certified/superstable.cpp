@@ -172,4 +172,54 @@ WindowProof prove_window(double a, double q, double b_lo, double b_hi, double re
   return finish(Verdict::fail("window: edges", last));
 }
 
+Theorem2Counterexample prove_theorem2_counterexample(double a, double b, double q) {
+  Theorem2Counterexample r;
+  const Model m(ParamBox::point(a, b, q));
+  if (Verdict v = m.admissible(); !v) {
+    r.verdict = v;
+    return r;
+  }
+  static const Vartheta0 v0 = certify_vartheta0(128);
+  if (!(lt(2.0 * m.b, m.a) && lt(m.a * v0.sine, m.q) && lt(m.q, m.a))) {
+    r.verdict = Verdict::fail("Theorem 2 counterexample: (2)", "assumptions (2) not proved");
+    return r;
+  }
+  Budget budget;
+  const StartSet set = StartSet::from_t2(m, m.t2.upper());
+  const T1Proof t1 = certify_T1(m, set, budget);
+  if (!t1.verdict) {
+    r.verdict = t1.verdict;
+    return r;
+  }
+  const Theta2Proof th = certify_theta2(m, set, t1, budget);
+  if (!th.verdict) {
+    r.verdict = th.verdict;
+    return r;
+  }
+  r.theta2_phase = phase_of(m, th.enclosure);
+  if (!(lt(m.t3, r.theta2_phase) && lt(r.theta2_phase, m.t0 + m.two_pi))) {
+    r.verdict = Verdict::fail("Theorem 2 counterexample: (22)", "theta2(t2) mod 2pi = " + r.theta2_phase.str(12));
+    return r;
+  }
+  auto u = [&](const Ball& t) { return -(m.a * (cos(t) - cos(m.t0))) + m.two_c * (t - m.t0); };
+  r.u_at_t2 = u(m.t2);
+  r.u_at_t3 = u(m.t3);
+  if (!r.u_at_t2.is_positive() || !r.u_at_t3.is_negative()) {
+    r.verdict = Verdict::fail("Theorem 2 counterexample: u(t2) > 0 > u(t3)", "u(t2) = " + r.u_at_t2.str(8) + ", u(t3) = " + r.u_at_t3.str(8));
+    return r;
+  }
+  // t4 by bisection on the sign of u in [t2, t3] (u decreasing there).
+  Ball lo = m.t2.upper_ball(), hi = m.t3.lower_ball();
+  for (int it = 0; it < 200; ++it) {
+    const Ball mid = ((lo + hi) * 0.5).mid_ball();
+    const Ball v = u(mid);
+    if (v.is_positive()) lo = mid;
+    else if (v.is_negative()) hi = mid;
+    else break;
+  }
+  r.T = Ball::hull(lo, hi);
+  r.verdict = Verdict::ok();
+  return r;
+}
+
 }  // namespace dfchaos::certified

@@ -77,4 +77,18 @@ struct WindowProof {
 /// relative half-width `rel` (grown x10, at most 4 times, until proved).
 WindowProof prove_window(double a, double q, double b_lo, double b_hi, double rel = 1e-9);
 
+/// Theorem 2 as stated, tested where Lemma 1 fails: hypotheses (2) and (22) certified, and yet
+/// \f$T(t_2) \ne t_2\f$, because the progression that starts from rest at \f$t_0\f$ does not stop before
+/// \f$t_2\f$ (b above \f$b_0(q)\f$): with \f$u(t) = -a(\cos t - \cos t_0) + 2c(t - t_0)\f$ (Eq. 7), u > 0 on
+/// \f$(t_0, t_1]\f$, u decreasing on \f$[t_1, t_3]\f$, \f$u(t_2) > 0 > u(t_3)\f$: it stops once, at
+/// \f$t_4 \in (t_2, t_3)\f$, where the mass flies (scenario D): \f$T(t_2) = t_4 \ne t_2\f$.
+struct Theorem2Counterexample {
+  Verdict verdict;       ///< proved: (2) and (22) hold, and T(t2) = t4 in (t2, t3)
+  Ball theta2_phase;     ///< \f$\theta_2(t_2) \bmod 2\pi\f$ (in \f$(t_3, 2\pi) \cup [0, t_0)\f$)
+  Ball u_at_t2;          ///< Eq. (8): positive
+  Ball u_at_t3;          ///< negative
+  Ball T;                ///< \f$T(t_2) = t_4\f$
+};
+Theorem2Counterexample prove_theorem2_counterexample(double a, double b, double q);
+
 }  // namespace dfchaos::certified
