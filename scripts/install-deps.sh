@@ -11,7 +11,7 @@ set -euo pipefail
 
 profile=${1:-build}
 build_pkgs=(g++ cmake make pkg-config python3 python3-mpmath libeigen3-dev libgsl-dev libgtest-dev libgmock-dev
-            libcli11-dev libbenchmark-dev)
+            libcli11-dev libbenchmark-dev libflint-arb-dev libflint-dev libmpfr-dev libgmp-dev)
 report_pkgs=(gnuplot-nox latexmk texlive-latex-base texlive-latex-recommended
              texlive-latex-extra texlive-fonts-recommended texlive-pictures doxygen poppler-utils)
 

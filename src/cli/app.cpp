@@ -7,6 +7,7 @@
 ///   dfchaos orbit      --a A --b B --q Q --theta0 X --steps N
 ///   dfchaos simulate   --a A --b B --q Q --x0 X --y0 Y --v0 V --t0 T --t-end E [--sample DT]
 ///   dfchaos provenance [--latex]
+///   dfchaos certify WHAT [--a A --b B|LO:HI --q Q|LO:HI ...]   (certify.hpp)
 ///
 /// Output is tab-separated with one header line per table, numbers in %.17g. Bad input: one line
 /// on stderr naming the parameter and the condition, exit status 2, nothing on stdout. A bounded
@@ -27,7 +28,8 @@ int run(int argc, char** argv) {
   app.require_subcommand(1);
   app.footer("Exit status: 0 success, 1 a bounded computation gave up or writing failed, 2 bad input.\n"
              "'dfchaos COMMAND --help' describes each command's options and output columns.");
-  const std::vector<Command> commands = {add_info(app), add_map(app), add_orbit(app), add_simulate(app), add_provenance(app)};
+  const std::vector<Command> commands = {add_info(app), add_map(app), add_orbit(app), add_simulate(app), add_provenance(app),
+                                         add_certify_command(app)};
 
   if (argc > 1 && argv[1][0] != '-') {
     const std::string sub = argv[1];

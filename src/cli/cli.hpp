@@ -69,5 +69,6 @@ Command add_map(CLI::App& app);
 Command add_orbit(CLI::App& app);
 Command add_simulate(CLI::App& app);
 Command add_provenance(CLI::App& app);
+Command add_certify_command(CLI::App& app);  ///< certify.cpp: proofs in ball arithmetic (issue 14)
 
 }  // namespace dfchaos::cli

@@ -59,6 +59,11 @@ class Claim {
   Claim& parameter(const std::string& key, Json value);
   /// Records a number (or text) the verdict rests on.
   Claim& evidence(const std::string& key, Json value);
+  /// Replaces all recorded parameters by the keys of a JSON object. @throws std::logic_error otherwise.
+  Claim& parameter_object(const Json& object);
+  /// Replaces all recorded evidence by the keys of a JSON object (e.g. a certified result's record).
+  /// @throws std::logic_error if it is not an object.
+  Claim& evidence_object(const Json& object);
   /// Sets the tolerance of the check: recorded as evidence "tolerance" and written into `{tol}`.
   Claim& tolerance(double tol);
   /// Sets the verdict: holds or fails.

@@ -28,6 +28,8 @@ class Json {
   Json& set(const std::string& key, Json value);
   /// Appends to an array. @throws std::logic_error on a value that is not an array.
   Json& push(Json value);
+  /// Whether this is an object (with or without keys).
+  bool is_object() const;
   /// Whether this is an object with no keys (or an empty array).
   bool empty() const;
   /// Serialises: numbers in %.17g (round-trip exact), non-finite numbers as null, a final newline.

@@ -78,6 +78,8 @@ class Output {
   int finish() const;
 
   const std::string& name() const { return name_; }  ///< the experiment's name
+  /// The output root (for side files outside the experiment's outputs, e.g. timings under bench/).
+  const std::filesystem::path& root() const { return root_; }
 
  private:
   std::string name_;

@@ -54,6 +54,18 @@ Claim& Claim::evidence(const std::string& key, Json value) {
   evidence_.set(key, std::move(value));
   return *this;
 }
+Claim& Claim::parameter_object(const Json& object) {
+  if (!object.is_object()) throw std::logic_error("claim " + id_ + ": parameters must be a JSON object");
+  parameters_ = object;
+  return *this;
+}
+Claim& Claim::evidence_object(const Json& object) {
+  if (!object.is_object()) throw std::logic_error("claim " + id_ + ": evidence must be a JSON object");
+  evidence_ = object;
+  if (has_tolerance_) evidence_.set("tolerance", tolerance_);
+  return *this;
+}
+
 Claim& Claim::tolerance(double tol) {
   has_tolerance_ = true;
   tolerance_ = tol;

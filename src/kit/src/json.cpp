@@ -35,6 +35,8 @@ Json& Json::push(Json value) {
   (*a)->push_back(std::move(value));
   return *this;
 }
+bool Json::is_object() const { return std::holds_alternative<std::shared_ptr<Object>>(v_); }
+
 bool Json::empty() const {
   if (auto* o = std::get_if<std::shared_ptr<Object>>(&v_)) return (*o)->empty();
   if (auto* a = std::get_if<std::shared_ptr<Array>>(&v_)) return (*a)->empty();

@@ -1,0 +1,138 @@
+/// @file bench_certified.cpp
+/// @brief `make bench` (issue 14): time per certified proof, one core. A covering proof (Lemma 4)
+/// at each of the issue's parameter points, with and without the floating candidate search; one
+/// certified T at a thin phase; Lemma 2 on L0; the periodic orbit of period 12; a Lemma 4 proof
+/// over a parameter box. The issue's target: a covering proof at one point in at most 30 s.
+/// Writes BUILD/bench/bench_certified.json and bench_certified.tex (timings: not in the manifest).
+#include <benchmark/benchmark.h>
+
+#include <cstdio>
+#include <map>
+#include <string>
+
+#include "dfchaos/certified/json.hpp"
+#include "kit/format.hpp"
+#include "kit/json.hpp"
+#include "kit/output.hpp"
+
+namespace {
+
+using namespace dfchaos;
+using namespace dfchaos::certified;
+using namespace dfchaos::kit;
+
+struct Point {
+  double q, b;
+};
+const Point kPoints[] = {{0.85, 1e-3}, {0.85, 3e-3}, {0.95, 1e-2}, {0.85, 5e-5}};
+
+void bm_covering(benchmark::State& state) {
+  const Point pt = kPoints[state.range(0)];
+  bool proved = true;
+  for (auto _ : state) proved = proved && prove_covering(ParamBox::point(1, pt.b, pt.q)).verdict.proved;
+  state.SetLabel("q/a=" + format_significant(pt.q, 3) + " b/a=" + format_significant(pt.b, 2) + (proved ? " proved" : " NOT proved"));
+}
+
+void bm_covering_proof_only(benchmark::State& state) {
+  const Point pt = kPoints[state.range(0)];
+  const auto c = covering_candidates(1, pt.b, pt.q);
+  for (auto _ : state) benchmark::DoNotOptimize(prove_covering(ParamBox::point(1, pt.b, pt.q), c).verdict.proved);
+}
+
+void bm_T_thin(benchmark::State& state) {
+  const Model m(ParamBox::point(1, 1e-3, 0.85));
+  for (auto _ : state) {
+    Budget budget;
+    benchmark::DoNotOptimize(certify_T(m, StartSet::point(3.19), budget).verdict.proved);
+  }
+}
+
+void bm_lemma2(benchmark::State& state) {
+  for (auto _ : state) benchmark::DoNotOptimize(prove_discontinuities(1, 3e-3, L_101pi_100(), L_3pi_2()).verdict.proved);
+}
+
+void bm_periodic12(benchmark::State& state) {
+  const CoveringProof c = prove_covering(ParamBox::point(1, 3e-3, 0.85));
+  for (auto _ : state) benchmark::DoNotOptimize(prove_periodic(c, 12).verdict.proved);
+}
+
+void bm_box(benchmark::State& state) {
+  const ParamBox box{1, 3e-3, 3e-3 + 4e-7, 0.85, 0.86};
+  const auto c = covering_candidates(1, 3e-3 + 2e-7, 0.855);
+  for (auto _ : state) benchmark::DoNotOptimize(prove_covering(box, c).verdict.proved);
+}
+
+class Collector : public benchmark::ConsoleReporter {
+ public:
+  std::map<std::string, double> seconds;
+  void ReportRuns(const std::vector<Run>& runs) override {
+    for (const auto& r : runs)
+      if (r.iterations > 0) seconds[r.benchmark_name()] = r.real_accumulated_time / static_cast<double>(r.iterations);
+    ConsoleReporter::ReportRuns(runs);
+  }
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  // Files only under --out=DIR and only for a complete measurement (as bench_return_map).
+  std::string out;
+  std::vector<char*> args;
+  for (int i = 0; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a.rfind("--out=", 0) == 0) out = a.substr(6);
+    else args.push_back(argv[i]);
+  }
+  for (int k = 0; k < 4; ++k) {
+    benchmark::RegisterBenchmark(("covering/" + std::to_string(k)).c_str(), bm_covering)->Arg(k)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("covering_proof_only/" + std::to_string(k)).c_str(), bm_covering_proof_only)->Arg(k)->Unit(benchmark::kMillisecond);
+  }
+  benchmark::RegisterBenchmark("T_thin_phase", bm_T_thin)->Unit(benchmark::kMicrosecond);
+  benchmark::RegisterBenchmark("lemma2_L0_b3e-3", bm_lemma2)->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark("periodic_m12_b3e-3", bm_periodic12)->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark("covering_box_4e-7x0.01", bm_box)->Unit(benchmark::kMillisecond);
+  int n = static_cast<int>(args.size());
+  benchmark::Initialize(&n, args.data());
+  Collector collector;
+  benchmark::RunSpecifiedBenchmarks(&collector);
+  benchmark::Shutdown();
+
+  const std::map<std::string, std::string> names = {
+      {"covering/0/0", "Lemma 4 at $(0.85, 10^{-3})$"},           {"covering/1/1", "Lemma 4 at $(0.85, 3\\cdot10^{-3})$"},
+      {"covering/2/2", "Lemma 4 at $(0.95, 10^{-2})$"},           {"covering/3/3", "Lemma 4 at $(0.85, 5\\cdot10^{-5})$"},
+      {"covering_proof_only/0/0", "\\quad proof only (candidates given)"}, {"covering_proof_only/1/1", "\\quad proof only"},
+      {"covering_proof_only/2/2", "\\quad proof only"},            {"covering_proof_only/3/3", "\\quad proof only"},
+      {"T_thin_phase", "certified $T$ at one phase"},              {"lemma2_L0_b3e-3", "Lemma 2 on $L_0$, $b/a=3\\cdot10^{-3}$ (52 jumps)"},
+      {"periodic_m12_b3e-3", "periodic orbit, $m=12$ (Krawczyk)"},   {"covering_box_4e-7x0.01", "Lemma 4 over a box $4\\cdot10^{-7}\\times0.01$"}};
+  Json doc = Json::object();
+  std::string tex = "% generated by bench_certified (make bench); do not edit\n\\begin{tabular}{lr}\n\\toprule\ncertified proof (one core) & ms\\\\\n\\midrule\n";
+  for (const auto& [k, s] : collector.seconds) {
+    doc.set(k, s);
+    const auto it = names.find(k);
+    tex += (it == names.end() ? latex_escape(k) : it->second) + " & " + latex_number(format_significant(s * 1e3, 3)) + "\\\\\n";
+  }
+  tex += "\\bottomrule\n\\end{tabular}\n";
+  double worst = 0;
+  for (int k = 0; k < 4; ++k)
+    if (const auto it = collector.seconds.find("covering/" + std::to_string(k) + "/" + std::to_string(k)); it != collector.seconds.end())
+      worst = std::max(worst, it->second);
+  doc.set("target_covering_at_most_30_s", worst <= 30).set("worst_covering_seconds", worst);
+  std::printf("target %-55s %s (%.3g s)\n", "covering proof at one point <= 30 s", worst <= 30 ? "met" : "MISSED", worst);
+  if (out.empty()) {
+    std::printf("bench: no --out=DIR given: nothing written\n");
+    return 0;
+  }
+  if (collector.seconds.size() != names.size()) {
+    std::printf("bench: %zu of %zu benchmarks measured (a filter or a listing): nothing written\n", collector.seconds.size(), names.size());
+    return 0;
+  }
+  try {
+    kit::write_all_or_nothing({{std::filesystem::path(out) / "bench" / "bench_certified.json", doc.dump()},
+                               {std::filesystem::path(out) / "bench" / "bench_certified.tex", tex}});
+  } catch (const kit::OutputError& e) {
+    std::fprintf(stderr, "bench_certified: error: %s\n", e.what());
+    return e.bad_path() ? 2 : 1;
+  }
+  std::printf("bench: wrote %s/bench/bench_certified.json and %s/bench/bench_certified.tex\n", out.c_str(), out.c_str());
+  return 0;
+}

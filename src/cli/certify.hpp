@@ -1,0 +1,42 @@
+/// @file certify.hpp
+/// @brief `dfchaos certify`: certified verdicts (issue 14) from the ball-arithmetic layer.
+///
+///   dfchaos certify vartheta0
+///   dfchaos certify lemma1          --a A --b B|LO:HI --q Q|LO:HI
+///   dfchaos certify b0              --a A --q Q
+///   dfchaos certify discontinuities --a A --b B [--segment L0|L2]
+///   dfchaos certify covering        --a A --b B|LO:HI --q Q|LO:HI
+///   dfchaos certify periodic        --a A --b B --q Q --period M
+///   dfchaos certify superstable     --a A --b B --q Q [--window LO:HI]
+///
+/// Prints one JSON object: "proved", "statement", enclosures (decimal mid and radius), for covering
+/// "J0" and "J1", and on failure "failed_step". Exit status 0 when proved, 1 when not proved (an
+/// answer, not an error), 2 for bad input (one line on stderr naming the parameter, nothing on stdout).
+#pragma once
+
+#include <string>
+
+namespace CLI {
+class App;
+}
+
+namespace dfchaos::cli {
+
+/// The options of `certify`.
+struct CertifyOptions {
+  std::string what;          ///< vartheta0, lemma1, b0, discontinuities, covering, periodic, superstable
+  std::string a = "1";       ///< a (a number)
+  std::string b;             ///< b: a number or LO:HI
+  std::string q;             ///< q: a number or LO:HI
+  int period = 0;            ///< periodic: the minimal period m
+  std::string segment = "L0";  ///< discontinuities: L0 = [101pi/100, 3pi/2] or L2 = [101pi/100, 51pi/50]
+  std::string window;        ///< superstable: a window LO:HI in b (floating estimate) to certify with its edges
+};
+
+/// Registers the `certify` subcommand on `app`, bound to `o`; returns it.
+CLI::App* add_certify(CLI::App& app, CertifyOptions& o);
+
+/// Runs `certify`: JSON on stdout; returns the exit status (0 proved, 1 not proved, 2 bad input).
+int run_certify(const CertifyOptions& o);
+
+}  // namespace dfchaos::cli

@@ -1,0 +1,188 @@
+#include "dfchaos/certified/ball.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+namespace dfchaos::certified {
+
+namespace {
+thread_local long g_prec = 128;
+
+std::string take(char* s) {
+  std::string r(s);
+  flint_free(s);
+  return r;
+}
+}  // namespace
+
+long precision() { return g_prec; }
+
+PrecisionScope::PrecisionScope(long bits) : saved_(g_prec) {
+  if (bits < 32) throw std::invalid_argument("PrecisionScope: at least 32 bits");
+  g_prec = bits;
+}
+PrecisionScope::~PrecisionScope() { g_prec = saved_; }
+
+Ball::Ball(double d) : Ball() {
+  if (!std::isfinite(d)) throw std::invalid_argument("Ball: non-finite double");
+  arb_set_d(x_, d);
+}
+
+Ball Ball::interval(double lo, double hi) {
+  if (!(lo <= hi) || !std::isfinite(lo) || !std::isfinite(hi)) throw std::invalid_argument("Ball::interval: need finite lo <= hi");
+  Ball r;
+  arf_t a, b;
+  arf_init(a);
+  arf_init(b);
+  arf_set_d(a, lo);
+  arf_set_d(b, hi);
+  arb_set_interval_arf(r.x_, a, b, g_prec);
+  arf_clear(a);
+  arf_clear(b);
+  return r;
+}
+
+Ball Ball::hull(const Ball& x, const Ball& y) {
+  Ball r;
+  arb_union(r.x_, x.x_, y.x_, g_prec);
+  return r;
+}
+
+Ball Ball::decimal(const std::string& s) {
+  Ball r;
+  if (arb_set_str(r.x_, s.c_str(), g_prec) != 0) throw std::invalid_argument("Ball::decimal: not a number: " + s);
+  return r;
+}
+
+Ball Ball::pi() {
+  Ball r;
+  arb_const_pi(r.x_, g_prec);
+  return r;
+}
+
+double Ball::lower() const {
+  arf_t t;
+  arf_init(t);
+  arb_get_lbound_arf(t, x_, g_prec);
+  const double d = arf_get_d(t, ARF_RND_FLOOR);
+  arf_clear(t);
+  return d;
+}
+
+double Ball::upper() const {
+  arf_t t;
+  arf_init(t);
+  arb_get_ubound_arf(t, x_, g_prec);
+  const double d = arf_get_d(t, ARF_RND_CEIL);
+  arf_clear(t);
+  return d;
+}
+
+double Ball::mid() const { return arf_get_d(arb_midref(x_), ARF_RND_NEAR); }
+
+double Ball::radius() const { return mag_get_d(arb_radref(x_)); }
+
+Ball Ball::lower_ball() const {
+  Ball r;
+  arf_t t;
+  arf_init(t);
+  arb_get_lbound_arf(t, x_, g_prec);
+  arb_set_arf(r.x_, t);
+  arf_clear(t);
+  return r;
+}
+
+Ball Ball::upper_ball() const {
+  Ball r;
+  arf_t t;
+  arf_init(t);
+  arb_get_ubound_arf(t, x_, g_prec);
+  arb_set_arf(r.x_, t);
+  arf_clear(t);
+  return r;
+}
+
+Ball Ball::mid_ball() const {
+  Ball r;
+  arb_set_arf(r.x_, arb_midref(x_));
+  return r;
+}
+
+bool Ball::contains(double d) const {
+  if (!std::isfinite(d)) return false;
+  arf_t t;
+  arf_init(t);
+  arf_set_d(t, d);
+  const bool c = arb_contains_arf(x_, t);
+  arf_clear(t);
+  return c;
+}
+
+std::string Ball::str(long digits) const { return take(arb_get_str(x_, digits, 0)); }
+
+std::string Ball::mid_str(long digits) const {
+  Ball m = mid_ball();
+  return take(arb_get_str(m.x_, digits, ARB_STR_NO_RADIUS));
+}
+
+std::string Ball::rad_str() const {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.3g", radius());
+  return buf;
+}
+
+std::string Ball::interval_str(long digits) const {
+  // Outward rounding: the decimal ends are computed as balls and their own outer ends taken.
+  Ball lo = lower_ball(), hi = upper_ball();
+  auto out = [&](const Ball& v, bool down) {
+    // Print with `digits` digits and then nudge outward by one unit in the last place.
+    char* s = arb_get_str(v.x_, digits, ARB_STR_NO_RADIUS);
+    std::string t(s);
+    flint_free(s);
+    Ball d = Ball::decimal(t);
+    if (down ? arb_le(d.x_, v.x_) : arb_ge(d.x_, v.x_)) return t;
+    // One digit more, widened: fall back to a %.17g of the outward double.
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%.17g", down ? v.lower() : v.upper());
+    return std::string(buf);
+  };
+  return "[" + out(lo, true) + ", " + out(hi, false) + "]";
+}
+
+Ball operator+(const Ball& x, const Ball& y) { Ball r; arb_add(r.get(), x.get(), y.get(), g_prec); return r; }
+Ball operator-(const Ball& x, const Ball& y) { Ball r; arb_sub(r.get(), x.get(), y.get(), g_prec); return r; }
+Ball operator*(const Ball& x, const Ball& y) { Ball r; arb_mul(r.get(), x.get(), y.get(), g_prec); return r; }
+Ball operator/(const Ball& x, const Ball& y) { Ball r; arb_div(r.get(), x.get(), y.get(), g_prec); return r; }
+Ball operator-(const Ball& x) { Ball r; arb_neg(r.get(), x.get()); return r; }
+Ball operator+(const Ball& x, double y) { return x + Ball(y); }
+Ball operator-(const Ball& x, double y) { return x - Ball(y); }
+Ball operator*(const Ball& x, double y) { return x * Ball(y); }
+Ball operator*(double x, const Ball& y) { return Ball(x) * y; }
+Ball operator/(const Ball& x, double y) { return x / Ball(y); }
+
+Ball sin(const Ball& x) { Ball r; arb_sin(r.get(), x.get(), g_prec); return r; }
+Ball cos(const Ball& x) { Ball r; arb_cos(r.get(), x.get(), g_prec); return r; }
+void sin_cos(const Ball& x, Ball& s, Ball& c) { arb_sin_cos(s.get(), c.get(), x.get(), g_prec); }
+Ball sqr(const Ball& x) { Ball r; arb_sqr(r.get(), x.get(), g_prec); return r; }
+Ball sqrt(const Ball& x) { Ball r; arb_sqrt(r.get(), x.get(), g_prec); return r; }
+Ball asin(const Ball& x) { Ball r; arb_asin(r.get(), x.get(), g_prec); return r; }
+Ball cot(const Ball& x) { Ball r; arb_cot(r.get(), x.get(), g_prec); return r; }
+Ball abs(const Ball& x) { Ball r; arb_abs(r.get(), x.get()); return r; }
+Ball max(const Ball& x, const Ball& y) { Ball r; arb_max(r.get(), x.get(), y.get(), g_prec); return r; }
+Ball min(const Ball& x, const Ball& y) { Ball r; arb_min(r.get(), x.get(), y.get(), g_prec); return r; }
+
+bool intersect(const Ball& x, const Ball& y, Ball& z) {
+  Ball r;
+  if (!arb_intersection(r.get(), x.get(), y.get(), g_prec)) return false;
+  z = r;
+  return true;
+}
+
+std::string fmt17(double x) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.17g", x);
+  return buf;
+}
+
+}  // namespace dfchaos::certified

@@ -1,0 +1,383 @@
+#include "dfchaos/certified/covering.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <exception>
+
+#include "dfchaos/certified/oracle.hpp"
+#include "dfchaos/covering.hpp"
+#include "dfchaos/phase.hpp"
+
+namespace dfchaos::certified {
+
+namespace {
+
+constexpr double kThreeHalvesPi = 1.5 * 3.14159265358979323846;
+
+/// Walks from `from` in direction `dir` with geometric steps while the continuity label stays
+/// `label`, until `reached(step)`; returns the first such phase refined by bisection, or, if the label
+/// changes first, a phase half-way between `from` and the end of the label run. Best effort (the
+/// result is only a candidate; proofs decide).
+template <class Reached>
+double walk(const Parameters& p, const dfchaos::ContinuityLabel& label, double from, double dir, double scale, Reached&& reached) {
+  const double t2 = *p.t2();
+  double x = from, h = std::max(1e-13, scale * 1e-4);
+  for (int i = 0; i < 200; ++i) {
+    double y = x + dir * h;
+    bool out = y <= t2 || y >= kThreeHalvesPi;
+    if (out) y = dir > 0 ? std::nextafter(kThreeHalvesPi, 0.0) : std::nextafter(t2, 4.0);
+    const LabelledStep l = continuity_label(p, y);
+    if (!(l.label == label)) {
+      double good = x, bad = y;
+      for (int it = 0; it < 60; ++it) {
+        const double mid = 0.5 * (good + bad);
+        const LabelledStep lm = continuity_label(p, mid);
+        if (lm.label == label && !reached(lm.step)) good = mid; else bad = mid;
+      }
+      const LabelledStep lb = continuity_label(p, bad);
+      if (lb.label == label && reached(lb.step)) return bad;  // reached before the run ends
+      return from + 0.5 * (good - from);
+    }
+    if (reached(l.step)) {
+      double lo = x, hi = y;
+      for (int it = 0; it < 80; ++it) {
+        const double mid = 0.5 * (lo + hi);
+        if (reached(continuity_label(p, mid).step)) hi = mid; else lo = mid;
+      }
+      return hi;
+    }
+    if (out) return x;
+    x = y;
+    h *= 1.5;
+  }
+  return x;
+}
+
+/// Moves the top end away from the t2 end, inside the continuity label, to where T reaches
+/// 3pi/2 + margin (T is continuous and increasing that way on a label run).
+double move_top(const Parameters& p, const dfchaos::CoveringSegment& s, double target) {
+  const double dir = s.theta_at_top < s.theta_at_t2 ? -1.0 : 1.0;
+  const double scale = std::fabs(s.theta_at_t2 - s.theta_at_top);
+  return walk(p, s.label, s.theta_at_top, dir, scale, [&](const MapStep& st) { return st.T >= target; });
+}
+
+/// Moves the t2 end away from the top end to the middle of the plateau where T = t2: from the first
+/// phase with T = t2 to where T leaves t2 or the branch of T1 ends (the progression may end in the
+/// arc [t1, t2) or, after a jump of theta2, in [t3, t0]: T = t2 on both).
+double move_t2(const Parameters& p, const dfchaos::CoveringSegment& s) {
+  const double dir = s.theta_at_t2 < s.theta_at_top ? -1.0 : 1.0;
+  const double scale = std::fabs(s.theta_at_t2 - s.theta_at_top);
+  const double t2 = *p.t2();
+  const long long branch = return_map_step(p, s.theta_at_t2).hit.maxima_before;
+  auto on_plateau = [&](double th) {
+    if (th <= t2 || th >= kThreeHalvesPi) return false;
+    const MapStep st = return_map_step(p, th);
+    return st.hit.maxima_before == branch && st.T == t2;
+  };
+  if (!on_plateau(s.theta_at_t2)) return s.theta_at_t2;
+  double x = s.theta_at_t2, h = std::max(1e-13, scale * 1e-4);
+  double y = x + dir * h;
+  for (int i = 0; i < 200 && on_plateau(y); ++i) {
+    x = y;
+    h *= 1.5;
+    y = x + dir * h;
+  }
+  for (int it = 0; it < 60; ++it) {  // x on the plateau, y off it
+    const double mid = 0.5 * (x + y);
+    if (on_plateau(mid)) x = mid; else y = mid;
+  }
+  return s.theta_at_t2 + 0.5 * (x - s.theta_at_t2);
+}
+
+/// The plateau of T = t2 around `th` in the branch of T1 at `th`, and its middle; NaN if T(th) != t2.
+/// `width` receives the plateau's width.
+double plateau_middle(const Parameters& p, double th, double scale, double& width) {
+  const double t2 = *p.t2();
+  if (th <= t2 || th >= kThreeHalvesPi) return NAN;
+  const MapStep s0 = return_map_step(p, th);
+  if (s0.T != t2) return NAN;
+  const long long branch = s0.hit.maxima_before;
+  auto on = [&](double x) {
+    if (x <= t2 || x >= kThreeHalvesPi) return false;
+    const MapStep st = return_map_step(p, x);
+    return st.hit.maxima_before == branch && st.T == t2;
+  };
+  double ends[2];
+  for (int side = 0; side < 2; ++side) {
+    const double dir = side == 0 ? -1.0 : 1.0;
+    double x = th, h = std::max(1e-13, scale * 1e-3), y = x + dir * h;
+    for (int i = 0; i < 200 && on(y); ++i) {
+      x = y;
+      h *= 1.6;
+      y = x + dir * h;
+    }
+    for (int it = 0; it < 12; ++it) {
+      const double mid = 0.5 * (x + y);
+      if (on(mid)) x = mid; else y = mid;
+    }
+    ends[side] = x;
+  }
+  width = ends[1] - ends[0];
+  return 0.5 * (ends[0] + ends[1]);
+}
+
+}  // namespace
+
+std::vector<Candidate> track_candidates(double a, double b, double q, const std::vector<Candidate>& old, const CoveringOptions& opt) {
+  std::vector<Candidate> out;
+  try {
+    const Parameters p(a, b, q);
+    p.require_return_map();
+    const double lo_target = kThreeHalvesPi + 0.25 * opt.margin_top, hi_limit = *p.t3() - 0.25;
+    for (const Candidate& c : old) {
+      Candidate n = c;
+      const double scale = std::fabs(c.theta_t2 - c.theta_top);
+      // Keep the t2 end while the plateau still reaches a quarter of its width on both sides of it.
+      bool keep = false;
+      if (c.plateau > 0) {
+        const double t2 = *p.t2();
+        auto on = [&](double x) { return x > t2 && x < kThreeHalvesPi && return_map_step(p, x).T == t2; };
+        const long long br = return_map_step(p, c.theta_t2).hit.maxima_before;
+        auto same = [&](double x) { return return_map_step(p, x).hit.maxima_before == br; };
+        const double d = 0.25 * c.plateau;
+        keep = on(c.theta_t2) && on(c.theta_t2 - d) && on(c.theta_t2 + d) && same(c.theta_t2 - d) && same(c.theta_t2 + d);
+      }
+      if (!keep) {
+        n.theta_t2 = plateau_middle(p, c.theta_t2, scale, n.plateau);
+        // The plateau moved off the old end: look for it nearby (it moves by about its width per box).
+        const double step = c.plateau > 0 ? 0.25 * c.plateau : 1e-3 * scale;
+        for (int k = 1; k <= 12 && std::isnan(n.theta_t2); ++k) {
+          const double x = c.theta_t2 + (k % 2 ? 1.0 : -1.0) * step * ((k + 1) / 2);
+          if (return_map_step(p, x).T == *p.t2()) n.theta_t2 = plateau_middle(p, x, scale, n.plateau);
+        }
+        if (std::isnan(n.theta_t2)) continue;  // this one is lost
+      }
+      const double T_top = return_map_step(p, c.theta_top).T;
+      if (!(T_top >= lo_target && T_top <= hi_limit)) {
+        // Re-aim the top end at 3pi/2 + margin by bisection between it and the t2 end (T continuous and
+        // decreasing there on a run of the chain; the proof checks).
+        const double target = kThreeHalvesPi + opt.margin_top;
+        double x = c.theta_top, y = n.theta_t2;  // T(x) should be >= target, T(y) = t2
+        if (T_top < target) {
+          // Move away from the t2 end until T >= target (bounded), else give up.
+          const double dir = c.theta_top < c.theta_t2 ? -1.0 : 1.0;
+          double h = scale * 1e-3;
+          bool found = false;
+          for (int i = 0; i < 60 && !found; ++i, h *= 1.5) {
+            const double z = c.theta_top + dir * h;
+            const double Tz = return_map_step(p, z).T;
+            if (Tz > hi_limit) break;
+            if (Tz >= target) { x = z; found = true; }
+          }
+          if (!found) continue;
+        }
+        for (int it = 0; it < 30; ++it) {
+          const double mid = 0.5 * (x + y);
+          if (return_map_step(p, mid).T >= target) x = mid; else y = mid;
+        }
+        n.theta_top = x;
+      }
+      if (!out.empty() && !(out.back().hi() < n.lo())) continue;
+      if (n.lo() < *p.t2() || n.hi() > kThreeHalvesPi) continue;
+      out.push_back(n);
+    }
+  } catch (const std::exception&) {
+    return {};
+  }
+  if (out.size() < 2) return {};
+  return out;
+}
+
+std::vector<Candidate> covering_candidates(double a, double b, double q, const CoveringOptions& opt) {
+  std::vector<Candidate> out;
+  try {
+    const Parameters p(a, b, q);
+    p.require_return_map();
+    const double lo = std::isnan(opt.lo) ? *p.t2() : std::max(opt.lo, *p.t2());
+    const double hi = std::isnan(opt.hi) ? kThreeHalvesPi : std::min(opt.hi, kThreeHalvesPi);
+    if (!(lo < hi)) return out;
+    CoveringSearch search;
+    search.max_segments = opt.candidates;
+    const auto segs = covering_segments(p, lo, hi, kThreeHalvesPi, search);
+    for (const auto& s : segs) {
+      Candidate c;
+      c.theta_top = move_top(p, s, kThreeHalvesPi + opt.margin_top);
+      c.theta_t2 = move_t2(p, s);
+      {
+        double w = 0;
+        const double mid = plateau_middle(p, c.theta_t2, std::fabs(c.theta_t2 - c.theta_top), w);
+        if (!std::isnan(mid)) c.plateau = w;
+      }
+      if (c.lo() < lo) continue;
+      if (c.hi() > hi) continue;
+      if (!out.empty() && !(out.back().hi() < c.lo())) continue;  // keep them disjoint
+      out.push_back(c);
+    }
+  } catch (const std::exception&) {
+    // The floating layer refused (parameters outside its domain, or it gave up): no candidates.
+  }
+  return out;
+}
+
+namespace {
+
+/// Which of theta and b moves T1 more over a ball x box (floating estimate): true to split b.
+bool split_b_first(const ParamBox& box, double th_lo, double th_hi) {
+  if (box.b_lo == box.b_hi) return false;
+  if (th_lo == th_hi) return true;
+  const double bm = 0.5 * (box.b_lo + box.b_hi), tm = 0.5 * (th_lo + th_hi);
+  const double by_b = std::fabs(oracle::T1(box.a, box.b_lo, tm) - oracle::T1(box.a, box.b_hi, tm));
+  const double by_t = std::fabs(oracle::T1(box.a, bm, th_lo) - oracle::T1(box.a, bm, th_hi));
+  if (std::isnan(by_b) || std::isnan(by_t)) return box.b_hi - box.b_lo > 0;
+  return by_b > by_t;
+}
+
+/// Proves `check` on [th_lo, th_hi] x box by an adaptive cover that splits theta or b.
+template <class Check>
+Verdict cover_2d(const ParamBox& box, double th_lo, double th_hi, const CoveringOptions& opt, int max_depth, Budget& budget,
+                 SegmentProof& r, const std::string& step, Check&& check) {
+  struct Item { double t0, t1; ParamBox box; int depth; };
+  std::vector<Item> stack{{th_lo, th_hi, box, 0}};
+  while (!stack.empty()) {
+    const Item it = stack.back();
+    stack.pop_back();
+    const Model m(it.box);
+    Verdict why;
+    if (check(m, it.t0, it.t1, why)) {
+      ++r.balls;
+      r.depth = std::max(r.depth, it.depth);
+      if (it.t1 > it.t0) r.min_width = std::min(r.min_width, it.t1 - it.t0);
+      if (r.balls > opt.max_balls) return Verdict::fail(step, "more than " + std::to_string(opt.max_balls) + " balls");
+      continue;
+    }
+    const double tm = 0.5 * (it.t0 + it.t1), bm = 0.5 * (it.box.b_lo + it.box.b_hi), qm = 0.5 * (it.box.q_lo + it.box.q_hi);
+    // Splitting stops at relative widths where ball arithmetic gains nothing more.
+    const bool can_t = tm > it.t0 && tm < it.t1;
+    const bool can_b = it.box.b_hi - it.box.b_lo > 1e-9 * it.box.b_hi && bm > it.box.b_lo && bm < it.box.b_hi;
+    const bool can_q = it.box.q_hi - it.box.q_lo > 1e-7 && qm > it.box.q_lo && qm < it.box.q_hi;
+    if (it.depth >= max_depth || (!can_t && !can_b && !can_q) || budget.exhausted())
+      return Verdict::fail(step, "at theta in [" + fmt17(it.t0) + ", " + fmt17(it.t1) + "], " + it.box.describe() + ": " + why.describe());
+    const bool by_b = can_b && (!can_t || split_b_first(it.box, it.t0, it.t1));
+    if (by_b) {
+      ParamBox lo = it.box, hi = it.box;
+      lo.b_hi = bm;
+      hi.b_lo = bm;
+      stack.push_back({it.t0, it.t1, hi, it.depth + 1});
+      stack.push_back({it.t0, it.t1, lo, it.depth + 1});
+    } else if (!can_t) {
+      ParamBox lo = it.box, hi = it.box;
+      lo.q_hi = qm;
+      hi.q_lo = qm;
+      stack.push_back({it.t0, it.t1, hi, it.depth + 1});
+      stack.push_back({it.t0, it.t1, lo, it.depth + 1});
+    } else {
+      stack.push_back({tm, it.t1, it.box, it.depth + 1});
+      stack.push_back({it.t0, tm, it.box, it.depth + 1});
+    }
+  }
+  return Verdict::ok();
+}
+
+}  // namespace
+
+SegmentProof prove_segment(const Model& m, const Candidate& c, const CoveringOptions& opt) {
+  SegmentProof r;
+  r.lo = c.lo();
+  r.hi = c.hi();
+  r.theta_top = c.theta_top;
+  r.theta_t2 = c.theta_t2;
+  r.min_width = r.hi - r.lo;
+  if (Verdict v = m.admissible(); !v) {
+    r.verdict = v;
+    return r;
+  }
+  // J inside [t2, 3 pi / 2] for every parameter of the box.
+  const Ball three_halves_pi = 1.5 * m.pi;
+  if (!le(m.t2_at_b_hi, Ball(r.lo)) || !le(Ball(r.hi), three_halves_pi)) {
+    r.verdict = Verdict::fail("covering: J inside [t2, 3pi/2]", "J = [" + fmt17(r.lo) + ", " + fmt17(r.hi) + "]");
+    return r;
+  }
+  Budget budget;
+  budget.max_tests = opt.max_tests;
+  bool first_top = true, first_bot = true;
+  // The two ends (over sub-boxes of b if needed).
+  Verdict v = cover_2d(m.box(), c.theta_top, c.theta_top, opt, opt.end_depth, budget, r, "covering: T >= 3pi/2 at the top end",
+                       [&](const Model& mm, double t0, double t1, Verdict& why) {
+                         TProof top = certify_T(mm, StartSet::interval(t0, t1), budget);
+                         r.tests += top.tests;
+                         if (!top.verdict) { why = top.verdict; return false; }
+                         if (!le(1.5 * mm.pi, top.T)) { why = Verdict::fail("T >= 3pi/2", "T = " + top.T.str(12)); return false; }
+                         r.T_top = first_top ? top.T : Ball::hull(r.T_top, top.T);
+                         first_top = false;
+                         return true;
+                       });
+  if (!v) { r.verdict = v; return r; }
+  v = cover_2d(m.box(), c.theta_t2, c.theta_t2, opt, opt.end_depth, budget, r, "covering: T = t2 at the t2 end",
+               [&](const Model& mm, double t0, double t1, Verdict& why) {
+                 TProof bot = certify_T(mm, StartSet::interval(t0, t1), budget);
+                 r.tests += bot.tests;
+                 if (!bot.verdict) { why = bot.verdict; return false; }
+                 if (!bot.constant_t2) { why = Verdict::fail("T = t2", "T = " + bot.T.str(12)); return false; }
+                 r.theta2_t2end = first_bot ? bot.theta2_phase : Ball::hull(r.theta2_t2end, bot.theta2_phase);
+                 first_bot = false;
+                 r.used_lemma1 = r.used_lemma1 || bot.used_lemma1;
+                 return true;
+               });
+  if (!v) { r.verdict = v; return r; }
+  const int end_balls = r.balls;
+  // Continuity on J.
+  v = cover_2d(m.box(), r.lo, r.hi, opt, opt.max_depth, budget, r, "covering: continuity on J",
+               [&](const Model& mm, double t0, double t1, Verdict& why) {
+                 TProof t = certify_T(mm, StartSet::interval(t0, t1), budget);
+                 r.tests += t.tests;
+                 if (!t.verdict) { why = t.verdict; return false; }
+                 r.used_lemma1 = r.used_lemma1 || t.used_lemma1;
+                 return true;
+               });
+  r.balls -= end_balls;
+  r.verdict = v;
+  return r;
+}
+
+CoveringProof prove_covering(const ParamBox& box, const std::vector<Candidate>& candidates, const CoveringOptions& opt) {
+  const auto start = std::chrono::steady_clock::now();
+  CoveringProof r;
+  r.box = box;
+  const Model m(box);
+  std::vector<SegmentProof> proved;
+  SegmentProof last_failure;
+  for (const Candidate& c : candidates) {
+    if (proved.size() == 2) break;
+    if (!proved.empty() && !(proved.back().hi < c.lo())) continue;
+    ++r.candidates_tried;
+    SegmentProof s = prove_segment(m, c, opt);
+    if (s.verdict) proved.push_back(s);
+    else last_failure = s;
+  }
+  if (proved.size() == 2) {
+    r.J0 = proved[0];
+    r.J1 = proved[1];
+    r.verdict = Verdict::ok();
+  } else if (candidates.empty()) {
+    r.verdict = Verdict::fail("covering: candidates", "the floating-point search proposed no covering segment");
+  } else if (!last_failure.verdict.proved && !last_failure.verdict.step.empty()) {
+    r.verdict = last_failure.verdict;
+    if (!proved.empty()) r.J0 = proved[0];
+  } else {
+    r.verdict = Verdict::fail("covering: candidates", "fewer than two disjoint candidates were proved");
+    if (!proved.empty()) r.J0 = proved[0];
+  }
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return r;
+}
+
+CoveringProof prove_covering(const ParamBox& box, const CoveringOptions& opt) {
+  const auto start = std::chrono::steady_clock::now();
+  const double b = 0.5 * (box.b_lo + box.b_hi), q = 0.5 * (box.q_lo + box.q_hi);
+  const std::vector<Candidate> c = covering_candidates(box.a, b, q, opt);
+  CoveringProof r = prove_covering(box, c, opt);
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return r;
+}
+
+}  // namespace dfchaos::certified

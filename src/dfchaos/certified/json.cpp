@@ -1,0 +1,191 @@
+#include "dfchaos/certified/json.hpp"
+
+#include <cstdio>
+#include <cstdlib>
+
+namespace dfchaos::certified {
+
+namespace {
+std::string params_text(const ParamBox& box) {
+  return box.is_point() ? "at the double values " + box.describe() : "for every parameter of the box " + box.describe();
+}
+Json box_json(const ParamBox& box) {
+  Json j = Json::object();
+  j.set("a", box.a);
+  if (box.b_lo == box.b_hi) j.set("b", box.b_lo);
+  else j.set("b", Json::array().push(box.b_lo).push(box.b_hi));
+  if (box.q_lo == box.q_hi) j.set("q", box.q_lo);
+  else j.set("q", Json::array().push(box.q_lo).push(box.q_hi));
+  return j;
+}
+}  // namespace
+
+std::string shortest_double(double x) {
+  char buf[40];
+  for (int d = 1; d <= 17; ++d) {
+    std::snprintf(buf, sizeof buf, "%.*g", d, x);
+    if (std::strtod(buf, nullptr) == x) return buf;
+  }
+  return fmt17(x);
+}
+
+Json ball_json(const Ball& x, long digits) {
+  Json j = Json::object();
+  j.set("mid", x.mid_str(digits)).set("rad", x.rad_str());
+  return j;
+}
+
+void add_verdict(Json& j, const Verdict& v) {
+  j.set("proved", v.proved);
+  if (!v.proved) {
+    j.set("failed_step", v.step).set("detail", v.detail).set("refuted", v.refuted);
+  }
+}
+
+std::string statement_vartheta0() {
+  return "Eq. (1): pi - x = cot(x/2) has exactly one solution vartheta0 on (0, pi/2] (the left side minus the right increases "
+         "strictly there), and vartheta0 and sin(vartheta0) lie in the printed balls; the printed doubles are their correctly "
+         "rounded values.";
+}
+std::string statement_lemma1(const ParamBox& box) {
+  return "Lemma 1 " + params_text(box) +
+         ": the progression that starts from rest at t0 has velocity u > 0 on (t0, t1] (u' = F - q > 0 there), u(t2) < 0 "
+         "(Eq. 8, enclosed) and u' < 0 on (t1, t2], so it stops exactly once, at t4 in (t1, t2), where the mass waits for t2.";
+}
+std::string statement_b0(double a, double q, double b_low) {
+  return "Lemma 1 holds for every b in (0, " + fmt17(b_low) + "] at a = " + fmt17(a) + ", q = " + fmt17(q) +
+         " (u(t2) < 0 proved over b-balls covering [0, b_low]): b0(q) >= " + fmt17(b_low) + ".";
+}
+std::string statement_discontinuities(const std::string& segment, std::size_t n) {
+  return "Lemma 2 on " + segment + " at the double values of a, b: T1 has exactly " + std::to_string(n) +
+         " discontinuities there, the z_k with 2z - (a/b) cos z = (2k+1) pi (enclosed), each a first-contact tangency where "
+         "T1 jumps up by at least the printed amount; T1 is continuous and decreasing on each interval between them.";
+}
+std::string statement_covering(const ParamBox& box) {
+  return "Lemma 4 (and the covering of Theorem 1) " + params_text(box) +
+         ": J0 and J1 are disjoint closed segments of [t2, 3pi/2]; T is continuous on each (closed balls on which T1 and theta2 "
+         "are proved simple and the chain fixed), T = t2 exactly at one end and T >= 3pi/2 at the other, so T(Ji) contains "
+         "[t2, 3pi/2] (which contains J0 and J1).";
+}
+std::string statement_periodic(int m) {
+  const std::string w = std::string(static_cast<std::size_t>(std::max(m - 1, 0)), '0') + "1";
+  return "Sections 6-7 from the certified covering: T has a point of minimal period " + std::to_string(m) + " with itinerary (" + w +
+         ")^infinity through J0, J1 (nested segments and the intermediate value theorem, applied to the certified hypotheses); "
+         "the Krawczyk operator proves that the printed boxes contain exactly one such orbit of the cycle equations "
+         "T(x_j) = x_{j+1}; and h_top(T restricted to its invariant set in J0 u J1) >= ln 2 (semi-conjugacy onto the 2-shift).";
+}
+std::string statement_superstable() {
+  return "Theorem 2 at the double values of a, b, q: T1(t2) and theta2(t2) are enclosed, theta2(t2) mod 2pi satisfies the printed "
+         "condition ((21): in (t1, t2); (22): in (t3, 2pi) u [0, t0)) with certified margins, and T = t2 on the whole of "
+         "[t2, t2 + eps] (closed balls on which the chain is proved to stop before t2): t2 is a superstable fixed point.";
+}
+std::string statement_window() {
+  return "Superstability window in b at fixed a, q: for every b in [left_in, right_in], T(t2(b)) = t2 (proved over b-boxes, with "
+         "strict inequalities, so t2 is superstable at each such b), and T(t2) != t2 at b = left_out and b = right_out; so the "
+         "maximal interval of b containing the window's middle on which T(t2) = t2 has its edges in [left_out, left_in] and "
+         "[right_in, right_out]. At the middle, Theorem 2 holds with a certified eps.";
+}
+
+Json to_json(const Vartheta0& v) {
+  Json j = Json::object();
+  j.set("statement", statement_vartheta0());
+  add_verdict(j, v.verdict);
+  j.set("vartheta0", ball_json(v.value, 40)).set("sin_vartheta0", ball_json(v.sine, 40));
+  if (v.rounding_certified) {
+    j.set("vartheta0_double", shortest_double(v.value_double)).set("sin_vartheta0_double", shortest_double(v.sine_double));
+  }
+  j.set("rounding_certified", v.rounding_certified).set("bits", static_cast<long long>(v.bits));
+  return j;
+}
+
+Json to_json(const ParamBox& box, const Lemma1Proof& p) {
+  Json j = Json::object();
+  j.set("statement", statement_lemma1(box)).set("parameters", box_json(box));
+  add_verdict(j, p.verdict);
+  j.set("u_at_t2", ball_json(p.u_at_t2, 20)).set("t4", ball_json(p.t4, 20)).set("pieces", p.pieces);
+  return j;
+}
+
+Json to_json(double a, double q, const Lemma1Bound& p) {
+  Json j = Json::object();
+  j.set("statement", statement_b0(a, q, p.b_low));
+  j.set("parameters", Json::object().set("a", a).set("q", q));
+  add_verdict(j, p.verdict);
+  j.set("b0_lower_bound", p.b_low).set("b0_float_estimate", p.b_float).set("pieces", p.pieces);
+  return j;
+}
+
+Json to_json(double a, double b, const DiscontinuityProof& p, const std::string& segment) {
+  Json j = Json::object();
+  j.set("statement", statement_discontinuities(segment, p.z.size()));
+  j.set("parameters", Json::object().set("a", a).set("b", b));
+  add_verdict(j, p.verdict);
+  j.set("segment", segment).set("covered", Json::array().push(p.lo).push(p.hi)).set("n", static_cast<long long>(p.z.size()));
+  Json zs = Json::array();
+  for (const auto& t : p.z) {
+    Json z = Json::object();
+    z.set("k", t.k).set("z", ball_json(t.z, 20)).set("T1", ball_json(t.t_star, 20));
+    if (t.verdict) z.set("jump_at_least", t.jump.lower());
+    zs.push(z);
+  }
+  j.set("discontinuities", zs).set("balls", p.balls).set("seconds", p.seconds);
+  return j;
+}
+
+Json to_json(const CoveringProof& p) {
+  Json j = Json::object();
+  j.set("statement", statement_covering(p.box)).set("parameters", box_json(p.box));
+  add_verdict(j, p.verdict);
+  auto seg = [](const SegmentProof& s) {
+    Json x = Json::object();
+    x.set("proved", s.verdict.proved);
+    x.set("interval", Json::array().push(s.lo).push(s.hi));
+    x.set("theta_T_ge_3pi_2", s.theta_top).set("T_there", ball_json(s.T_top, 20));
+    x.set("theta_T_eq_t2", s.theta_t2).set("theta2_phase_there", ball_json(s.theta2_t2end, 12));
+    x.set("balls", s.balls).set("depth", s.depth).set("interval_tests", s.tests).set("used_lemma1", s.used_lemma1);
+    if (!s.verdict.proved && !s.verdict.step.empty()) x.set("failed_step", s.verdict.step).set("detail", s.verdict.detail);
+    return x;
+  };
+  if (p.J0.verdict.proved || p.J0.balls > 0) j.set("J0", Json::array().push(p.J0.lo).push(p.J0.hi));
+  if (p.J1.verdict.proved || p.J1.balls > 0) j.set("J1", Json::array().push(p.J1.lo).push(p.J1.hi));
+  j.set("segments", Json::array().push(seg(p.J0)).push(seg(p.J1)));
+  j.set("candidates_tried", p.candidates_tried).set("seconds", p.seconds);
+  return j;
+}
+
+Json to_json(const CoveringProof& c, const PeriodicProof& p) {
+  Json j = Json::object();
+  j.set("statement", statement_periodic(p.period)).set("parameters", box_json(c.box));
+  add_verdict(j, p.verdict);
+  j.set("period", p.period).set("itinerary", p.word).set("existence_from_covering", p.existence);
+  j.set("J0", Json::array().push(c.J0.lo).push(c.J0.hi)).set("J1", Json::array().push(c.J1.lo).push(c.J1.hi));
+  Json orbit = Json::array();
+  for (const auto& x : p.orbit) orbit.push(ball_json(x, 25));
+  j.set("orbit", orbit).set("log_multiplier", ball_json(p.log_multiplier, 10));
+  j.set("h_top_lower_bound", p.existence ? "ln 2" : "not proved").set("seconds", p.seconds);
+  return j;
+}
+
+Json to_json(double a, double b, double q, const SuperstableProof& p) {
+  Json j = Json::object();
+  j.set("statement", statement_superstable()).set("parameters", Json::object().set("a", a).set("b", b).set("q", q));
+  add_verdict(j, p.verdict);
+  j.set("condition", p.condition).set("T1_at_t2", ball_json(p.T1, 20)).set("theta2_at_t2", ball_json(p.theta2, 20));
+  j.set("theta2_phase", ball_json(p.theta2_phase, 15)).set("epsilon", p.eps).set("balls", p.balls);
+  j.set("used_lemma1", p.used_lemma1).set("assumptions_2", p.eq2).set("assumptions_23", p.eq23).set("seconds", p.seconds);
+  return j;
+}
+
+Json to_json(double a, double q, const WindowProof& w) {
+  Json j = Json::object();
+  j.set("statement", statement_window()).set("parameters", Json::object().set("a", a).set("q", q));
+  add_verdict(j, w.verdict);
+  j.set("float_estimate", Json::array().push(w.b_lo_float).push(w.b_hi_float));
+  j.set("left_edge", Json::array().push(w.left_out).push(w.left_in));
+  j.set("right_edge", Json::array().push(w.right_in).push(w.right_out));
+  j.set("boxes", w.boxes).set("T_at_left_out", ball_json(w.T_left_out, 12)).set("T_at_right_out", ball_json(w.T_right_out, 12));
+  j.set("inside", to_json(a, 0.5 * (w.b_lo_float + w.b_hi_float), q, w.inside)).set("seconds", w.seconds);
+  return j;
+}
+
+}  // namespace dfchaos::certified

@@ -1,0 +1,51 @@
+#include "dfchaos/certified/model.hpp"
+
+#include <cmath>
+
+#include "dfchaos/errors.hpp"
+
+namespace dfchaos::certified {
+
+std::string ParamBox::describe() const {
+  auto range = [](double lo, double hi) { return lo == hi ? fmt17(lo) : "[" + fmt17(lo) + ", " + fmt17(hi) + "]"; };
+  return "a=" + fmt17(a) + " b=" + range(b_lo, b_hi) + " q=" + range(q_lo, q_hi);
+}
+
+Model::Model(const ParamBox& box) : box_(box) {
+  if (!std::isfinite(box.a) || !(box.a > 0)) throw InvalidParameter("a", "a > 0 and finite", box.a);
+  if (!std::isfinite(box.b_lo) || !(box.b_lo > 0)) throw InvalidParameter("b", "b > 0 and finite", box.b_lo);
+  if (!std::isfinite(box.b_hi) || !(box.b_hi >= box.b_lo)) throw InvalidParameter("b", "b_lo <= b_hi, finite", box.b_hi);
+  if (!std::isfinite(box.q_lo) || !(box.q_lo > 0)) throw InvalidParameter("q", "q > 0 and finite", box.q_lo);
+  if (!std::isfinite(box.q_hi) || !(box.q_hi >= box.q_lo)) throw InvalidParameter("q", "q_lo <= q_hi, finite", box.q_hi);
+  a = Ball(box.a);
+  b = Ball::interval(box.b_lo, box.b_hi);
+  q = Ball::interval(box.q_lo, box.q_hi);
+  b_lo = Ball(box.b_lo);
+  b_hi = Ball(box.b_hi);
+  q_lo = Ball(box.q_lo);
+  q_hi = Ball(box.q_hi);
+  two_c = 2.0 * b - q;
+  pi = Ball::pi();
+  two_pi = 2.0 * pi;
+  t0 = asin((q - 2.0 * b) / a);
+  t1 = pi - t0;
+  const Ball as = asin(2.0 * b / a);
+  t2 = pi + as;
+  t3 = two_pi - as;
+  t2_at_b_lo = t2_of(b_lo);
+  t2_at_b_hi = t2_of(b_hi);
+}
+
+Verdict Model::admissible() const {
+  if (!lt(2.0 * b, a)) return Verdict::fail("admissibility", "2b < a not proved over " + box_.describe());
+  if (!lt(2.0 * b, q)) return Verdict::fail("admissibility", "q > 2b not proved over " + box_.describe());
+  if (!lt(q - 2.0 * b, a)) return Verdict::fail("admissibility", "q - 2b < a not proved over " + box_.describe());
+  if (!t0.is_finite() || !t2.is_finite()) return Verdict::fail("admissibility", "phases not enclosed");
+  return Verdict::ok();
+}
+
+Ball Model::F(const Ball& t) const { return a * sin(t) + 2.0 * b; }
+
+Ball Model::t2_of(const Ball& bb) const { return pi + asin(2.0 * bb / a); }
+
+}  // namespace dfchaos::certified

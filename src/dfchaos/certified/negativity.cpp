@@ -1,0 +1,54 @@
+#include "dfchaos/certified/negativity.hpp"
+
+#include <cmath>
+#include <utility>
+
+namespace dfchaos::certified {
+
+Verdict prove_negative(const NegativityTarget& f, const Ball& lo, const Ball& hi, Budget& budget, const std::string& step,
+                       NegativityStats* stats) {
+  NegativityStats local;
+  NegativityStats& st = stats ? *stats : local;
+  if (!le(lo, hi)) return Verdict::fail(step, "empty or unordered interval " + lo.mid_str(17) + " .. " + hi.mid_str(17));
+  // Minimum half-width: below it a sub-interval is reported undecided.
+  const Ball scale = max(abs(lo), abs(hi)) + Ball(1.0);
+  Ball min_r = scale * Ball(std::ldexp(1.0, -static_cast<int>(precision() - 12)));
+  std::vector<std::pair<Ball, Ball>> stack;
+  stack.emplace_back(lo, hi);
+  while (!stack.empty()) {
+    auto [x1, x2] = std::move(stack.back());
+    stack.pop_back();
+    ++st.tests;
+    if (!budget.spend()) return Verdict::fail(step, "budget of " + std::to_string(budget.max_tests) + " interval tests spent near " +
+                                                       f.variable() + " = " + x1.mid_str(17));
+    if (f.envelope_negative(x1, x2)) {
+      ++st.envelope;
+      continue;
+    }
+    const Ball m = ((x1 + x2) * 0.5).mid_ball();
+    const Ball r = max(x2 - m, m - x1).upper_ball();
+    const Ball X = Ball::hull(x1, x2);
+    const Ball fm = f.value(m);
+    if (fm.is_positive())
+      return Verdict::refute(step, f.variable() + " = " + m.mid_str(20) + " gives f = " + fm.str(6) + " > 0");
+    const Ball dm = f.slope(m);
+    const Ball cX = f.curvature(X);
+    const Ball taylor = fm + r * abs(dm) + 0.5 * sqr(r) * max(cX, Ball(0.0));
+    if (taylor.is_negative()) {
+      ++st.taylor;
+      continue;
+    }
+    const Ball dX = dm + Ball::interval(-1.0, 1.0) * r * cX;
+    if ((dX.is_positive() && f.value(x2).is_negative()) || (dX.is_negative() && f.value(x1).is_negative())) {
+      ++st.monotone;
+      continue;
+    }
+    if (lt(r, min_r))
+      return Verdict::fail(step, "undecided near " + f.variable() + " = " + m.mid_str(20) + " (f = " + fm.str(6) + ")");
+    stack.emplace_back(m, x2);
+    stack.emplace_back(x1, m);
+  }
+  return Verdict::ok();
+}
+
+}  // namespace dfchaos::certified

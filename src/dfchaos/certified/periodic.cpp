@@ -1,0 +1,180 @@
+#include "dfchaos/certified/periodic.hpp"
+
+#include <arb_mat.h>
+
+#include <chrono>
+#include <cmath>
+
+#include "dfchaos/certified/oracle.hpp"
+
+namespace dfchaos::certified {
+
+namespace {
+
+/// An m x m arb matrix, RAII.
+struct Mat {
+  arb_mat_t a;
+  explicit Mat(long n) { arb_mat_init(a, n, n); }
+  ~Mat() { arb_mat_clear(a); }
+  Mat(const Mat&) = delete;
+  Mat& operator=(const Mat&) = delete;
+  arb_ptr at(long i, long j) { return arb_mat_entry(a, i, j); }
+};
+
+/// Floating inverse branch of T on a certified segment: the x between the ends with T(x) = y.
+double inverse_branch(const ParamBox& box, const SegmentProof& J, double y) {
+  double a = J.theta_top, c = J.theta_t2;  // T(a) >= 3pi/2 >= y >= t2 = T(c)
+  for (int it = 0; it < 200 && a != c; ++it) {
+    const double mid = 0.5 * (a + c);
+    if (mid == a || mid == c) break;
+    const auto s = oracle::step(box.a, box.b_lo, box.q_lo, mid);
+    if (!s) break;
+    if (s->T >= y) a = mid; else c = mid;
+  }
+  return 0.5 * (a + c);
+}
+
+struct PointEval {
+  bool ok = false;
+  Ball T, dT;
+  std::string why;
+};
+
+PointEval eval_T(const Model& m, const Ball& lo, const Ball& hi) {
+  PointEval e;
+  Budget budget;
+  const StartSet set = StartSet::balls(lo, hi);
+  const TProof t = certify_T(m, set, budget);
+  if (!t.verdict) {
+    e.why = t.verdict.describe();
+    return e;
+  }
+  if (!derivative_T(m, set, t, e.dT)) {
+    e.why = "T not proved smooth (scenario A) on the box";
+    return e;
+  }
+  e.T = t.T;
+  e.ok = true;
+  return e;
+}
+
+}  // namespace
+
+PeriodicProof prove_periodic(const CoveringProof& cov, int period, const PeriodicOptions& opt) {
+  const auto start = std::chrono::steady_clock::now();
+  PeriodicProof r;
+  r.period = period;
+  r.word = std::string(static_cast<std::size_t>(std::max(period - 1, 0)), '0') + "1";
+  auto finish = [&](Verdict v) {
+    r.verdict = std::move(v);
+    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return r;
+  };
+  if (period < 1 || period > 64) return finish(Verdict::fail("periodic: period", "1 <= m <= 64"));
+  if (!cov.verdict) return finish(Verdict::fail("periodic: needs the covering", cov.verdict.describe()));
+  if (!cov.box.is_point()) return finish(Verdict::fail("periodic: point parameters", "orbits are enclosed at a parameter point"));
+  r.existence = true;
+  const Model m(cov.box);
+  const SegmentProof* J[2] = {&cov.J0, &cov.J1};
+  const std::size_t n = static_cast<std::size_t>(period);
+  auto seg = [&](std::size_t j) { return J[r.word[j] == '1' ? 1 : 0]; };
+
+  // 1. Floating guess: the fixed point of g_{w_0} o ... o g_{w_{m-1}} (a contraction).
+  std::vector<double> x(n);
+  double y = 0.5 * (J[0]->lo + J[0]->hi);
+  for (int sweep = 0; sweep < 4; ++sweep) {
+    double z = y;
+    for (std::size_t j = n; j-- > 0;) {
+      z = inverse_branch(cov.box, *seg(j), z);
+      x[j] = z;
+    }
+    y = x[0];
+  }
+  // 2. Newton on F_j = T(x_j) - x_{j+1} in ball midpoints (not a proof).
+  std::vector<Ball> xh(n);
+  for (std::size_t j = 0; j < n; ++j) xh[j] = Ball(x[j]);
+  std::vector<PointEval> ev(n);
+  for (int step = 0; step <= opt.newton_steps; ++step) {
+    for (std::size_t j = 0; j < n; ++j) {
+      ev[j] = eval_T(m, xh[j], xh[j]);
+      if (!ev[j].ok) return finish(Verdict::fail("periodic: T at the orbit", "x_" + std::to_string(j) + " = " + xh[j].mid_str(20) + ": " + ev[j].why));
+    }
+    if (step == opt.newton_steps) break;
+    // Solve d_j D_j - D_{j+1} = F_j: D_j = (F_j + D_{j+1}) / d_j, closing the cycle for D_0.
+    std::vector<Ball> F(n), d(n);
+    for (std::size_t j = 0; j < n; ++j) {
+      F[j] = (ev[j].T - xh[(j + 1) % n]).mid_ball();
+      d[j] = ev[j].dT.mid_ball();
+    }
+    Ball A(0.0), B(1.0);  // D_0 = A + B D_0 accumulated from the back
+    for (std::size_t j = n; j-- > 0;) {
+      A = (F[j] + A) / d[j];
+      B = B / d[j];
+    }
+    std::vector<Ball> D(n);
+    D[0] = (A / (Ball(1.0) - B)).mid_ball();
+    for (std::size_t j = n; j-- > 1;) {
+      // D_j from D_{j+1}: go backwards from D_0 = D_m.
+      D[j] = ((F[j] + (j + 1 == n ? D[0] : D[j + 1])) / d[j]).mid_ball();
+    }
+    for (std::size_t j = 0; j < n; ++j) xh[j] = (xh[j] - D[j]).mid_ball();
+  }
+  // 3. Krawczyk on X_j = x_j +- rad.
+  const Ball rad(opt.radius);
+  std::vector<Ball> X(n), dX(n);
+  for (std::size_t j = 0; j < n; ++j) {
+    X[j] = Ball::hull(xh[j] - rad, xh[j] + rad);
+    const PointEval e = eval_T(m, X[j].lower_ball(), X[j].upper_ball());
+    if (!e.ok) return finish(Verdict::fail("periodic: T smooth on the box", "X_" + std::to_string(j) + ": " + e.why));
+    dX[j] = e.dT;
+    // Inside the right segment.
+    if (!le(Ball(seg(j)->lo), X[j]) || !le(X[j], Ball(seg(j)->hi)))
+      return finish(Verdict::fail("periodic: itinerary", "X_" + std::to_string(j) + " not inside J" + r.word[j]));
+  }
+  const long nn = static_cast<long>(n);
+  const long prec = precision();
+  Mat Jm(nn), C(nn), JX(nn), CJ(nn), Id(nn);
+  for (long i = 0; i < nn; ++i) {
+    arb_set(Jm.at(i, i), ev[static_cast<std::size_t>(i)].dT.mid_ball().get());
+    arb_set(JX.at(i, i), dX[static_cast<std::size_t>(i)].get());
+    if (nn > 1) {
+      arb_set_si(Jm.at(i, (i + 1) % nn), -1);
+      arb_set_si(JX.at(i, (i + 1) % nn), -1);
+    }
+  }
+  if (nn == 1) {  // F(x) = T(x) - x: DF = T' - 1
+    arb_sub_ui(Jm.at(0, 0), Jm.at(0, 0), 1, prec);
+    arb_sub_ui(JX.at(0, 0), JX.at(0, 0), 1, prec);
+  }
+  if (!arb_mat_approx_inv(C.a, Jm.a, prec)) return finish(Verdict::fail("periodic: Krawczyk", "singular Jacobian"));
+  arb_mat_get_mid(C.a, C.a);
+  arb_mat_mul(CJ.a, C.a, JX.a, prec);
+  arb_mat_one(Id.a);
+  arb_mat_sub(CJ.a, Id.a, CJ.a, prec);  // I - C DF(X)
+  std::vector<Ball> Fh(n), K(n);
+  for (std::size_t j = 0; j < n; ++j) Fh[j] = ev[j].T - xh[(j + 1) % n];
+  bool inside = true;
+  for (std::size_t i = 0; i < n; ++i) {
+    Ball k = xh[i];
+    for (std::size_t j = 0; j < n; ++j) {
+      Ball cij, mij;
+      arb_set(cij.get(), C.at(static_cast<long>(i), static_cast<long>(j)));
+      arb_set(mij.get(), CJ.at(static_cast<long>(i), static_cast<long>(j)));
+      k = k - cij * Fh[j] + mij * (X[j] - xh[j]);
+    }
+    K[i] = k;
+    if (!(lt(X[i].lower_ball(), k) && lt(k, X[i].upper_ball()))) inside = false;
+  }
+  if (!inside) return finish(Verdict::fail("periodic: Krawczyk", "K(X) not inside the interior of X"));
+  r.orbit = K;
+  Ball logm(0.0);
+  for (std::size_t j = 0; j < n; ++j) {
+    Ball l;
+    arb_log(l.get(), abs(dX[j]).get(), prec);
+    logm = logm + l;
+  }
+  r.log_multiplier = logm;
+  return finish(Verdict::ok());
+}
+
+}  // namespace dfchaos::certified

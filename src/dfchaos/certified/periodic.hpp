@@ -1,0 +1,50 @@
+/// @file periodic.hpp
+/// @brief Sections 6 and 7 from a certified covering: periodic points of every minimal period, an
+/// explicit enclosure of one orbit per period by the Krawczyk operator, and the entropy bound.
+///
+/// **Existence (Section 6).** Let \f$J_0, J_1 \subset [t_2, 3\pi/2]\f$ be disjoint closed segments with T
+/// continuous on each and \f$T(J_i) \supseteq [t_2, 3\pi/2] \supseteq J_0 \cup J_1\f$ — exactly what
+/// prove_covering() certifies. For the word \f$w = 0^{m-1}1\f$ the nested segments
+/// \f$J_{w_0} \supset J_{w_0w_1} \supset \dots\f$ give a closed \f$I \subset J_0\f$ (or \f$J_1\f$ if m = 1) with
+/// \f$T^m\f$ continuous on I and \f$T^m(I) \supseteq I\f$, hence a fixed point of \f$T^m\f$ in I whose orbit
+/// follows \f$(0^{m-1}1)^\infty\f$; J0 and J1 being disjoint, its minimal period is m. The same
+/// hypotheses give a compact invariant \f$\Lambda \subset J_0 \cup J_1\f$ with a continuous
+/// surjection \f$H: \Lambda \to \Sigma_2\f$, \f$H \circ T = S \circ H\f$ (Section 7), so
+/// \f$h_{top}(T|_\Lambda) \ge h_{top}(S) = \ln 2\f$. These are theorems applied to certified
+/// hypotheses; no further computation is involved.
+///
+/// **Enclosure.** For \f$F_j(x) = T(x_j) - x_{j+1 \bmod m}\f$ on boxes \f$X_j \ni \hat x_j\f$ where T is
+/// proved smooth (scenario A, certify_T) with \f$T'\f$ enclosed (derivative_T), the Krawczyk operator
+/// \f$K = \hat x - C F(\hat x) + (I - C\,DF(X))(X - \hat x)\f$, \f$C \approx DF(\hat x)^{-1}\f$, inside the
+/// interior of X proves a unique zero of F in X. With \f$X_j \subset J_{w_j}\f$ this is the periodic
+/// orbit of itinerary \f$w^\infty\f$, enclosed to about \f$10^{-20}\f$.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "dfchaos/certified/covering.hpp"
+
+namespace dfchaos::certified {
+
+/// Options of prove_periodic().
+struct PeriodicOptions {
+  double radius = 1e-22;  ///< half-width of the Krawczyk boxes \f$X_j\f$ (relative to 1)
+  int newton_steps = 6;   ///< Newton refinements of the orbit before the Krawczyk test
+};
+
+/// A periodic orbit of T with itinerary \f$(0^{m-1}1)^\infty\f$.
+struct PeriodicProof {
+  Verdict verdict;               ///< proved: Krawczyk encloses a unique orbit in the boxes, each inside its J
+  bool existence = false;        ///< the Section 6 argument applies (the covering is certified)
+  int period = 0;                ///< m
+  std::string word;              ///< one period of the itinerary, e.g. "0001"
+  std::vector<Ball> orbit;       ///< the boxes \f$X_0, \dots, X_{m-1}\f$ (each with the unique orbit point)
+  Ball log_multiplier;           ///< \f$\ln|(T^m)'| = \sum_j \ln|T'(x_j)|\f$ over the boxes
+  double seconds = 0;            ///< wall time
+};
+
+/// Periodic orbit of minimal period m (1 <= m <= 64) from a proved covering.
+PeriodicProof prove_periodic(const CoveringProof& covering, int m, const PeriodicOptions& opt = {});
+
+}  // namespace dfchaos::certified

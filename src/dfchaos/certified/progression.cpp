@@ -1,0 +1,315 @@
+#include "dfchaos/certified/progression.hpp"
+
+#include <cmath>
+#include <vector>
+
+#include "dfchaos/certified/oracle.hpp"
+
+namespace dfchaos::certified {
+
+Ball G2(const Model& m, const Ball& theta, const Ball& theta1, const Ball& t, const Ball& b, const Ball& q) {
+  return 2.0 * b * (theta1 - theta) + m.a * cos(theta) + (2.0 * b - q) * (t - theta1) - m.a * cos(t);
+}
+
+namespace {
+
+/// \f$t \mapsto \pm G_2(\theta, \theta_1, t; b, q)\f$ at fixed corner values.
+class Velocity final : public NegativityTarget {
+ public:
+  Velocity(const Model& m, const Ball& theta, const Ball& theta1, const Ball& b, const Ball& q, double sign)
+      : m_(m), sign_(sign), two_c_(2.0 * b - q) {
+    base_ = 2.0 * b * (theta1 - theta) + m.a * cos(theta) - two_c_ * theta1;  // G2 = base + 2c t - a cos t
+  }
+  Ball value(const Ball& t) const override { return sign_ * (base_ + two_c_ * t - m_.a * cos(t)); }
+  Ball slope(const Ball& t) const override { return sign_ * (two_c_ + m_.a * sin(t)); }
+  Ball curvature(const Ball& t) const override { return sign_ * (m_.a * cos(t)); }
+  std::string variable() const override { return "t"; }
+
+ private:
+  const Model& m_;
+  double sign_;
+  Ball two_c_, base_;
+};
+
+/// \f$t \mapsto a\sin t + 2b - q\f$ (the slope of G2 in t).
+class Acceleration final : public NegativityTarget {
+ public:
+  Acceleration(const Model& m, const Ball& b, const Ball& q) : m_(m), two_c_(2.0 * b - q) {}
+  Ball value(const Ball& t) const override { return m_.a * sin(t) + two_c_; }
+  Ball slope(const Ball& t) const override { return m_.a * cos(t); }
+  Ball curvature(const Ball& t) const override { return -(m_.a * sin(t)); }
+  std::string variable() const override { return "t"; }
+
+ private:
+  const Model& m_;
+  Ball two_c_;
+};
+
+Ball newton_velocity(const Velocity& v, const Ball& guess) {
+  Ball x = guess.mid_ball();
+  const Ball tol = Ball(std::max(1.0, std::fabs(x.mid())) * std::ldexp(1.0, -static_cast<int>(precision() - 14)));
+  for (int it = 0; it < 40; ++it) {
+    const Ball f = v.value(x).mid_ball(), d = v.slope(x).mid_ball();
+    if (d.contains(0.0)) break;
+    const Ball step = (f / d).mid_ball();
+    x = (x - step).mid_ball();
+    if (lt(abs(step), tol)) break;
+  }
+  return x;
+}
+
+Ball delta_for(const Ball& x) {
+  return Ball(std::max(1.0, std::fabs(x.mid())) * std::ldexp(1.0, -static_cast<int>(precision() - 24)));
+}
+
+}  // namespace
+
+Theta2Proof certify_theta2(const Model& m, const StartSet& set, const T1Proof& t1, Budget& budget) {
+  Theta2Proof r;
+  if (!t1.verdict) {
+    r.verdict = Verdict::fail("theta2: needs T1", "T1 not proved");
+    return r;
+  }
+  const Ball th_min = set.theta_min(m), th_max = set.theta_max(m);
+  const Velocity gmin(m, th_min, t1.t_lo, m.b_lo, m.q_hi, 1.0);
+  const Velocity gmax(m, th_max, t1.t_hi, m.b_hi, m.q_lo, 1.0);
+  const double a = m.box().a;
+  double guess_min = oracle::theta2(a, m.box().b_lo, m.box().q_hi, th_min.mid());
+  double guess_max = oracle::theta2(a, m.box().b_hi, m.box().q_lo, th_max.mid());
+  if (std::isnan(guess_min) || std::isnan(guess_max)) {
+    r.verdict = Verdict::fail("theta2: guess", "the floating-point layer gave no theta2 at the corners");
+    return r;
+  }
+  const Ball rho_min = newton_velocity(gmin, Ball(guess_min));
+  const Ball rho_max = newton_velocity(gmax, Ball(guess_max));
+  bool ok = false;
+  Ball d = delta_for(rho_min);
+  for (int k = 0; k < 4 && !ok; ++k, d = d * Ball(std::ldexp(1.0, 24))) {
+    r.u_lo = (rho_min - d).lower_ball();
+    ok = gmin.value(r.u_lo).is_positive();
+  }
+  if (!ok) {
+    r.verdict = Verdict::fail("theta2: bracket", "G2 > 0 at the left end not proved near t = " + rho_min.mid_str(20));
+    return r;
+  }
+  ok = false;
+  d = delta_for(rho_max);
+  for (int k = 0; k < 4 && !ok; ++k, d = d * Ball(std::ldexp(1.0, 24))) {
+    r.u_hi = (rho_max + d).upper_ball();
+    ok = gmax.value(r.u_hi).is_negative();
+  }
+  if (!ok) {
+    r.verdict = Verdict::fail("theta2: bracket", "G2 < 0 at the right end not proved near t = " + rho_max.mid_str(20));
+    return r;
+  }
+  if (!lt(t1.t_hi, r.u_lo)) {
+    r.verdict = Verdict::fail("theta2: bracket", "the theta2 bracket does not start after the T1 enclosure");
+    return r;
+  }
+  if (!lt(r.u_lo, r.u_hi)) {
+    r.verdict = Verdict::fail("theta2: bracket", "the corners' stops are out of order");
+    return r;
+  }
+  r.enclosure = Ball::hull(r.u_lo, r.u_hi);
+  // G2 > 0 from the impact to u_lo: the first zero is not earlier.
+  const Velocity minus_gmin(m, th_min, t1.t_lo, m.b_lo, m.q_hi, -1.0);
+  // (Failures of the corner functions refute nothing: they mix the corners of the set.)
+  if (Verdict v = prove_negative(minus_gmin, t1.t_lo, r.u_lo, budget, "theta2: no earlier stop", &r.stats); !v) {
+    v.refuted = false;
+    r.verdict = v;
+    return r;
+  }
+  // dG2/dt < 0 on the bracket: a simple zero.
+  const Acceleration acc(m, m.b_hi, m.q_lo);
+  if (Verdict v = prove_negative(acc, r.u_lo, r.u_hi, budget, "theta2: simple zero (F - q < 0)", &r.stats); !v) {
+    v.refuted = false;
+    r.verdict = v;
+    return r;
+  }
+  r.verdict = Verdict::ok();
+  return r;
+}
+
+StopArcProof certify_stop_arc(const Model& m, const StartSet& set, const T1Proof& t1, Budget& budget) {
+  StopArcProof r;
+  if (!t1.verdict) {
+    r.verdict = Verdict::fail("stop arc: needs T1", "T1 not proved");
+    return r;
+  }
+  const Ball th_min = set.theta_min(m), th_max = set.theta_max(m);
+  const Velocity gmin(m, th_min, t1.t_lo, m.b_lo, m.q_hi, 1.0);
+  const Velocity gmax(m, th_max, t1.t_hi, m.b_hi, m.q_lo, 1.0);
+  const double guess = oracle::theta2(m.box().a, m.box().b_hi, m.box().q_lo, th_max.mid());
+  if (std::isnan(guess)) {
+    r.verdict = Verdict::fail("stop arc: guess", "the floating-point layer gave no theta2");
+    return r;
+  }
+  const Ball rho = newton_velocity(gmax, Ball(guess));
+  bool ok = false;
+  Ball d = delta_for(rho);
+  for (int k = 0; k < 5 && !ok; ++k, d = d * Ball(std::ldexp(1.0, 16))) {
+    r.tau = (rho + d).upper_ball();
+    ok = gmax.value(r.tau).is_negative() && lt(t1.t_hi, r.tau);
+  }
+  if (!ok) {
+    r.verdict = Verdict::fail("stop arc: G2 < 0", "no certified negative velocity after the impact near t = " + rho.mid_str(17));
+    return r;
+  }
+  r.k = static_cast<long long>(std::floor((r.tau.mid() - m.t3.mid()) / (2 * M_PI)));
+  const Ball shift = Ball(static_cast<double>(r.k)) * m.two_pi;
+  const Ball A = m.t3 + shift, E = m.t2 + shift + m.two_pi;
+  if (!lt(r.tau, E)) {
+    r.verdict = Verdict::fail("stop arc: end", "the velocity is not proved negative before t2 of the arc");
+    return r;
+  }
+  if (le(A, t1.t_lo)) {
+    r.from = t1.t_lo;
+  } else {
+    const Ball A_up = A.upper_ball();
+    if (!lt(t1.t_lo, A_up) || !lt(A_up, r.tau)) {
+      r.verdict = Verdict::fail("stop arc: start", "t3 of the arc not between the impact and the stop");
+      return r;
+    }
+    const Velocity minus_gmin(m, th_min, t1.t_lo, m.b_lo, m.q_hi, -1.0);
+    if (Verdict v = prove_negative(minus_gmin, t1.t_lo, A_up, budget, "stop arc: no stop before t3", &r.stats); !v) {
+      v.refuted = false;
+      r.verdict = v;
+      return r;
+    }
+    r.from = A;
+  }
+  r.needs_lemma1 = !le(m.t1 + shift + m.two_pi, r.from);
+  r.verdict = Verdict::ok();
+  return r;
+}
+
+// ---- Lemma 1 --------------------------------------------------------------------------------------
+
+Ball lemma1_velocity_at_t2(const Ball& a, const Ball& b, const Ball& q) {
+  const Ball pi = Ball::pi();
+  const Ball t0 = asin((q - 2.0 * b) / a);
+  const Ball t2 = pi + asin(2.0 * b / a);
+  return -(a * (cos(t2) - cos(t0))) + (2.0 * b - q) * (t2 - t0);
+}
+
+namespace {
+
+/// Refines t4 in [t1, t2] for a point box by bisection on the sign of u (decreasing there).
+Ball enclose_t4(const Model& m) {
+  Ball lo = m.t1.lower_ball(), hi = m.t2.upper_ball();
+  auto u = [&](const Ball& t) { return -(m.a * (cos(t) - cos(m.t0))) + m.two_c * (t - m.t0); };
+  for (int it = 0; it < 200; ++it) {
+    const Ball mid = ((lo + hi) * 0.5).mid_ball();
+    const Ball v = u(mid);
+    if (v.is_positive()) lo = mid;
+    else if (v.is_negative()) hi = mid;
+    else break;
+  }
+  return Ball::hull(lo, hi);
+}
+
+}  // namespace
+
+Lemma1Proof certify_lemma1(const Model& m, int max_pieces) {
+  Lemma1Proof r;
+  if (Verdict v = m.admissible(); !v) {
+    r.verdict = v;
+    return r;
+  }
+  struct Piece { double b_lo, b_hi, q_lo, q_hi; };
+  std::vector<Piece> stack{{m.box().b_lo, m.box().b_hi, m.box().q_lo, m.box().q_hi}};
+  bool first = true;
+  while (!stack.empty()) {
+    const Piece p = stack.back();
+    stack.pop_back();
+    if (++r.pieces > max_pieces) {
+      r.verdict = Verdict::fail("Lemma 1: u(t2) < 0", "more than " + std::to_string(max_pieces) + " sub-boxes needed");
+      return r;
+    }
+    const Ball u = lemma1_velocity_at_t2(m.a, Ball::interval(p.b_lo, p.b_hi), Ball::interval(p.q_lo, p.q_hi));
+    r.u_at_t2 = first ? u : Ball::hull(r.u_at_t2, u);
+    first = false;
+    if (u.is_negative()) continue;
+    if (u.is_positive()) {
+      r.verdict = Verdict::refute("Lemma 1: u(t2) < 0 (Eq. 8)", "u(t2) = " + u.str(8) + " > 0 at b in [" + fmt17(p.b_lo) + ", " +
+                                                                       fmt17(p.b_hi) + "], q in [" + fmt17(p.q_lo) + ", " + fmt17(p.q_hi) + "]");
+      return r;
+    }
+    const double bm = 0.5 * (p.b_lo + p.b_hi), qm = 0.5 * (p.q_lo + p.q_hi);
+    const bool split_b = (p.b_hi - p.b_lo) >= (p.q_hi - p.q_lo) * 0.25 && bm > p.b_lo && bm < p.b_hi;
+    const bool split_q = !split_b && qm > p.q_lo && qm < p.q_hi;
+    if (!split_b && !split_q) {
+      r.verdict = Verdict::fail("Lemma 1: u(t2) < 0 (Eq. 8)", "undecided at b = " + fmt17(p.b_lo) + ", q = " + fmt17(p.q_lo) + ": u(t2) = " + u.str(8));
+      return r;
+    }
+    if (split_b) {
+      stack.push_back({bm, p.b_hi, p.q_lo, p.q_hi});
+      stack.push_back({p.b_lo, bm, p.q_lo, p.q_hi});
+    } else {
+      stack.push_back({p.b_lo, p.b_hi, qm, p.q_hi});
+      stack.push_back({p.b_lo, p.b_hi, p.q_lo, qm});
+    }
+  }
+  r.t4 = m.box().is_point() ? enclose_t4(m) : Ball::hull(m.t1, m.t2);
+  r.verdict = Verdict::ok();
+  return r;
+}
+
+Lemma1Bound lemma1_b0_lower_bound(double a, double q, double resolution, int max_pieces) {
+  Lemma1Bound r;
+  const Ball A(a), Q(q);
+  auto u_at = [&](double b) { return lemma1_velocity_at_t2(A, Ball(b), Q); };
+  if (!u_at(0.0).is_negative()) {
+    r.verdict = Verdict::fail("Lemma 1: b0(q)", "u(t2) < 0 not proved at b = 0 (needs q > a sin(vartheta0), Eq. 9)");
+    return r;
+  }
+  // Floating estimate of the first sign change (bisection on the certified sign where decidable).
+  double lo = 0, hi = std::min(0.5 * q, 0.5 * a) * (1 - 1e-12);
+  if (u_at(hi).is_negative()) {
+    r.b_float = hi;
+  } else {
+    // March to the first b where u is not negative, then bisect.
+    const int n = 4096;
+    double prev = 0;
+    for (int i = 1; i <= n; ++i) {
+      const double b = hi * i / n;
+      if (!u_at(b).is_negative()) { lo = prev; hi = b; break; }
+      prev = b;
+    }
+    for (int it = 0; it < 200 && hi - lo > 1e-17 * hi; ++it) {
+      const double mid = 0.5 * (lo + hi);
+      if (u_at(mid).is_negative()) lo = mid; else hi = mid;
+    }
+    r.b_float = lo;
+  }
+  double b_low = r.b_float * (1 - resolution);
+  for (int attempt = 0; attempt < 20; ++attempt, b_low *= 0.9) {
+    // Admissibility on [0, b_low]: 2b < a, q > 2b, q - 2b < a.
+    const Ball Bmax(b_low);
+    if (!(lt(2.0 * Bmax, A) && lt(2.0 * Bmax, Q) && lt(Q, A))) continue;
+    std::vector<std::pair<double, double>> stack{{0.0, b_low}};
+    int pieces = 0;
+    bool ok = true;
+    while (!stack.empty() && ok) {
+      const auto [x, y] = stack.back();
+      stack.pop_back();
+      if (++pieces > max_pieces) { ok = false; break; }
+      const Ball u = lemma1_velocity_at_t2(A, Ball::interval(x, y), Q);
+      if (u.is_negative()) continue;
+      const double mid = 0.5 * (x + y);
+      if (u.is_positive() || !(mid > x && mid < y)) { ok = false; break; }
+      stack.push_back({mid, y});
+      stack.push_back({x, mid});
+    }
+    if (ok) {
+      r.b_low = b_low;
+      r.pieces = pieces;
+      r.verdict = Verdict::ok();
+      return r;
+    }
+  }
+  r.verdict = Verdict::fail("Lemma 1: b0(q)", "no b_low proved within 20 attempts below " + fmt17(r.b_float));
+  return r;
+}
+
+}  // namespace dfchaos::certified

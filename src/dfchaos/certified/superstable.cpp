@@ -1,0 +1,225 @@
+#include "dfchaos/certified/superstable.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <vector>
+
+#include "dfchaos/certified/vartheta0.hpp"
+#include "dfchaos/superstable.hpp"
+
+namespace dfchaos::certified {
+
+namespace {
+
+/// The phase of a theta2 enclosure, reduced into [t1, t1 + 2 pi) by the turn of its midpoint.
+Ball phase_of(const Model& m, const Ball& x) {
+  const long long k = static_cast<long long>(std::floor((x.mid() - m.t1.mid()) / (2 * M_PI)));
+  return x - Ball(static_cast<double>(k)) * m.two_pi;
+}
+
+TProof T_at_t2(const Model& m, Budget& budget) {
+  return certify_T(m, StartSet::from_t2(m, m.t2.upper()), budget);
+}
+
+}  // namespace
+
+int superstable_condition(const Model& m, const TProof& t) {
+  if (!t.theta2.verdict) return -1;
+  const Ball P = phase_of(m, t.theta2.enclosure);
+  if (lt(m.t1, P) && lt(P, m.t2)) return 21;
+  if (lt(m.t3, P) && lt(P, m.t0 + m.two_pi)) return 22;
+  if (le(m.t2, P) && le(P, m.t3)) return 0;
+  return -1;
+}
+
+SuperstableProof prove_superstable(double a, double b, double q, double eps_try) {
+  const auto start = std::chrono::steady_clock::now();
+  SuperstableProof r;
+  auto finish = [&](Verdict v) {
+    r.verdict = std::move(v);
+    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return r;
+  };
+  const Model m(ParamBox::point(a, b, q));
+  if (Verdict v = m.admissible(); !v) return finish(v);
+  {
+    static const Vartheta0 v0 = certify_vartheta0(128);
+    r.eq2 = lt(2.0 * m.b, m.a) && lt(m.a * v0.sine, m.q) && lt(m.q, m.a);
+    r.eq23 = lt(m.q, m.a);
+  }
+  Budget budget;
+  const TProof at = T_at_t2(m, budget);
+  if (!at.verdict) return finish(Verdict::fail("Theorem 2: T at t2", at.verdict.describe()));
+  r.T1 = at.t1.enclosure;
+  r.theta2 = at.theta2.enclosure;
+  r.theta2_phase = phase_of(m, at.theta2.enclosure);
+  r.condition = superstable_condition(m, at);
+  if (r.condition == 0)
+    return finish(Verdict::refute("Theorem 2: (21) or (22)", "theta2(t2) mod 2pi = " + r.theta2_phase.str(12) + " lies in [t2, t3]: T(t2) = " + at.T.str(10)));
+  if (r.condition < 0) return finish(Verdict::fail("Theorem 2: (21) or (22)", "undecided: theta2(t2) mod 2pi = " + r.theta2_phase.str(12)));
+  if (!at.constant_t2) return finish(Verdict::fail("Theorem 2: T(t2) = t2", "T(t2) = " + at.T.str(10)));
+  // epsilon: cover [t2, t2 + eps] with closed balls on which T = t2.
+  double eps = eps_try;
+  if (std::isnan(eps)) {
+    try {
+      eps = 0.9 * dfchaos::superstable_check(dfchaos::Parameters(a, b, q), 20000).epsilon;
+    } catch (const std::exception&) {
+      eps = 0;
+    }
+    if (!(eps > 0)) eps = 1e-4;
+  }
+  const double t2_up = m.t2.upper();
+  std::string last_failure;
+  for (int attempt = 0; attempt < 12; ++attempt, eps *= 0.5) {
+    const double hi = t2_up + eps;
+    struct Item { double lo, hi; int depth; };  // lo NaN: the ball starts exactly at t2
+    std::vector<Item> stack{{NAN, hi, 0}};
+    int balls = 0;
+    bool used_l1 = false, ok = true;
+    while (!stack.empty() && ok) {
+      const Item it = stack.back();
+      stack.pop_back();
+      const StartSet set = std::isnan(it.lo) ? StartSet::from_t2(m, it.hi) : StartSet::interval(it.lo, it.hi);
+      const TProof t = certify_T(m, set, budget);
+      if (t.verdict && t.constant_t2) {
+        ++balls;
+        used_l1 = used_l1 || t.used_lemma1;
+        continue;
+      }
+      const double from = std::isnan(it.lo) ? t2_up : it.lo;
+      const double mid = 0.5 * (from + it.hi);
+      if (it.depth >= 24 || !(mid > from && mid < it.hi) || budget.exhausted()) {
+        last_failure = "on " + set.describe() + ": " + (t.verdict ? "T not constant" : t.verdict.describe());
+        ok = false;
+        break;
+      }
+      stack.push_back({mid, it.hi, it.depth + 1});
+      stack.push_back({it.lo, mid, it.depth + 1});
+    }
+    if (ok) {
+      r.eps = eps;
+      r.balls = balls;
+      r.used_lemma1 = used_l1 || at.used_lemma1;
+      return finish(Verdict::ok());
+    }
+  }
+  return finish(Verdict::fail("Theorem 2: epsilon", "T = t2 on [t2, t2 + eps] not proved for any eps tried (last: " + last_failure + ")"));
+}
+
+WindowProof prove_window(double a, double q, double b_lo, double b_hi, double rel) {
+  const auto start = std::chrono::steady_clock::now();
+  WindowProof r;
+  r.b_lo_float = b_lo;
+  r.b_hi_float = b_hi;
+  auto finish = [&](Verdict v) {
+    r.verdict = std::move(v);
+    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return r;
+  };
+  const double mid = 0.5 * (b_lo + b_hi);
+  r.inside = prove_superstable(a, mid, q);
+  if (!r.inside.verdict) return finish(Verdict::fail("window: inside", r.inside.verdict.describe()));
+  std::string last;
+  for (int attempt = 0; attempt < 4; ++attempt, rel *= 10) {
+    r.left_out = b_lo * (1 - rel);
+    r.left_in = b_lo * (1 + rel);
+    r.right_in = b_hi * (1 - rel);
+    r.right_out = b_hi * (1 + rel);
+    if (!(r.left_in < r.right_in)) { last = "window narrower than the edge brackets"; break; }
+    // Outer points: T(t2) certainly differs from t2.
+    bool outer_ok = true;
+    for (int side = 0; side < 2 && outer_ok; ++side) {
+      const Model mo(ParamBox::point(a, side == 0 ? r.left_out : r.right_out, q));
+      Budget budget;
+      const TProof t = T_at_t2(mo, budget);
+      Ball& T = side == 0 ? r.T_left_out : r.T_right_out;
+      T = t.T;
+      if (!t.verdict || t.constant_t2 || !lt(mo.t2, t.T)) {
+        last = std::string("T(t2) != t2 not proved at b = ") + fmt17(side == 0 ? r.left_out : r.right_out) + ": " + t.verdict.describe();
+        outer_ok = false;
+      }
+    }
+    if (!outer_ok) continue;
+    // Inside: b-boxes on which T(t2(b)) = t2.
+    struct Item { double lo, hi; int depth; };
+    std::vector<Item> stack{{r.left_in, r.right_in, 0}};
+    int boxes = 0;
+    bool ok = true;
+    Budget budget;
+    budget.max_tests = 20'000'000;
+    while (!stack.empty()) {
+      const Item it = stack.back();
+      stack.pop_back();
+      const Model mb(ParamBox{a, it.lo, it.hi, q, q});
+      const TProof t = certify_T(mb, StartSet::at_t2(), budget);
+      if (t.verdict && t.constant_t2) {
+        ++boxes;
+        continue;
+      }
+      const double m2 = 0.5 * (it.lo + it.hi);
+      if (it.depth >= 48 || !(m2 > it.lo && m2 < it.hi) || boxes > 20000 || budget.exhausted()) {
+        last = "T(t2(b)) = t2 not proved for b in [" + fmt17(it.lo) + ", " + fmt17(it.hi) + "]: " + t.verdict.describe();
+        ok = false;
+        break;
+      }
+      stack.push_back({m2, it.hi, it.depth + 1});
+      stack.push_back({it.lo, m2, it.depth + 1});
+    }
+    if (!ok) continue;
+    r.boxes = boxes;
+    return finish(Verdict::ok());
+  }
+  return finish(Verdict::fail("window: edges", last));
+}
+
+Theorem2Counterexample prove_theorem2_counterexample(double a, double b, double q) {
+  Theorem2Counterexample r;
+  const Model m(ParamBox::point(a, b, q));
+  if (Verdict v = m.admissible(); !v) {
+    r.verdict = v;
+    return r;
+  }
+  static const Vartheta0 v0 = certify_vartheta0(128);
+  if (!(lt(2.0 * m.b, m.a) && lt(m.a * v0.sine, m.q) && lt(m.q, m.a))) {
+    r.verdict = Verdict::fail("Theorem 2 counterexample: (2)", "assumptions (2) not proved");
+    return r;
+  }
+  Budget budget;
+  const StartSet set = StartSet::from_t2(m, m.t2.upper());
+  const T1Proof t1 = certify_T1(m, set, budget);
+  if (!t1.verdict) {
+    r.verdict = t1.verdict;
+    return r;
+  }
+  const Theta2Proof th = certify_theta2(m, set, t1, budget);
+  if (!th.verdict) {
+    r.verdict = th.verdict;
+    return r;
+  }
+  r.theta2_phase = phase_of(m, th.enclosure);
+  if (!(lt(m.t3, r.theta2_phase) && lt(r.theta2_phase, m.t0 + m.two_pi))) {
+    r.verdict = Verdict::fail("Theorem 2 counterexample: (22)", "theta2(t2) mod 2pi = " + r.theta2_phase.str(12));
+    return r;
+  }
+  auto u = [&](const Ball& t) { return -(m.a * (cos(t) - cos(m.t0))) + m.two_c * (t - m.t0); };
+  r.u_at_t2 = u(m.t2);
+  r.u_at_t3 = u(m.t3);
+  if (!r.u_at_t2.is_positive() || !r.u_at_t3.is_negative()) {
+    r.verdict = Verdict::fail("Theorem 2 counterexample: u(t2) > 0 > u(t3)", "u(t2) = " + r.u_at_t2.str(8) + ", u(t3) = " + r.u_at_t3.str(8));
+    return r;
+  }
+  // t4 by bisection on the sign of u in [t2, t3] (u decreasing there).
+  Ball lo = m.t2.upper_ball(), hi = m.t3.lower_ball();
+  for (int it = 0; it < 200; ++it) {
+    const Ball mid = ((lo + hi) * 0.5).mid_ball();
+    const Ball v = u(mid);
+    if (v.is_positive()) lo = mid;
+    else if (v.is_negative()) hi = mid;
+    else break;
+  }
+  r.T = Ball::hull(lo, hi);
+  r.verdict = Verdict::ok();
+  return r;
+}
+
+}  // namespace dfchaos::certified

@@ -1,0 +1,61 @@
+#!/usr/bin/env bash
+# `dfchaos certify` (issue 14): exit 0 when proved, 1 when not proved (with JSON naming the failed
+# step), 2 for bad input (one line on stderr naming the parameter, nothing on stdout).
+set -u
+cli=$1
+fails=0
+checks=0
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+
+expect() {  # expect RC PATTERN ARGS...: exit status RC and stdout matching PATTERN (rc 2: stderr)
+  local rc_want=$1 pat=$2; shift 2
+  checks=$((checks + 1))
+  "$cli" certify "$@" >"$tmp/out" 2>"$tmp/err"
+  local rc=$?
+  local ok=1
+  if [[ $rc -ne $rc_want ]]; then ok=0; fi
+  if [[ $rc_want -eq 2 ]]; then
+    [[ -s "$tmp/out" || $(wc -l <"$tmp/err") -ne 1 ]] && ok=0
+    grep -q -- "$pat" "$tmp/err" || ok=0
+  else
+    grep -q -- "$pat" "$tmp/out" || ok=0
+  fi
+  if ((ok)); then
+    echo "ok:   dfchaos certify $* -> $rc"
+  else
+    echo "FAIL: dfchaos certify $* -> rc=$rc (want $rc_want), stdout $(head -c 200 "$tmp/out"), stderr $(head -c 200 "$tmp/err")"
+    fails=$((fails + 1))
+  fi
+}
+
+expect 0 '"proved": true'  vartheta0
+expect 0 '0.8104702831753706"' vartheta0
+expect 0 '"J0"'            covering --a 1 --b 0.001 --q 0.85
+expect 0 '"proved": true'  covering --b 0.003:0.00300001 --q 0.85
+expect 1 '"failed_step"'   covering --b 0.02 --q 0.85
+expect 1 '"proved": false' covering --b 0.02 --q 0.85
+expect 0 '"itinerary": "0001"' periodic --b 0.003 --q 0.85 --period 4
+expect 0 '"n": 15'         discontinuities --b 0.01
+expect 0 '"proved": true'  lemma1 --b 0.001 --q 0.85
+expect 1 '"refuted": true' lemma1 --b 0.001 --q 0.70
+expect 0 '"b0_lower_bound"' b0 --q 0.85
+expect 0 '"condition"'     superstable --b 0.0641 --q 0.85
+expect 1 '"failed_step"'   superstable --b 0.05 --q 0.85
+expect 0 '"right_edge"'    superstable --b 0.0641 --q 0.85 --window 0.0640755627691:0.064187276763
+expect 2 'b:'   covering --b x --q 0.85
+expect 2 'b:'   covering --b "" --q 0.85
+expect 2 'b:'   covering --b nan --q 0.85
+expect 2 'b:'   covering --b 0.6 --q 0.85
+expect 2 'b:'   covering --b 0.002:0.001 --q 0.85
+expect 2 'q:'   covering --b 0.001
+expect 2 'q:'   covering --b 0.001 --q 0.001
+expect 2 'a:'   covering --a -1 --b 0.001 --q 0.85
+expect 2 'period:' periodic --b 0.003 --q 0.85
+expect 2 'period:' periodic --b 0.003 --q 0.85 --period 0
+expect 2 'b:'   periodic --b 0.003:0.004 --q 0.85 --period 2
+expect 2 'segment:' discontinuities --b 0.01 --segment L7
+expect 2 'window:' superstable --b 0.06 --q 0.85 --window 0.07:0.06
+expect 2 'what'  covered --b 0.001 --q 0.85
+echo "cli_certify: $checks checks, $fails failures"
+exit $((fails > 0))

@@ -1,0 +1,283 @@
+// The certified layer (issue 14), in tiers:
+//  - unit: the Ball wrapper, vartheta0's digits and correctly rounded doubles;
+//  - cross-validation: certified enclosures of T1, theta2 and T contain the floating layer's values
+//    (within its stated accuracy) on many phases and parameters; Lemma 2's count matches the closed
+//    form of the floating layer;
+//  - failure: a proof fails where the statement is false (no covering at (0.85, 0.02); no
+//    superstability just outside a window edge; a phase ball straddling a discontinuity of T1, or a
+//    jump of T, is never proved continuous; Lemma 1 below q = a sin(vartheta0)).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+
+#include "dfchaos/certified/json.hpp"
+#include "dfchaos/certified/region.hpp"
+#include "dfchaos/next_hit.hpp"
+#include "dfchaos/progression_stop.hpp"
+#include "dfchaos/return_map.hpp"
+#include "dfchaos/superstable.hpp"
+
+using namespace dfchaos;
+using namespace dfchaos::certified;
+
+namespace {
+
+// The floating layer computes instants (T1, theta2) to about 1e-12 relative and T to about 1e-10
+// (DESIGN.md §3); its values must lie within these of the certified enclosures.
+constexpr double kInstantRelTol = 1e-10;
+constexpr double kPhaseAbsTol = 1e-9;
+// Phases per parameter set in the cross-validation, and the share of them that must be proved
+// (the rest lie too close to a grazing or a jump of T for a thin ball: "not proved" is allowed there).
+constexpr int kPhases = 150;
+constexpr double kMinProvedShare = 0.9;
+
+bool within(const Ball& enclosure, double value, double tol) {
+  return enclosure.lower() - tol <= value && value <= enclosure.upper() + tol;
+}
+
+}  // namespace
+
+TEST(CertifiedBall, ExactDoublesAndCertainPredicates) {
+  const Ball x(0.1);
+  EXPECT_TRUE(x.is_exact());
+  EXPECT_EQ(x.lower(), 0.1);
+  EXPECT_EQ(x.upper(), 0.1);
+  const Ball d = Ball::decimal("0.1");  // the decimal, not the double
+  EXPECT_FALSE(d.is_exact());
+  EXPECT_FALSE(d.contains(0.1));
+  const Ball i = Ball::interval(-1, 2);
+  EXPECT_FALSE(i.is_positive());
+  EXPECT_FALSE(i.is_negative());
+  EXPECT_TRUE((i + 1.5).is_positive());
+  EXPECT_TRUE(lt(Ball(1.0), Ball(2.0)));
+  EXPECT_FALSE(lt(i, Ball(1.0)));
+}
+
+TEST(CertifiedVartheta0, DigitsAndCorrectlyRoundedDoubles) {
+  const Vartheta0 v = certify_vartheta0(200);
+  ASSERT_TRUE(v.verdict.proved);
+  ASSERT_TRUE(v.rounding_certified);
+  EXPECT_EQ(v.value.mid_str(40).substr(0, 40), "0.81047028317537062479480742736238154592");
+  EXPECT_EQ(v.sine.mid_str(40).substr(0, 40), "0.72461135377670847573899045352563178434");
+  EXPECT_LT(v.value.radius(), 1e-50);
+  // The correctly rounded doubles end ...706 and ...085 (the GSL root printed ...707 and ...086).
+  EXPECT_EQ(v.value_double, 0.8104702831753706);
+  EXPECT_EQ(v.sine_double, 0.7246113537767085);
+  EXPECT_EQ(shortest_double(v.value_double), "0.8104702831753706");
+  EXPECT_EQ(shortest_double(v.sine_double), "0.7246113537767085");
+}
+
+// Cross-validation: the certified T1, theta2 and T at thin phases and on small balls contain the
+// floating layer's values.
+TEST(CertifiedReturnMap, EnclosuresContainTheFloatingValues) {
+  const double params[][2] = {{0.85, 1e-4}, {0.85, 1e-3}, {0.8, 3e-3}, {0.95, 1e-2}, {0.9, 5e-2}};
+  for (const auto& pq : params) {
+    const double q = pq[0], b = pq[1];
+    const Parameters p(1, b, q);
+    const Model m(ParamBox::point(1, b, q));
+    const double t2 = *p.t2(), t3 = *p.t3();
+    int proved = 0;
+    for (int i = 0; i < kPhases; ++i) {
+      const double th = t2 + (t3 - t2) * std::fmod(0.5 + i * 0.6180339887498949, 1.0);
+      const MapStep s = return_map_step(p, th);
+      Budget budget;
+      const TProof t = certify_T(m, StartSet::point(th), budget);
+      if (!t.verdict) continue;
+      ++proved;
+      const double T1 = s.hit.t1.value(), th2 = s.theta2.value();
+      EXPECT_TRUE(within(t.t1.enclosure, T1, kInstantRelTol * std::fabs(T1))) << "b=" << b << " theta=" << th << " T1=" << T1;
+      if (t.theta2.verdict) {
+        EXPECT_TRUE(within(t.theta2.enclosure, th2, kInstantRelTol * std::fabs(th2))) << "b=" << b << " theta=" << th;
+      }
+      EXPECT_TRUE(within(t.T, s.T, kPhaseAbsTol)) << "b=" << b << " theta=" << th << " T=" << s.T << " enclosure " << t.T.str(15);
+      if (t.constant_t2) {
+        EXPECT_EQ(s.T, t2) << "b=" << b << " theta=" << th;
+      }
+      // A small ball around the phase: its enclosure holds the floating value at the centre.
+      Budget b2;
+      const TProof tb = certify_T(m, StartSet::interval(th - 1e-9, th + 1e-9), b2);
+      if (tb.verdict) {
+        EXPECT_TRUE(within(tb.T, s.T, kPhaseAbsTol)) << "ball at theta=" << th;
+      }
+    }
+    EXPECT_GE(proved, static_cast<int>(kMinProvedShare * kPhases)) << "b=" << b << " q=" << q;
+  }
+}
+
+TEST(CertifiedReturnMap, StartAtT2UsesTheCubicTerm) {
+  const Model m(ParamBox::point(1, 0.0641, 0.85));
+  Budget budget;
+  const T1Proof t = certify_T1(m, StartSet::from_t2(m, m.t2.upper()), budget);
+  ASSERT_TRUE(t.verdict.proved) << t.verdict.describe();
+  const MapStep s = return_map_step(Parameters(1, 0.0641, 0.85), *Parameters(1, 0.0641, 0.85).t2());
+  EXPECT_TRUE(within(t.enclosure, s.hit.t1.value(), kInstantRelTol * s.hit.t1.value()));
+}
+
+// Failure tier: a ball straddling a discontinuity of T1 is never proved continuous.
+TEST(CertifiedReturnMap, BallAcrossADiscontinuityOfT1IsNotProved) {
+  const DiscontinuityProof d = prove_discontinuities(1, 0.01, L_101pi_100(), L_3pi_2());
+  ASSERT_TRUE(d.verdict.proved) << d.verdict.describe();
+  const Model m(ParamBox::point(1, 0.01, 0.85));
+  for (const auto& z : d.z) {
+    for (double r : {1e-3, 1e-6, 1e-10, 1e-13}) {
+      Budget budget;
+      const T1Proof t = certify_T1(m, StartSet::interval(z.z.mid() - r, z.z.mid() + r), budget);
+      EXPECT_FALSE(t.verdict.proved) << "z=" << z.z.mid() << " r=" << r;
+    }
+  }
+}
+
+// Failure tier: a ball across the jump of T between the two covering segments is not proved.
+TEST(CertifiedReturnMap, BallAcrossAJumpOfTIsNotProved) {
+  const CoveringProof c = prove_covering(ParamBox::point(1, 0.001, 0.85));
+  ASSERT_TRUE(c.verdict.proved);
+  const Model m(c.box);
+  Budget budget;
+  const TProof t = certify_T(m, StartSet::interval(c.J0.hi, c.J1.lo), budget);
+  EXPECT_FALSE(t.verdict.proved);
+  // Nor any cover of that gap by balls of width 1e-7 (T jumps inside it).
+  bool all = true;
+  for (double x = c.J0.hi; x < c.J1.lo && all; x += 1e-7) {
+    Budget b2;
+    all = certify_T(m, StartSet::interval(x, std::min(x + 1e-7, c.J1.lo)), b2).verdict.proved;
+  }
+  EXPECT_FALSE(all);
+}
+
+TEST(CertifiedLemma1, ProvedAboveAndRefutedBelowTheThreshold) {
+  const Lemma1Proof yes = certify_lemma1(Model(ParamBox::point(1, 0.001, 0.85)));
+  EXPECT_TRUE(yes.verdict.proved);
+  EXPECT_TRUE(yes.u_at_t2.is_negative());
+  // q/a = 0.70 < sin(vartheta0): the progression from t0 does not stop before t2 (Eq. 9 fails).
+  const Lemma1Proof no = certify_lemma1(Model(ParamBox::point(1, 0.001, 0.70)));
+  EXPECT_FALSE(no.verdict.proved);
+  EXPECT_TRUE(no.verdict.refuted);
+  const ProgressionFromT0 f = progression_from_t0(Parameters(1, 0.001, 0.70));
+  EXPECT_FALSE(f.stops_in_t1_t2);
+  // The certified b0 bound lies below the floating estimate, within the requested resolution.
+  const Lemma1Bound bnd = lemma1_b0_lower_bound(1, 0.85);
+  ASSERT_TRUE(bnd.verdict.proved);
+  EXPECT_LT(bnd.b_low, bnd.b_float);
+  EXPECT_GT(bnd.b_low, 0.99 * bnd.b_float);
+  EXPECT_TRUE(certify_lemma1(Model(ParamBox{1, 0.5 * bnd.b_low, bnd.b_low, 0.85, 0.85})).verdict.proved);
+}
+
+TEST(CertifiedLemma2, CountAndEnclosuresMatchTheClosedForm) {
+  for (double b : {0.01, 0.003}) {
+    const DiscontinuityProof d = prove_discontinuities(1, b, L_101pi_100(), L_3pi_2());
+    ASSERT_TRUE(d.verdict.proved) << d.verdict.describe();
+    const auto f = symmetric_tangencies(Parameters(1, b, 0.85), 101 * M_PI / 100, 1.5 * M_PI);
+    ASSERT_EQ(d.z.size(), f.size());
+    for (std::size_t i = 0; i < f.size(); ++i) {
+      EXPECT_TRUE(within(d.z[i].z, f[i].z, 1e-12)) << i;
+      EXPECT_TRUE(d.z[i].jump.is_positive());
+      // T1 jumps up at z: the floating T1 just left of z is after the tangency.
+      EXPECT_GT(next_hit(Parameters(1, b, 0.85), d.z[i].z.lower() - 1e-9).theta1, d.z[i].t_star.upper());
+    }
+  }
+}
+
+TEST(CertifiedCovering, ProvedAtTheIssuePointsNotAtB002) {
+  const double pts[][2] = {{0.85, 0.001}, {0.85, 0.003}, {0.95, 0.01}, {0.85, 5e-5}};
+  for (const auto& pq : pts) {
+    const CoveringProof c = prove_covering(ParamBox::point(1, pq[1], pq[0]));
+    ASSERT_TRUE(c.verdict.proved) << c.verdict.describe();
+    EXPECT_LT(c.J0.hi, c.J1.lo);
+    EXPECT_GE(c.J0.lo, *Parameters(1, pq[1], pq[0]).t2());
+    EXPECT_LE(c.J1.hi, 1.5 * M_PI);
+    EXPECT_LT(c.seconds, 30.0);  // the issue's cost bound per proof
+    // The floating T at the ends agrees with what was proved there.
+    const Parameters p(1, pq[1], pq[0]);
+    for (const SegmentProof* J : {&c.J0, &c.J1}) {
+      EXPECT_GE(T(p, J->theta_top), 1.5 * M_PI);
+      EXPECT_EQ(T(p, J->theta_t2), *p.t2());
+    }
+  }
+  const CoveringProof none = prove_covering(ParamBox::point(1, 0.02, 0.85));
+  EXPECT_FALSE(none.verdict.proved);
+  EXPECT_FALSE(none.verdict.step.empty());
+  // A segment that does not cover (both ends with T = t2) is not proved.
+  const CoveringProof c = prove_covering(ParamBox::point(1, 0.001, 0.85));
+  const Model m(c.box);
+  Candidate bad{c.J0.theta_t2, c.J0.theta_t2 - 1e-6};
+  EXPECT_FALSE(prove_segment(m, bad).verdict.proved);
+}
+
+TEST(CertifiedCovering, SmallParameterBoxProvedLargeOneNot) {
+  const ParamBox small{1, 0.003, 0.003 + 1e-8, 0.85, 0.855};
+  EXPECT_TRUE(prove_covering(small).verdict.proved);
+  const ParamBox large{1, 0.003, 0.0031, 0.85, 0.85};  // T1 moves by tens of units across it
+  EXPECT_FALSE(prove_covering(large).verdict.proved);
+}
+
+TEST(CertifiedPeriodic, EveryPeriodUpToTwelveWithItsItinerary) {
+  const CoveringProof c = prove_covering(ParamBox::point(1, 0.003, 0.85));
+  ASSERT_TRUE(c.verdict.proved);
+  const Parameters p(1, 0.003, 0.85);
+  for (int m = 1; m <= 12; ++m) {
+    const PeriodicProof o = prove_periodic(c, m);
+    ASSERT_TRUE(o.verdict.proved) << "m=" << m << ": " << o.verdict.describe();
+    ASSERT_EQ(o.orbit.size(), static_cast<std::size_t>(m));
+    for (int j = 0; j < m; ++j) {
+      const SegmentProof& J = o.word[static_cast<std::size_t>(j)] == '1' ? c.J1 : c.J0;
+      EXPECT_GE(o.orbit[static_cast<std::size_t>(j)].lower(), J.lo);
+      EXPECT_LE(o.orbit[static_cast<std::size_t>(j)].upper(), J.hi);
+      EXPECT_LT(o.orbit[static_cast<std::size_t>(j)].radius(), 1e-15);
+    }
+    // One floating step from the enclosed point lands next to the next enclosed point.
+    const double x0 = o.orbit[0].mid(), x1 = o.orbit[static_cast<std::size_t>(1 % m)].mid();
+    EXPECT_NEAR(T(p, x0), x1, 1e-9);
+    EXPECT_TRUE(o.log_multiplier.is_positive());
+  }
+  const CoveringProof none = prove_covering(ParamBox::point(1, 0.02, 0.85));
+  EXPECT_FALSE(prove_periodic(none, 3).verdict.proved);
+}
+
+TEST(CertifiedSuperstable, WindowEdgesAndNoSuperstabilityOutside) {
+  const double lo = 0.0640755627691, hi = 0.064187276763;  // floating estimate of the window near 0.0641
+  const WindowProof w = prove_window(1, 0.85, lo, hi);
+  ASSERT_TRUE(w.verdict.proved) << w.verdict.describe();
+  EXPECT_LT(w.left_out, w.left_in);
+  EXPECT_LT(w.right_in, w.right_out);
+  EXPECT_GT(w.inside.eps, 0);
+  EXPECT_TRUE(w.inside.condition == 21 || w.inside.condition == 22);
+  // Just outside either edge: refuted (T(t2) in the free arc).
+  for (double b : {w.left_out, w.right_out}) {
+    const SuperstableProof s = prove_superstable(1, b, 0.85);
+    EXPECT_FALSE(s.verdict.proved) << b;
+    EXPECT_TRUE(s.verdict.refuted) << b;
+  }
+  // The floating layer agrees: superstable inside, not outside.
+  EXPECT_TRUE(superstable_check(Parameters(1, 0.5 * (lo + hi), 0.85), 2000).fixed);
+  EXPECT_FALSE(superstable_check(Parameters(1, w.right_out, 0.85), 2).fixed);
+}
+
+// Erratum: Theorem 2's hypotheses (2) and (22) hold, but b > b0(q): T(t2) != t2.
+TEST(CertifiedSuperstable, Theorem2NeedsLemma1) {
+  const Theorem2Counterexample x = prove_theorem2_counterexample(1, 0.10854, 0.85);
+  ASSERT_TRUE(x.verdict.proved) << x.verdict.describe();
+  const MapStep s = return_map_step(Parameters(1, 0.10854, 0.85), *Parameters(1, 0.10854, 0.85).t2());
+  EXPECT_EQ(s.scenario, Scenario::D);
+  EXPECT_TRUE(within(x.T, s.T, kPhaseAbsTol));
+  EXPECT_FALSE(prove_superstable(1, 0.10854, 0.85).verdict.proved);
+  // Below b0(q) there is no such counterexample at a superstable point.
+  EXPECT_FALSE(prove_theorem2_counterexample(1, 0.0641, 0.85).verdict.proved);
+}
+
+TEST(CertifiedRegion, SmallBandIsDeterministicAndProved) {
+  RegionOptions o;
+  o.b_lo = 1.999e-3;
+  o.b_hi = 2e-3;
+  o.q_lo = 0.9;
+  o.q_hi = 0.92;
+  o.q_columns = 2;
+  o.max_boxes = 200;
+  const RegionResult r = certify_region(o);
+  EXPECT_GT(r.boxes_proved, 0);
+  for (const auto& c : r.columns)
+    for (const auto& b : c.boxes) {
+      EXPECT_GE(b.b_lo, o.b_lo);
+      EXPECT_LE(b.b_hi, o.b_hi);
+    }
+}
