@@ -10,7 +10,7 @@ namespace dfchaos {
 LabelledStep continuity_label(const Parameters& p, double theta) {
   LabelledStep r;
   r.step = return_map_step(p, theta);
-  r.label.t1_branch = r.step.hit.maxima_before;
+  r.label.t1_branch = t1_branch(p, r.step);
   const long double since = elapsed(Instant::at_phase(*p.t3()), r.step.theta2);  // theta2 - t3 (turn 0)
   r.label.t3_passed = static_cast<long long>(std::floor(since / two_pi_l));
   r.label.scenario_d = r.step.scenario == Scenario::D || r.step.scenario == Scenario::Dprime;

@@ -27,12 +27,16 @@ double dG1_dt(const Parameters& p, double theta, const Instant& t);
 double dG1_dtheta(const Parameters& p, double theta, const Instant& t);
 
 /// The first return of the mass to the delimiter after a start at rest at \f$\theta\f$.
-struct NextHit {
+struct FirstHit {
   Instant t1;             ///< \f$T_1(\theta)\f$ as turn and phase (turn 0 is \f$\theta\f$'s period)
   double theta1 = 0;      ///< \f$T_1(\theta)\f$ as a real number (for output)
   double hit_velocity = 0;///< \f$\partial G_1/\partial t\f$ at \f$T_1\f$; 0 at a grazing (tangential) contact
-  long long maxima_before = 0;  ///< local maxima of \f$G_1(\theta,\cdot)\f$ in \f$(\theta, T_1)\f$: labels the continuity branch
   long pieces = 0;        ///< monotone pieces examined by the root search
+};
+
+/// The first return with the label of its continuity branch of \f$T_1\f$ (next_hit()).
+struct NextHit : FirstHit {
+  long long maxima_before = 0;  ///< local maxima of \f$G_1(\theta,\cdot)\f$ in \f$(\theta, T_1)\f$: labels the continuity branch
 };
 
 /// \f$T_1(\theta)\f$ (Eq. 11). @throws InvalidParameter unless \f$b < a/2\f$ and \f$\theta \in [t_2, t_3)\f$.

@@ -57,7 +57,6 @@ MapStep return_map_step(const Parameters& p, double theta) {
       step.hit.t1 = tr->t;
       step.hit.theta1 = tr->t.value();
       step.hit.hit_velocity = tr->v_before;
-      step.hit.maxima_before = maxima_between(p, theta, tr->t);
       step.hit.pieces = tr->pieces;
     }
     if (n == 1 && tr->from == Regime::Progression && step.progressions == 1) step.theta2 = tr->t;
@@ -77,6 +76,8 @@ MapStep return_map_step(const Parameters& p, double theta) {
   }
   throw GaveUp("return map at theta=" + format_double(theta) + ": no return to free flight within 8 regime changes");
 }
+
+long long t1_branch(const Parameters& p, const MapStep& step) { return maxima_between(p, step.theta, step.hit.t1); }
 
 double T(const Parameters& p, double theta) { return return_map_step(p, theta).T; }
 

@@ -29,7 +29,7 @@ const char* scenario_name(Scenario s);  ///< "A", "B", "C", "D", "C'", "D'", "G"
 /// One application of \f$T\f$.
 struct MapStep {
   double theta = 0;            ///< the argument, a phase in \f$[t_2, t_3)\f$
-  NextHit hit;                 ///< \f$T_1(\theta)\f$ and the impact velocity (Eq. 11)
+  FirstHit hit;                ///< \f$T_1(\theta)\f$ and the impact velocity (Eq. 11); its branch label: t1_branch()
   /// \f$\theta_2\f$: where the first progression stops (first zero of \f$G_2\f$, Eq. 17); equal
   /// to the hit instant for a grazing or a zero-velocity touch (no progression).
   Instant theta2;
@@ -48,6 +48,11 @@ struct MapStep {
 /// @throws GaveUp if the motion never returns to free flight (eternal stick-slip: a progression
 ///         from \f$t_0\f$ stopping again outside \f$[t_2, t_3)\f$, repeating every period).
 MapStep return_map_step(const Parameters& p, double theta);
+
+/// The label of the continuity branch of \f$T_1\f$ the step's first flight belongs to (the number of
+/// local maxima of \f$G_1\f$ before the hit, next_hit.hpp's maxima_between): computed on demand, since
+/// most uses of \f$T\f$ do not need it.
+long long t1_branch(const Parameters& p, const MapStep& step);
 
 /// \f$T(\theta)\f$ alone.
 double T(const Parameters& p, double theta);

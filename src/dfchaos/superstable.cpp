@@ -55,7 +55,7 @@ Sample sample_at(double a, double q, double r) {
   const MapStep s = return_map_step(p, *p.t2());
   Sample x;
   x.r = r;
-  x.branch = s.hit.maxima_before;
+  x.branch = t1_branch(p, s);
   x.w = static_cast<long double>(*p.t2()) + elapsed(Instant::at_phase(*p.t2()), s.theta2);
   x.bound[0] = *p.t1();
   x.bound[1] = *p.t2();

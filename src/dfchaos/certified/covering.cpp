@@ -68,11 +68,11 @@ double move_t2(const Parameters& p, const dfchaos::CoveringSegment& s) {
   const double dir = s.theta_at_t2 < s.theta_at_top ? -1.0 : 1.0;
   const double scale = std::fabs(s.theta_at_t2 - s.theta_at_top);
   const double t2 = *p.t2();
-  const long long branch = return_map_step(p, s.theta_at_t2).hit.maxima_before;
+  const long long branch = t1_branch(p, return_map_step(p, s.theta_at_t2));
   auto on_plateau = [&](double th) {
     if (th <= t2 || th >= kThreeHalvesPi) return false;
     const MapStep st = return_map_step(p, th);
-    return st.hit.maxima_before == branch && st.T == t2;
+    return t1_branch(p, st) == branch && st.T == t2;
   };
   if (!on_plateau(s.theta_at_t2)) return s.theta_at_t2;
   double x = s.theta_at_t2, h = std::max(1e-13, scale * 1e-4);
@@ -96,11 +96,11 @@ double plateau_middle(const Parameters& p, double th, double scale, double& widt
   if (th <= t2 || th >= kThreeHalvesPi) return NAN;
   const MapStep s0 = return_map_step(p, th);
   if (s0.T != t2) return NAN;
-  const long long branch = s0.hit.maxima_before;
+  const long long branch = t1_branch(p, s0);
   auto on = [&](double x) {
     if (x <= t2 || x >= kThreeHalvesPi) return false;
     const MapStep st = return_map_step(p, x);
-    return st.hit.maxima_before == branch && st.T == t2;
+    return t1_branch(p, st) == branch && st.T == t2;
   };
   double ends[2];
   for (int side = 0; side < 2; ++side) {
@@ -137,8 +137,8 @@ std::vector<Candidate> track_candidates(double a, double b, double q, const std:
       if (c.plateau > 0) {
         const double t2 = *p.t2();
         auto on = [&](double x) { return x > t2 && x < kThreeHalvesPi && return_map_step(p, x).T == t2; };
-        const long long br = return_map_step(p, c.theta_t2).hit.maxima_before;
-        auto same = [&](double x) { return return_map_step(p, x).hit.maxima_before == br; };
+        const long long br = t1_branch(p, return_map_step(p, c.theta_t2));
+        auto same = [&](double x) { return t1_branch(p, return_map_step(p, x)) == br; };
         const double d = 0.25 * c.plateau;
         keep = on(c.theta_t2) && on(c.theta_t2 - d) && on(c.theta_t2 + d) && same(c.theta_t2 - d) && same(c.theta_t2 + d);
       }
