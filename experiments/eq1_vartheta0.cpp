@@ -21,7 +21,7 @@ const Experiment experiment{
                 latex("eq1_vartheta0", "vartheta0 and sin(vartheta0) beside the paper's digits")},
     .body = [](Run& run) {
       const int samples = run.count_int("samples");
-      const double v = vartheta0(), s = std::sin(v), r = eq1_residual(v);
+      const double v = vartheta0(), s = sin_vartheta0(), r = eq1_residual(v);
 
       // Uniqueness: the residual pi - x - cot(x/2) has derivative -1 + 1/(2 sin^2(x/2)) > 0 on
       // (0, pi/2); sampled, it must increase and change sign exactly once.
