@@ -249,3 +249,21 @@ def test_threads_give_the_same_values():
     for t in threads:
         t.join()
     assert np.array_equal(np.concatenate(out), ref)
+
+
+def test_ctrl_c_stops_a_long_call():
+    """The loop runs without the GIL but looks for signals every 2^14 elements: an interrupt
+    (as from Ctrl-C) stops a call of about 10 s within a fraction of a second."""
+    import _thread
+    import time
+
+    x = np.full(4_000_000, 4.0)
+    timer = threading.Timer(0.3, _thread.interrupt_main)
+    start = time.perf_counter()
+    timer.start()
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            dfchaos.T(P, x)
+    finally:
+        timer.cancel()
+    assert time.perf_counter() - start < 3.0
