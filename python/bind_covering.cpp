@@ -79,12 +79,14 @@ py::dict lemma4_covering_py(const Parameters& p, int scan, int uniform, int veri
 }  // namespace
 
 void bind_covering(py::module_& m) {
+  // Each docstring opens with its own signature line (with the result types pybind11 cannot name).
+  py::options options;
+  options.disable_function_signatures();
   const CoveringSearch def;
   m.def("covering_segments", &covering_segments_py, py::arg("p"), py::arg("lo") = py::none(), py::arg("hi") = py::none(),
         py::arg("top") = py::none(), py::kw_only(), py::arg("scan") = def.scan, py::arg("uniform") = def.uniform,
         py::arg("verify") = def.verify, py::arg("refine") = def.refine, py::arg("descend") = def.descend,
-        py::arg("max_segments") = def.max_segments, R"doc(
-covering_segments(p, lo=t2, hi=3 pi/2, top=3 pi/2, *, scan=48, uniform=8000, verify=400, refine=32,
+        py::arg("max_segments") = def.max_segments, R"doc(covering_segments(p, lo=t2, hi=3 pi/2, top=3 pi/2, *, scan=48, uniform=8000, verify=400, refine=32,
                   descend=True, max_segments=0) -> list of dict
 
 Disjoint covering segments J inside [lo, hi], ascending (Lemma 4, Eq. 18): closed segments on which
@@ -96,8 +98,7 @@ label (dict t1_branch, t3_passed, scenario_d) and verified.
 Raises ValueError unless the map is defined and t2 <= lo < hi < t3.)doc");
   m.def("lemma4_covering", &lemma4_covering_py, py::arg("p"), py::kw_only(), py::arg("scan") = def.scan,
         py::arg("uniform") = def.uniform, py::arg("verify") = def.verify, py::arg("refine") = def.refine,
-        py::arg("descend") = def.descend, py::arg("max_segments") = def.max_segments, R"doc(
-lemma4_covering(p, *, scan=48, uniform=8000, verify=400, refine=32, descend=True, max_segments=0) -> dict
+        py::arg("descend") = def.descend, py::arg("max_segments") = def.max_segments, R"doc(lemma4_covering(p, *, scan=48, uniform=8000, verify=400, refine=32, descend=True, max_segments=0) -> dict
 
 Lemma 4's conclusion at one parameter set: two disjoint closed segments J0, J1 of [t2, 3 pi/2], each
 with T continuous and T(J) containing [t2, 3 pi/2]. Keys: holds, J0, J1 (dicts as from

@@ -124,6 +124,9 @@ double bench_T(const Parameters& p, const RealArray& theta) {
 }  // namespace
 
 void bind_map(py::module_& m) {
+  // Each docstring opens with its own signature line (with the result types pybind11 cannot name).
+  py::options options;
+  options.disable_function_signatures();
   py::tuple names(8);
   const Scenario all[] = {Scenario::A, Scenario::B, Scenario::C, Scenario::D, Scenario::Cprime, Scenario::Dprime,
                           Scenario::Grazing, Scenario::Other};
@@ -136,8 +139,7 @@ void bind_map(py::module_& m) {
         p.require_return_map();
         return map_reals(theta, "theta", [&p](double x) { return T(p, x); });
       },
-      py::arg("p"), py::arg("theta"), R"doc(
-T(p, theta) -> float or numpy.ndarray
+      py::arg("p"), py::arg("theta"), R"doc(T(p, theta) -> float or numpy.ndarray
 
 The return map T of Lemma 3 (Section 3): the phase in [t2, t3) at which the motion started at rest
 at the delimiter at phase theta (Eq. 10) next switches to free flight, following the general chain
@@ -157,8 +159,7 @@ Equal to the T column of `dfchaos map` to the last bit.)doc");
         p.require_return_map();
         return map_reals(theta, "theta", [&p](double x) { return next_hit(p, x).theta1; });
       },
-      py::arg("p"), py::arg("theta"), R"doc(
-T1(p, theta) -> float or numpy.ndarray
+      py::arg("p"), py::arg("theta"), R"doc(T1(p, theta) -> float or numpy.ndarray
 
 The next-hit map T1 of Eq. (11): the first instant theta1 > theta at which the mass, started at rest
 at the delimiter at phase theta, returns to it (the first zero of
@@ -168,8 +169,7 @@ An instant, not a phase: it may exceed 2 pi by many periods.
 theta and errors as for T (the same conditions as `dfchaos map`, so the same messages).
 Equal to the T1 column of `dfchaos map` to the last bit.)doc");
 
-  m.def("step", &step, py::arg("p"), py::arg("theta"), R"doc(
-step(p, theta) -> dict
+  m.def("step", &step, py::arg("p"), py::arg("theta"), R"doc(step(p, theta) -> dict
 
 One application of T from theta, with what happened on the way. Keys:
   theta        the start phase (Eq. 10)
@@ -187,8 +187,7 @@ velocity at T1; 0 at a grazing contact). For an array the values are arrays of t
 (scenario a numpy array of str, dtype '<U5').
 Errors as for T. Equal to the columns of `dfchaos map` to the last bit.)doc");
 
-  m.def("orbit", &orbit, py::arg("p"), py::arg("theta0"), py::arg("steps"), R"doc(
-orbit(p, theta0, steps) -> dict of numpy arrays of length steps
+  m.def("orbit", &orbit, py::arg("p"), py::arg("theta0"), py::arg("steps"), R"doc(orbit(p, theta0, steps) -> dict of numpy arrays of length steps
 
 The orbit theta_n = T^n(theta0), n = 0 .. steps-1, of the return map T (Lemma 3), with the
 columns of `dfchaos orbit` (row n is element n; element 0 is theta0):
@@ -211,8 +210,8 @@ the orbit by |T'|: a long orbit is a faithful pseudo-orbit. Runs without the GIL
         return bench_T(p, in.array);
       },
       py::arg("p"), py::arg("theta"),
-      "_bench_T(p, theta) -> float: seconds taken by the bare C++ loop over T(p, theta[i]) (no result array), "
-      "the reference for the cost per evaluation of dfchaos.T.");
+      "_bench_T(p, theta) -> float\n\nSeconds taken by the bare C++ loop over T(p, theta[i]) (no conversion, no "
+      "result array): the reference cost per evaluation for dfchaos.T (tests/python/test_timing.py).");
 }
 
 }  // namespace dfchaos::python

@@ -58,8 +58,7 @@ void bind_parameters(py::module_& m) {
   m.attr("max_elements") = kMaxElements;
 
   // ---- Parameters ----------------------------------------------------------------------------
-  py::class_<Parameters>(m, "Parameters", R"doc(
-The parameters (a, b, q) of the oscillator (Section 2 of the paper): the mass obeys
+  py::class_<Parameters>(m, "Parameters", R"doc(The parameters (a, b, q) of the oscillator (Section 2 of the paper): the mass obeys
 x'' = F(t) = a sin t + 2b in free flight (Eq. 3) and x'' = F(t) - q while it drags the delimiter
 (Eq. 4). Only b/a and q/a matter.
 

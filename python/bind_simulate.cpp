@@ -98,9 +98,11 @@ py::dict simulate_py(const Parameters& p, double x0, double y0, double v0, doubl
 }  // namespace
 
 void bind_simulate(py::module_& m) {
+  // Each docstring opens with its own signature line (with the result types pybind11 cannot name).
+  py::options options;
+  options.disable_function_signatures();
   m.def("simulate", &simulate_py, py::arg("p"), py::arg("x0"), py::arg("y0"), py::arg("v0"), py::arg("t0"),
-        py::arg("t_end"), py::kw_only(), py::arg("sample") = py::none(), py::arg("max_events") = 1'000'000, R"doc(
-simulate(p, x0, y0, v0, t0, t_end, *, sample=None, max_events=1000000) -> dict
+        py::arg("t_end"), py::kw_only(), py::arg("sample") = py::none(), py::arg("max_events") = 1'000'000, R"doc(simulate(p, x0, y0, v0, t0, t_end, *, sample=None, max_events=1000000) -> dict
 
 Event-driven simulation of the full system (Section 2) from x(t0) = x0 (mass), y(t0) = y0
 (delimiter), x'(t0) = v0 until t_end, in closed form between events. Any positive parameters (also

@@ -10,8 +10,7 @@
 
 PYBIND11_MODULE(dfchaos, m) {
   namespace dp = dfchaos::python;
-  m.doc() = R"doc(
-dfchaos: the dry-friction oscillator of Begun and Kryzhevich, "One-dimensional chaos in a system
+  m.doc() = R"doc(dfchaos: the dry-friction oscillator of Begun and Kryzhevich, "One-dimensional chaos in a system
 with dry friction: analytical approach" (arXiv:1302.3377), from Python.
 
 A thin layer over the C++ library: the same numbers as the `dfchaos` tool, to the last bit.
