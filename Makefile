@@ -26,7 +26,7 @@ help:
 	@echo "  make reproduce   install missing packages (with LaTeX, gnuplot), build, run every experiment,"
 	@echo "                   draw every figure, build $(BUILD)/paper/report.pdf (reruns only what changed)"
 	@echo "  make test        install missing packages, build, run every test through CTest"
-	@echo "  make build       configure and build into $(BUILD)/ (binaries in $(BUILD)/bin)"
+	@echo "  make build       configure and build into $(BUILD)/ (binaries in $(BUILD)/bin, the Python module in $(BUILD)/python)"
 	@echo "  make experiments run the experiments whose executables changed (data, tables, claims)"
 	@echo "  make figures     draw the figures from $(BUILD)/data into $(BUILD)/figures"
 	@echo "  make report      typeset $(BUILD)/paper/report.pdf from what is already computed"

@@ -11,7 +11,8 @@ set -euo pipefail
 
 profile=${1:-build}
 build_pkgs=(g++ cmake make pkg-config python3 python3-mpmath libeigen3-dev libgsl-dev libgtest-dev libgmock-dev
-            libcli11-dev libbenchmark-dev libflint-arb-dev libflint-dev libmpfr-dev libgmp-dev)
+            libcli11-dev libbenchmark-dev libflint-arb-dev libflint-dev libmpfr-dev libgmp-dev
+            pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib)
 report_pkgs=(gnuplot-nox latexmk texlive-latex-base texlive-latex-recommended
              texlive-latex-extra texlive-fonts-recommended texlive-pictures doxygen poppler-utils)
 

@@ -1,0 +1,109 @@
+/// @file bind_covering.cpp
+/// @brief dfchaos.covering_segments and dfchaos.lemma4_covering: the covering segments of Lemma 4
+/// (Eq. 18), closed segments on which T is continuous and whose image contains [t2, top].
+#include <pybind11/stl.h>
+
+#include <optional>
+
+#include "convert.hpp"
+#include "dfchaos/covering.hpp"
+#include "dfchaos/phase.hpp"
+
+namespace dfchaos::python {
+
+namespace {
+
+py::dict label_dict(const ContinuityLabel& l) {
+  py::dict d;
+  d["t1_branch"] = l.t1_branch;
+  d["t3_passed"] = l.t3_passed;
+  d["scenario_d"] = l.scenario_d;
+  return d;
+}
+
+py::dict segment_dict(const CoveringSegment& s) {
+  py::dict d;
+  d["lo"] = s.lo;
+  d["hi"] = s.hi;
+  d["theta_at_t2"] = s.theta_at_t2;
+  d["theta_at_top"] = s.theta_at_top;
+  d["T_at_top"] = s.T_at_top;
+  d["label"] = label_dict(s.label);
+  d["verified"] = s.verified;
+  return d;
+}
+
+CoveringSearch search_options(int scan, int uniform, int verify, int refine, bool descend, int max_segments) {
+  CoveringSearch s;
+  s.scan = scan;
+  s.uniform = uniform;
+  s.verify = verify;
+  s.refine = refine;
+  s.descend = descend;
+  s.max_segments = max_segments;
+  return s;
+}
+
+py::list covering_segments_py(const Parameters& p, std::optional<double> lo, std::optional<double> hi, std::optional<double> top,
+                              int scan, int uniform, int verify, int refine, bool descend, int max_segments) {
+  p.require_return_map();
+  const double l = lo ? finite("lo", *lo) : p.t2_required();
+  const double h = hi ? finite("hi", *hi) : 1.5 * pi;
+  const double t = top ? finite("top", *top) : 1.5 * pi;
+  const CoveringSearch s = search_options(scan, uniform, verify, refine, descend, max_segments);
+  std::vector<CoveringSegment> segs;
+  {
+    py::gil_scoped_release nogil;
+    segs = covering_segments(p, l, h, t, s);
+  }
+  py::list out;
+  for (const auto& seg : segs) out.append(segment_dict(seg));
+  return out;
+}
+
+py::dict lemma4_covering_py(const Parameters& p, int scan, int uniform, int verify, int refine, bool descend, int max_segments) {
+  const CoveringSearch s = search_options(scan, uniform, verify, refine, descend, max_segments);
+  Lemma4Covering r;
+  {
+    py::gil_scoped_release nogil;
+    r = lemma4_covering(p, s);
+  }
+  py::dict d;
+  d["holds"] = r.holds;
+  d["J0"] = r.holds ? py::object(segment_dict(r.J0)) : py::object(py::none());
+  d["J1"] = r.holds ? py::object(segment_dict(r.J1)) : py::object(py::none());
+  d["segments_found"] = r.segments_found;
+  return d;
+}
+
+}  // namespace
+
+void bind_covering(py::module_& m) {
+  // Each docstring opens with its own signature line (with the result types pybind11 cannot name).
+  py::options options;
+  options.disable_function_signatures();
+  const CoveringSearch def;
+  m.def("covering_segments", &covering_segments_py, py::arg("p"), py::arg("lo") = py::none(), py::arg("hi") = py::none(),
+        py::arg("top") = py::none(), py::kw_only(), py::arg("scan") = def.scan, py::arg("uniform") = def.uniform,
+        py::arg("verify") = def.verify, py::arg("refine") = def.refine, py::arg("descend") = def.descend,
+        py::arg("max_segments") = def.max_segments, R"doc(covering_segments(p, lo=t2, hi=3 pi/2, top=3 pi/2, *, scan=48, uniform=8000, verify=400, refine=32,
+                  descend=True, max_segments=0) -> list of dict
+
+Disjoint covering segments J inside [lo, hi], ascending (Lemma 4, Eq. 18): closed segments on which
+T is continuous (one continuity label) and which hold a point with T = t2 and a point with
+T >= top, so that T(J) contains [t2, top] by the intermediate value theorem. Sampled evidence: found
+on a grid (scan points per continuity branch of T1, at least the density of `uniform` points),
+re-checked on `verify` points inside each. Each dict: lo, hi, theta_at_t2, theta_at_top, T_at_top,
+label (dict t1_branch, t3_passed, scenario_d) and verified.
+Raises ValueError unless the map is defined and t2 <= lo < hi < t3.)doc");
+  m.def("lemma4_covering", &lemma4_covering_py, py::arg("p"), py::kw_only(), py::arg("scan") = def.scan,
+        py::arg("uniform") = def.uniform, py::arg("verify") = def.verify, py::arg("refine") = def.refine,
+        py::arg("descend") = def.descend, py::arg("max_segments") = def.max_segments, R"doc(lemma4_covering(p, *, scan=48, uniform=8000, verify=400, refine=32, descend=True, max_segments=0) -> dict
+
+Lemma 4's conclusion at one parameter set: two disjoint closed segments J0, J1 of [t2, 3 pi/2], each
+with T continuous and T(J) containing [t2, 3 pi/2]. Keys: holds, J0, J1 (dicts as from
+covering_segments, None unless holds), segments_found (the search stops after 2 when
+max_segments is 0). Sampled evidence, as covering_segments.)doc");
+}
+
+}  // namespace dfchaos::python

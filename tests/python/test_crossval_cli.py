@@ -1,0 +1,194 @@
+"""Cross-validation: the module gives the numbers of the dfchaos tool to the last bit.
+
+The tool prints %.17g, which reads back to the same double; every comparison is float(text) == value
+(no tolerance). Phases are passed to the tool as Python's repr, which also reads back exactly.
+"""
+import math
+
+import numpy as np
+import pytest
+
+import dfchaos
+
+pytestmark = pytest.mark.crossval
+
+# (a, b, q): b/a from 0.1 to 1e-8, q/a above and below sin(vartheta0), a != 1; together they
+# produce the scenarios A, B, C and D.
+PARAMETER_SETS = [
+    (1.0, 0.1, 0.85),
+    (1.0, 0.01, 0.85),
+    (1.0, 0.05, 0.7),
+    (1.0, 1e-4, 0.85),
+    (1.0, 1e-8, 0.6),
+    (2.5, 0.03, 1.9),
+]
+
+
+def args(a, b, q):
+    return ["--a", repr(a), "--b", repr(b), "--q", repr(q)]
+
+
+def floats(column):
+    return np.array([float(x) for x in column])
+
+
+def assert_bits(name, ours, theirs):
+    """Equal as doubles, element by element (NaN never occurs: the tool refuses it)."""
+    ours, theirs = np.asarray(ours, dtype=float), np.asarray(theirs, dtype=float)
+    assert ours.shape == theirs.shape, f"{name}: shape {ours.shape} against {theirs.shape}"
+    bad = np.flatnonzero(ours != theirs)
+    assert bad.size == 0, (f"{name}: {bad.size} of {ours.size} differ, first at {bad[0]}: "
+                           f"{ours[bad[0]]!r} against {theirs[bad[0]]!r}")
+
+
+def random_phases(p, n, seed):
+    rng = np.random.default_rng(seed)
+    return p.t2 + (p.t3 - p.t2) * rng.random(n)
+
+
+@pytest.mark.parametrize("abq", PARAMETER_SETS)
+def test_map_over_the_arc(cli, abq):
+    """`dfchaos map --arc N`: every column, for T, T1 and step on the tool's own phases."""
+    p = dfchaos.Parameters(*abq)
+    header, rows = cli.table("map", *args(*abq), "--arc", 2000)
+    assert header == ["theta", "T1", "T", "scenario", "elapsed", "penetration"]
+    col = list(zip(*rows))
+    theta = floats(col[0])
+    s = dfchaos.step(p, theta)
+    assert_bits("theta", s["theta"], theta)
+    assert_bits("T1", s["T1"], floats(col[1]))
+    assert_bits("T", s["T"], floats(col[2]))
+    assert list(s["scenario"]) == list(col[3])
+    assert_bits("elapsed", s["elapsed"], floats(col[4]))
+    assert_bits("penetration", s["penetration"], floats(col[5]))
+    assert_bits("dfchaos.T", dfchaos.T(p, theta), floats(col[2]))
+    assert_bits("dfchaos.T1", dfchaos.T1(p, theta), floats(col[1]))
+
+
+@pytest.mark.parametrize("abq", PARAMETER_SETS)
+def test_map_at_random_phases_scalar_and_array(cli, abq):
+    """`dfchaos map --theta X ...` at random phases given as repr: scalar calls and one array call."""
+    p = dfchaos.Parameters(*abq)
+    theta = random_phases(p, 60, seed=17)
+    _, rows = cli.table("map", *args(*abq), "--theta", *[repr(float(x)) for x in theta])
+    col = list(zip(*rows))
+    assert_bits("theta", floats(col[0]), theta)
+    for i, x in enumerate(theta):
+        one = dfchaos.step(p, float(x))
+        assert (one["T1"], one["T"], one["scenario"], one["elapsed"], one["penetration"]) == (
+            float(col[1][i]), float(col[2][i]), col[3][i], float(col[4][i]), float(col[5][i])), f"theta={x!r}"
+        assert dfchaos.T(p, float(x)) == float(col[2][i])
+        assert dfchaos.T1(p, float(x)) == float(col[1][i])
+    assert_bits("T", dfchaos.T(p, theta), floats(col[2]))
+
+
+def test_the_comparison_covers_several_scenarios(cli):
+    """The sets above are not all scenario A: the comparison meets B, C and D too."""
+    seen = set()
+    for abq in PARAMETER_SETS:
+        _, rows = cli.table("map", *args(*abq), "--arc", 2000)
+        seen |= {r[3] for r in rows}
+    assert {"A", "B", "C", "D"} <= seen, seen
+
+
+@pytest.mark.parametrize("abq,theta0,steps", [
+    ((1.0, 0.01, 0.85), 3.5, 500),
+    ((1.0, 0.1, 0.85), 4.0, 300),
+    ((1.0, 1e-4, 0.85), 5.0, 200),
+    ((2.5, 0.03, 1.9), 4.4, 300),
+])
+def test_orbit(cli, abq, theta0, steps):
+    """`dfchaos orbit`: row n is element n of every column (element 0 the first row)."""
+    p = dfchaos.Parameters(*abq)
+    header, rows = cli.table("orbit", *args(*abq), "--theta0", repr(theta0), "--steps", steps)
+    assert header == ["n", "theta", "scenario", "elapsed", "penetration", "time", "y"]
+    col = list(zip(*rows))
+    o = dfchaos.orbit(p, theta0, steps)
+    assert [int(n) for n in col[0]] == list(range(steps))
+    assert o["theta"][0] == theta0 == float(col[1][0])
+    assert_bits("theta", o["theta"], floats(col[1]))
+    assert list(o["scenario"]) == list(col[2])
+    assert_bits("elapsed", o["elapsed"], floats(col[3]))
+    assert_bits("penetration", o["penetration"], floats(col[4]))
+    assert_bits("time", o["time"], floats(col[5]))
+    assert_bits("y", o["y"], floats(col[6]))
+
+
+def parse_simulate(out):
+    """The tool's simulate output: initial regime, event rows, sample rows (after two blank lines)."""
+    lines = out.split("\n")
+    assert lines[0].startswith("# initial regime: ")
+    initial = lines[0].split(": ")[1]
+    assert lines[1].split("\t") == ["t", "phase", "before", "after", "kind", "x", "y", "v_before", "v_after"]
+    events, samples, k = [], [], 2
+    while k < len(lines) and lines[k] != "":
+        events.append(lines[k].split("\t"))
+        k += 1
+    if k + 2 < len(lines) and lines[k + 2].startswith("t\tx"):
+        samples = [l.split("\t") for l in lines[k + 3:] if l]
+    return initial, events, samples
+
+
+@pytest.mark.parametrize("abq,start,t_end,sample", [
+    ((1.0, 0.01, 0.85), (0.0, 0.0, 0.0, 4.0), 300.0, 0.7),
+    ((1.0, 0.1, 0.85), (-0.5, 0.25, 1.5, -3.0), 120.0, 0.25),
+    ((1.0, 0.7, 0.5), (-1.0, 0.0, -2.0, 0.0), 60.0, 1.0),   # outside the assumptions: b > a/2, q < 2b
+    ((1.0, 0.2, 1.5), (-1.0, 0.0, -2.0, 0.0), 60.0, 0.3),   # q > a
+    ((2.5, 0.03, 1.9), (0.0, 0.0, 2.0, 1.0), 200.0, None),
+])
+def test_simulate(cli, abq, start, t_end, sample):
+    """`dfchaos simulate`: the initial regime, every event column, every sample column."""
+    p = dfchaos.Parameters(*abq)
+    x0, y0, v0, t0 = start
+    extra = ["--sample", repr(sample)] if sample else []
+    rc, out, err = cli.run("simulate", *args(*abq), "--x0", repr(x0), "--y0", repr(y0), "--v0", repr(v0),
+                           "--t0", repr(t0), "--t-end", repr(t_end), *extra)
+    assert rc == 0, err
+    initial, events, samples = parse_simulate(out)
+    r = dfchaos.simulate(p, x0, y0, v0, t0, t_end, sample=sample)
+    assert r["initial_regime"] == initial
+    ev = r["events"]
+    assert len(events) > 0 and len(ev["t"]) == len(events)
+    col = list(zip(*events))
+    for k, name in enumerate(["t", "phase", "before", "after", "kind", "x", "y", "v_before", "v_after"]):
+        if name in ("before", "after", "kind"):
+            assert list(ev[name]) == list(col[k]), name
+        else:
+            assert_bits(name, ev[name], floats(col[k]))
+    sm = r["samples"]
+    if sample:
+        assert len(samples) == len(sm["t"]) == math.floor((t_end - t0) / sample) + 1
+        col = list(zip(*samples))
+        for k, name in enumerate(["t", "x", "y", "v", "regime"]):
+            if name == "regime":
+                assert list(sm[name]) == list(col[k])
+            else:
+                assert_bits("sample " + name, sm[name], floats(col[k]))
+    else:
+        assert samples == [] and len(sm["t"]) == 0
+
+
+@pytest.mark.parametrize("abq", PARAMETER_SETS + [(1.0, 0.7, 0.5), (1.0, 0.1, 1.5)])
+def test_parameters_against_info(cli, abq):
+    """t0..t3 and vartheta0 against `dfchaos info` (None where info prints no value)."""
+    p = dfchaos.Parameters(*abq)
+    _, rows = cli.table("info", *args(*abq))
+    info = {r[0]: r[1] for r in rows if len(r) == 2}
+    for name in ("a", "b", "q"):
+        assert getattr(p, name) == float(info[name])
+    for name in ("t0", "t1", "t2", "t3"):
+        ours = getattr(p, name)
+        if ours is None:
+            assert name not in info or not _is_number(info[name]), (name, info.get(name))
+        else:
+            assert ours == float(info[name]), name
+    assert p.vartheta0 == dfchaos.vartheta0 == float(info["vartheta0"])
+    assert p.a * dfchaos.sin_vartheta0 == float(info["a*sin(vartheta0)"])
+    assert p.assumptions["describe"] == info["assumptions"]
+
+
+def _is_number(text):
+    try:
+        return math.isfinite(float(text))
+    except ValueError:
+        return False
