@@ -97,5 +97,6 @@ void bind_parameters(py::module_& m);  ///< exceptions, constants, Parameters (b
 void bind_map(py::module_& m);         ///< T, T1, step, orbit, scenario_names, _bench_T (bind_map.cpp)
 void bind_simulate(py::module_& m);    ///< simulate (bind_simulate.cpp)
 void bind_covering(py::module_& m);    ///< covering_segments, lemma4_covering (bind_covering.cpp)
+void bind_certify(py::module_& m);     ///< certify: proofs in ball arithmetic (bind_certify.cpp)
 
 }  // namespace dfchaos::python

@@ -28,4 +28,5 @@ the CLI's one-line message; dfchaos.GaveUp (a RuntimeError) when a bounded compu
   dp::bind_map(m);
   dp::bind_simulate(m);
   dp::bind_covering(m);
+  dp::bind_certify(m);
 }

@@ -74,10 +74,10 @@ CLI::App* add_certify(CLI::App& app, CertifyOptions& o) {
   return c;
 }
 
-int run_certify(const CertifyOptions& o) {
+CertifyResult certify(const CertifyOptions& o) {
   Json out;
   bool proved = false;
-  try {
+  {
     if (o.what == "vartheta0") {
       const Vartheta0 v = certify_vartheta0(200);
       out = to_json(v);
@@ -131,13 +131,21 @@ int run_certify(const CertifyOptions& o) {
     } else {
       throw InvalidParameter("what", "one of vartheta0, lemma1, b0, discontinuities, covering, periodic, superstable (got '" + o.what + "')");
     }
+  }
+  return CertifyResult{proved, out.dump(2)};
+}
+
+int run_certify(const CertifyOptions& o) {
+  CertifyResult r;
+  try {
+    r = certify(o);
   } catch (const InvalidParameter& e) {
     std::fprintf(stderr, "dfchaos: error: %s\n", e.what());
     return 2;
   }
-  const std::string text = out.dump(2) + "\n";
+  const std::string text = r.json + "\n";
   std::fwrite(text.data(), 1, text.size(), stdout);
-  return proved ? 0 : 1;
+  return r.proved ? 0 : 1;
 }
 
 Command add_certify_command(CLI::App& app) {

@@ -36,6 +36,15 @@ struct CertifyOptions {
 /// Registers the `certify` subcommand on `app`, bound to `o`; returns it.
 CLI::App* add_certify(CLI::App& app, CertifyOptions& o);
 
+/// The outcome of a certify request: proved or not, and the JSON record (what `certify` prints).
+struct CertifyResult {
+  bool proved = false;  ///< the statement was proved in ball arithmetic
+  std::string json;     ///< the record: statement, enclosures, verdict, failed step (indented JSON)
+};
+
+/// Carries out a certify request. @throws InvalidParameter (one line naming the option) for bad input.
+CertifyResult certify(const CertifyOptions& o);
+
 /// Runs `certify`: JSON on stdout; returns the exit status (0 proved, 1 not proved, 2 bad input).
 int run_certify(const CertifyOptions& o);
 

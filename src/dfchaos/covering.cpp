@@ -21,7 +21,7 @@ namespace {
 
 /// Re-checks a candidate on a fine grid: one label throughout, and T moving between neighbours by
 /// no more than a bound that a jump to or from t2 (of size >= gap) would break.
-bool verify_segment(const Parameters& p, CoveringSegment& s, int n) {
+bool recheck_segment(const Parameters& p, CoveringSegment& s, int n) {
   if (n < 2) return true;
   double prev_T = NAN;
   double max_step = 0;
@@ -107,10 +107,10 @@ std::vector<CoveringSegment> covering_segments(const Parameters& p, double lo, d
     s.theta_at_top = th_top;
     s.T_at_top = T_top;
     s.label = run_label;
-    s.verified = verify_segment(p, s, search.verify);
+    s.rechecked = recheck_segment(p, s, search.recheck);
     th_t2 = th_top = NAN;  // the next segment starts after this one: disjoint
-    if (s.verified) out.push_back(s);
-    return s.verified && search.max_segments > 0 && static_cast<int>(out.size()) >= search.max_segments;
+    if (s.rechecked) out.push_back(s);
+    return s.rechecked && search.max_segments > 0 && static_cast<int>(out.size()) >= search.max_segments;
   };
   // The arc where T = t2 often sits at an end of a run, where T plunges to t2 within a small
   // fraction of a grid step just before the label changes (or rises from it just after). When a

@@ -54,17 +54,17 @@ struct CoveringSegment {
   double theta_at_top = 0;      ///< an end where \f$T \ge\f$ top
   double T_at_top = 0;          ///< \f$T\f$ at theta_at_top (at least top)
   ContinuityLabel label;        ///< the continuity label shared by the whole segment
-  bool verified = false;        ///< labels constant, and no T-jump on the fine grid inside
+  bool rechecked = false;        ///< labels constant, and no T-jump on the fine grid inside
 };
 
 /// Options of the covering search.
 struct CoveringSearch {
   int scan = 48;                ///< at least this many grid points per continuity branch of T1
   int uniform = 8000;           ///< and at least the density of this many points spread over [lo, hi]
-  int verify = 400;             ///< fine-grid points inside each segment found
+  int recheck = 400;             ///< fine-grid points inside each segment found
   int refine = 32;              ///< local points on each side where T comes within 5% of t2 (narrow B arcs)
   bool descend = true;          ///< descend T into the end gaps of runs that reach the top without t2
-  int max_segments = 0;         ///< stop after this many verified segments (0: find all)
+  int max_segments = 0;         ///< stop after this many rechecked segments (0: find all)
 };
 
 /// Disjoint covering segments of \f$[t_2, \text{top}]\f$ inside \f$[lo, hi]\f$, in ascending order.
@@ -75,10 +75,10 @@ std::vector<CoveringSegment> covering_segments(const Parameters& p, double lo, d
 /// Lemma 4's conclusion at one parameter set: two disjoint closed segments of \f$[t_2, 3\pi/2]\f$,
 /// each with \f$T\f$ continuous and \f$T(J_i) \supseteq [t_2, 3\pi/2]\f$.
 struct Lemma4Covering {
-  bool holds = false;           ///< whether two disjoint verified covering segments were found
-  CoveringSegment J0;           ///< the leftmost verified segment (when holds)
-  CoveringSegment J1;           ///< the next verified segment, disjoint from J0 (when holds)
-  int segments_found = 0;       ///< verified segments found (at most search.max_segments if set)
+  bool holds = false;           ///< whether two disjoint rechecked covering segments were found
+  CoveringSegment J0;           ///< the leftmost rechecked segment (when holds)
+  CoveringSegment J1;           ///< the next rechecked segment, disjoint from J0 (when holds)
+  int segments_found = 0;       ///< rechecked segments found (at most search.max_segments if set)
 };
 Lemma4Covering lemma4_covering(const Parameters& p, const CoveringSearch& search = {});
 

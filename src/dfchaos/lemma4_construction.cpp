@@ -28,7 +28,7 @@ Lemma4Construction lemma4_construction(const Parameters& p, int l1_points) {
   CoveringSearch s;
   s.scan = 200;
   s.uniform = 0;
-  s.verify = 100;
+  s.recheck = 100;
   s.max_segments = 1;
   // z_i as listed by symmetric_tangencies are in descending order of k, i.e. ascending in z.
   for (std::size_t i = 0; i < z.size(); ++i) {

@@ -219,7 +219,7 @@ def test_covering_segments_cover():
     assert len(segs) >= 2
     top = 1.5 * np.pi
     for j, s in enumerate(segs):
-        assert p.t2 <= s["lo"] < s["hi"] <= top and s["verified"]
+        assert p.t2 <= s["lo"] < s["hi"] <= top and s["rechecked"]
         assert s["lo"] <= s["theta_at_t2"] <= s["hi"] and s["lo"] <= s["theta_at_top"] <= s["hi"]
         assert dfchaos.T(p, s["theta_at_t2"]) == p.t2
         assert dfchaos.T(p, s["theta_at_top"]) == s["T_at_top"] >= top
@@ -267,3 +267,29 @@ def test_ctrl_c_stops_a_long_call():
     finally:
         timer.cancel()
     assert time.perf_counter() - start < 3.0
+
+
+@pytest.mark.crossval
+def test_certify_matches_the_cli_and_refuses_bad_input(cli):
+    """dfchaos.certify gives the record of `dfchaos certify` (issue 14), as a dict."""
+    import json
+    rec = dfchaos.certify("covering", a=1.0, b=0.001, q=0.85)
+    rc, out, err = cli.run("certify", "covering", "--a", "1", "--b", "0.001", "--q", "0.85")
+    assert rc == 0, err
+    def untimed(x):  # the records carry the time the proof took, which differs between runs
+        if isinstance(x, dict):
+            return {k: untimed(v) for k, v in x.items() if k != "seconds"}
+        if isinstance(x, list):
+            return [untimed(v) for v in x]
+        return x
+    assert untimed(rec) == untimed(json.loads(out))
+    assert rec["proved"] is True
+    v = dfchaos.certify("vartheta0")
+    assert v["proved"] is True
+    # a box in b; a false statement is not proved (exit 1 in the CLI), not an error
+    assert dfchaos.certify("covering", b=(0.003, 0.00300001), q=0.85)["proved"] is True
+    assert dfchaos.certify("covering", b=0.02, q=0.85)["proved"] is False
+    with pytest.raises(dfchaos.InvalidParameter, match="b:"):
+        dfchaos.certify("covering", b=0.6, q=0.85)
+    with pytest.raises(dfchaos.InvalidParameter, match="b:"):
+        dfchaos.certify("covering", b=float("nan"), q=0.85)
