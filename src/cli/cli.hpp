@@ -65,5 +65,7 @@ Command add_map(CLI::App& app);
 Command add_orbit(CLI::App& app);
 Command add_simulate(CLI::App& app);
 Command add_provenance(CLI::App& app);
+Command add_sweep(CLI::App& app);        ///< cmd_sweep.cpp
+Command add_sweep_merge(CLI::App& app);  ///< cmd_sweep.cpp
 
 }  // namespace dfchaos::cli

@@ -6,6 +6,9 @@
 ///   dfchaos orbit      --a A --b B --q Q --theta0 X --steps N
 ///   dfchaos simulate   --a A --b B --q Q --x0 X --y0 Y --v0 V --t0 T --t-end E [--sample DT]
 ///   dfchaos provenance [--latex]
+///   dfchaos sweep      --q-range LO:HI:N[:KIND] --b-range LO:HI:N[:KIND] [--observables LIST] [--shard i/N]
+///                      [--out FILE | --resume FILE] ...
+///   dfchaos sweep-merge SHARD-FILE ... [--out FILE]
 ///
 /// Output is tab-separated with one header line per table, numbers in %.17g. Bad input: one line
 /// on stderr naming the parameter and the condition, exit status 2, nothing on stdout. A bounded
@@ -16,6 +19,7 @@
 
 #include "cli.hpp"
 #include "dfchaos/errors.hpp"
+#include "kit/output.hpp"
 #include "kit/provenance.hpp"
 
 int main(int argc, char** argv) {
@@ -23,9 +27,11 @@ int main(int argc, char** argv) {
   CLI::App app{"dfchaos: the dry-friction oscillator of Begun & Kryzhevich (return map T, simulator)"};
   app.set_version_flag("--version", std::string(dfchaos::kit::version()) + " (" + dfchaos::kit::git_hash() + ")");
   app.require_subcommand(1);
-  app.footer("Exit status: 0 success, 1 a bounded computation gave up or writing failed, 2 bad input.\n"
+  app.footer("Exit status: 0 success, 1 a bounded computation gave up or writing failed, 2 bad input,\n"
+             "3 a sweep stopped by --max-chunks before it was complete (rerun it to continue).\n"
              "'dfchaos COMMAND --help' describes each command's options and output columns.");
-  const std::vector<Command> commands = {add_info(app), add_map(app), add_orbit(app), add_simulate(app), add_provenance(app)};
+  const std::vector<Command> commands = {add_info(app), add_map(app), add_orbit(app), add_simulate(app), add_provenance(app),
+                                        add_sweep(app), add_sweep_merge(app)};
 
   if (argc > 1 && argv[1][0] != '-') {
     const std::string sub = argv[1];
@@ -69,6 +75,9 @@ int main(int argc, char** argv) {
   } catch (const WriteFailed& e) {
     std::fprintf(stderr, "dfchaos: error: %s\n", e.what());
     return 1;
+  } catch (const dfchaos::kit::OutputError& e) {  // an unusable output path is bad input; a failed write is not
+    std::fprintf(stderr, "dfchaos: error: %s\n", e.what());
+    return e.bad_path() ? 2 : 1;
   }
   return 2;
 }
