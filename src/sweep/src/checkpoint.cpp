@@ -51,9 +51,9 @@ Checkpoint::Checkpoint(const fs::path& file, std::string header, const Shard& sh
   const bool fresh = !fs::exists(dir_, ec);
   fs::create_directories(dir_, ec);
   if (ec) throw kit::OutputError("resume: cannot create " + dir_.string() + " (" + ec.message() + ")", true);
-  lock_fd_ = ::open((dir_ / kLockFile).c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-  if (lock_fd_ < 0) throw kit::OutputError("resume: cannot open " + (dir_ / kLockFile).string(), true);
-  if (::flock(lock_fd_, LOCK_EX | LOCK_NB) != 0)
+  lock_.fd = ::open((dir_ / kLockFile).c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  if (lock_.fd < 0) throw kit::OutputError("resume: cannot open " + (dir_ / kLockFile).string(), true);
+  if (::flock(lock_.fd, LOCK_EX | LOCK_NB) != 0)
     throw InvalidParameter(kOption, dir_.string() + " is in use by another run (one run per FILE at a time)");
   const fs::path header_path = dir_ / kHeaderFile;
   if (fresh || !fs::exists(header_path, ec)) {
@@ -88,8 +88,11 @@ Checkpoint::Checkpoint(const fs::path& file, std::string header, const Shard& sh
   if (ec) throw kit::OutputError("resume: cannot read " + dir_.string() + " (" + ec.message() + ")", true);
 }
 
-Checkpoint::~Checkpoint() {
-  if (lock_fd_ >= 0) ::close(lock_fd_);  // releases the lock
+Checkpoint::Lock::~Lock() { release(); }
+
+void Checkpoint::Lock::release() {
+  if (fd >= 0) ::close(fd);  // releases the flock
+  fd = -1;
 }
 
 void Checkpoint::insert(const Interval& c) {
@@ -119,8 +122,7 @@ void Checkpoint::assemble() {
     out.commit();
   }
   std::error_code ec;
-  ::close(lock_fd_);
-  lock_fd_ = -1;
+  lock_.release();
   fs::remove_all(dir_, ec);  // the result is in place; a leftover directory would only be refused as complete
 }
 

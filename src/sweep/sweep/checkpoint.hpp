@@ -39,7 +39,6 @@ class Checkpoint {
   ///         build or shard), is in use by another run, or holds a damaged or overlapping chunk;
   ///         kit::OutputError when it cannot be created.
   Checkpoint(const std::filesystem::path& file, std::string header, const Shard& shard, long long positions, std::size_t fields);
-  ~Checkpoint();
   Checkpoint(const Checkpoint&) = delete;
   Checkpoint& operator=(const Checkpoint&) = delete;
 
@@ -60,7 +59,16 @@ class Checkpoint {
   std::string header_;
   long long positions_;
   std::vector<Interval> done_;
-  int lock_fd_ = -1;
+  /// An open file descriptor holding the directory's flock, closed (the lock released) on
+  /// destruction, also when the constructor of Checkpoint throws after taking it.
+  struct Lock {
+    int fd = -1;
+    Lock() = default;
+    Lock(const Lock&) = delete;
+    Lock& operator=(const Lock&) = delete;
+    ~Lock();
+    void release();
+  } lock_;
   void insert(const Interval& chunk);
 };
 
