@@ -9,9 +9,15 @@
 /// computes the cells at positions ≡ rank (mod R) of the chunk with its OpenMP threads, and rank 0
 /// gathers the rows (MPI_Gatherv) and writes them in cell order. The cyclic split gives each rank
 /// the same mix of cheap and costly cells (neighbouring cells cost about the same). Bad input: one
-/// line from rank 0, every rank exits with status 2.
+/// line from rank 0, every rank exits with status 2. With --progress, rank 0 ends with one line on
+/// stderr: the wall time and each rank's CPU seconds spent on cells, whose ratio mean/max is the
+/// balance of the split (1 when every rank worked as long as the busiest).
 #include <mpi.h>
 
+#include <time.h>
+
+#include <algorithm>
+#include <chrono>
 #include <climits>
 #include <cstdio>
 #include <memory>
@@ -19,6 +25,7 @@
 #include <vector>
 
 #include "dfchaos/errors.hpp"
+#include "kit/format.hpp"
 #include "kit/output.hpp"
 #include "kit/provenance.hpp"
 #include "sweep/engine.hpp"
@@ -38,6 +45,13 @@ struct Verdict {
   long long status = 0;  ///< 0: go on; otherwise every rank exits with this status
   long long chunks = 0;  ///< the number of chunks planned
 };
+
+/// CPU seconds used by this process so far (all its threads).
+double cpu_seconds() {
+  timespec ts{};
+  ::clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
 
 /// The rows of one chunk computed by this rank: positions begin + rank, begin + rank + R, ...
 std::string my_rows(const sweep::Spec& spec, const sweep::Shard& shard, const sweep::Interval& chunk, int rank, int ranks) {
@@ -134,15 +148,36 @@ int run(int argc, char** argv, int rank, int ranks) {
     }
   if (!plan.empty()) MPI_Bcast(plan.data(), static_cast<int>(plan.size()), MPI_LONG_LONG, kRoot, MPI_COMM_WORLD);
   const sweep::Shard shard = options.shard.value_or(sweep::Shard{});
+  const auto wall_start = std::chrono::steady_clock::now();
+  double busy = 0;  // CPU seconds on this rank's cells
+  long long cells = 0;
   for (long long k = 0; k < verdict.chunks; ++k) {
     const sweep::Interval chunk{plan[static_cast<std::size_t>(2 * k)], plan[static_cast<std::size_t>(2 * k + 1)]};
-    const auto parts = gather_text(my_rows(options.spec, shard, chunk, rank, ranks), rank, ranks);
+    const double cpu0 = cpu_seconds();
+    const std::string mine = my_rows(options.spec, shard, chunk, rank, ranks);
+    busy += cpu_seconds() - cpu0;
+    cells += chunk.size();
+    const auto parts = gather_text(mine, rank, ranks);
     if (rank == kRoot) {
       job->deliver(static_cast<std::size_t>(k), interleave(parts, chunk.size()));
       job->progress().step(chunk.size());
     }
   }
+  std::vector<double> busy_by_rank(static_cast<std::size_t>(ranks));
+  MPI_Gather(&busy, 1, MPI_DOUBLE, busy_by_rank.data(), 1, MPI_DOUBLE, kRoot, MPI_COMM_WORLD);
   long long status = rank == kRoot ? job->finish() : 0;
+  if (rank == kRoot && options.progress) {
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+    double sum = 0, most = 0;
+    std::string list;
+    for (double b : busy_by_rank) {
+      sum += b;
+      most = std::max(most, b);
+      list += (list.empty() ? "" : " ") + kit::format_significant(b, 4);
+    }
+    std::fprintf(stderr, "dfchaos-sweep-mpi: %lld cells on %d ranks in %.3f s; cpu seconds per rank: %s; balance %.4f\n", cells, ranks,
+                 wall, list.c_str(), most > 0 ? sum / (ranks * most) : 1.0);
+  }
   MPI_Bcast(&status, 1, MPI_LONG_LONG, kRoot, MPI_COMM_WORLD);
   return static_cast<int>(status);
 }
