@@ -114,6 +114,9 @@ int run(int argc, char** argv, int rank, int ranks) {
   try {
     app.parse(argc, argv);
     options = args.resolve();
+    // A round gathers one chunk: kDefaultChunk cells per rank by default, so that each rank has
+    // enough cells per round for the cyclic split to balance (the round ends at its slowest rank).
+    if (!options.chunk_given) options.chunk = std::min(sweep::kMaxChunk, sweep::kDefaultChunk * ranks);
     if (rank == kRoot) {
       job = std::make_unique<sweep::Run>(options);
       verdict.chunks = static_cast<long long>(job->chunks().size());

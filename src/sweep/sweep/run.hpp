@@ -36,7 +36,8 @@ struct RunOptions {
   std::optional<Shard> shard;  ///< only this share of the cells (a shard file, with a shard line)
   std::string out;             ///< the output file ("" and no resume: stdout)
   std::string resume;          ///< the output file of a resumable run (checkpoints in FILE.chunks/)
-  long long chunk = kDefaultChunk;  ///< cells per chunk, 1..kMaxChunk
+  long long chunk = kDefaultChunk;  ///< cells per chunk, 1..kMaxChunk (it never changes the output)
+  bool chunk_given = false;    ///< --chunk was given (else the MPI driver scales the default with the ranks)
   long long max_chunks = 0;    ///< with resume: stop after this many new chunks (0: no limit)
   bool progress = false;       ///< progress on stderr even when it is not a terminal
 };
