@@ -25,10 +25,11 @@ spec=(--q-range "$s0:1:$n:mid" --b-range "1e-4:0.1:$n:log" --observables coverin
 start=$(date +%s)
 if [[ -x "$mpi" ]] && command -v mpiexec > /dev/null; then
   echo "plane-hires: ${n} x ${n} cells on $ranks MPI ranks -> $out"
-  # --oversubscribe: run RANKS ranks even where fewer slots are declared; the two OMPI variables let
+  # --oversubscribe: run RANKS ranks even where fewer slots are declared; --bind-to none: let the
+  # ranks move to whichever core is idle (a shared machine); the two OMPI variables let
   # OpenMPI run as root (a container); harmless otherwise.
   OMP_NUM_THREADS=1 OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 \
-    mpiexec --oversubscribe -np "$ranks" "$mpi" "${spec[@]}"
+    mpiexec --oversubscribe --bind-to none -np "$ranks" "$mpi" "${spec[@]}"
 else
   echo "plane-hires: ${n} x ${n} cells on $(nproc) OpenMP threads (no MPI driver built) -> $out"
   "$cli" sweep "${spec[@]}"

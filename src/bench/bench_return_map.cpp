@@ -15,8 +15,9 @@
 ///     by bench_plane: cells, T evaluations per cell, cells per second (all OpenMP threads);
 ///   - `scaling`: one sweep (kScalingCells cells, every observable) on 1 and on 2 MPI ranks of
 ///     dfchaos-sweep-mpi (one thread each, `mpiexec --oversubscribe`), or, without MPI, dfchaos sweep
-///     on 1 and 2 OpenMP threads (`scaling_mode` says which), with each rank's CPU seconds and
-///     their balance, and the machine's load average (a busy machine lowers the efficiency); each
+///     on 1 and 2 OpenMP threads (`scaling_mode` says which), with each rank's CPU and busy seconds
+///     and the utilization (the share of the wall time the ranks spent on cells), and the machine's
+///     load average (other work on the machine lowers the efficiency, not the utilization); each
 ///     count is run twice, alternately, and the faster run counts.
 #include <benchmark/benchmark.h>
 
@@ -194,7 +195,9 @@ Json scaling_run(int workers, const std::filesystem::path& file, bool mpi, doubl
   std::vector<std::string> argv, env = {"OMP_NUM_THREADS=" + std::string(mpi ? "1" : std::to_string(workers))};
 #ifdef DFCHAOS_BENCH_MPI_DRIVER
   if (mpi) {
-    argv = {DFCHAOS_BENCH_MPIEXEC, "--oversubscribe", "-np", std::to_string(workers), DFCHAOS_BENCH_MPI_DRIVER, "--progress"};
+    // --bind-to none: on a shared machine the ranks must be free to move to whichever core is idle.
+    argv = {DFCHAOS_BENCH_MPIEXEC, "--oversubscribe", "--bind-to", "none", "-np", std::to_string(workers), DFCHAOS_BENCH_MPI_DRIVER,
+            "--progress"};
     if (::geteuid() == 0) env.insert(env.end(), {"OMPI_ALLOW_RUN_AS_ROOT=1", "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1"});
   }
 #endif
@@ -206,14 +209,18 @@ Json scaling_run(int workers, const std::filesystem::path& file, bool mpi, doubl
   j.set("ranks", workers).set("seconds", c.seconds).set("exit_status", c.status);
   seconds = c.status == 0 ? c.seconds : NAN;
   if (mpi) {
-    // "cpu seconds per rank: a b; balance x" from the driver's --progress line
-    const auto at = c.text.find("cpu seconds per rank: ");
-    Json cpu = Json::array();
-    if (at != std::string::npos) {
-      std::istringstream in(c.text.substr(at + 22, c.text.find(';', at) - at - 22));
-      for (double v; in >> v;) cpu.push(v);
-    }
-    j.set("cpu_seconds_per_rank", cpu).set("balance", value_after(c.text, "balance "));
+    // "cpu seconds per rank: a b; busy seconds per rank: a b; utilization x" (the driver's --progress line)
+    auto list = [&c](const std::string& key) {
+      Json values = Json::array();
+      const auto at = c.text.find(key);
+      if (at != std::string::npos) {
+        std::istringstream in(c.text.substr(at + key.size(), c.text.find(';', at) - at - key.size()));
+        for (double v; in >> v;) values.push(v);
+      }
+      return values;
+    };
+    j.set("cpu_seconds_per_rank", list("cpu seconds per rank: ")).set("busy_seconds_per_rank", list("busy seconds per rank: "))
+        .set("utilization", value_after(c.text, "utilization "));
   }
   std::printf("bench: scaling: %d %s: %.2f s\n", workers, mpi ? "rank(s)" : "thread(s)", c.seconds);
   std::fflush(stdout);
@@ -369,7 +376,7 @@ int main(int argc, char** argv) {
     std::error_code ec;
     std::filesystem::remove_all(dir, ec);
     const double efficiency = t1 / (2 * t2);
-    doc.set("scaling", runs).set("scaling_mode", mpi ? "mpi: dfchaos-sweep-mpi, mpiexec --oversubscribe -np R, 1 thread per rank"
+    doc.set("scaling", runs).set("scaling_mode", mpi ? "mpi: dfchaos-sweep-mpi, mpiexec --oversubscribe --bind-to none -np R, 1 thread per rank"
                                                      : "openmp: dfchaos sweep, OMP_NUM_THREADS = 1 and 2 (no MPI driver built)")
         .set("scaling_cells", kScalingCells).set("scaling_observables", "covering,superstable,lyapunov,rate,period")
         .set("scaling_efficiency", efficiency).set("scaling_outputs_identical", identical).set("load_average_1min_before", load[0]);

@@ -32,9 +32,8 @@ void SweepArguments::add_to(CLI::App* app) {
   auto* r = app->add_option("--resume", resume, "write to FILE, keeping finished chunks in FILE.chunks/; rerun to continue an interrupted run")
                 ->type_name("FILE");
   o->excludes(r);
-  app->add_option("--chunk", chunk, "cells per chunk (checkpoint and MPI round), 1.." + std::to_string(kMaxChunk) + " (default " +
-                                        std::to_string(kDefaultChunk) + "; dfchaos-sweep-mpi: " + std::to_string(kDefaultChunk) +
-                                        " per rank)")->type_name("N");
+  app->add_option("--chunk", chunk, "cells per chunk (the unit of --resume), 1.." + std::to_string(kMaxChunk) + " (default " +
+                                        std::to_string(kDefaultChunk) + ")")->type_name("N");
   app->add_option("--max-chunks", max_chunks, "with --resume: stop after N new chunks, exit status 3 (0: no limit)")->type_name("N");
   app->add_flag("--progress", progress, "progress on stderr even when it is not a terminal");
   app->footer(
@@ -71,8 +70,7 @@ RunOptions SweepArguments::resolve() const {
   if (!shard.empty()) r.shard = Shard::parse("shard", shard, s.cells());
   r.out = out;
   r.resume = resume;
-  r.chunk_given = !chunk.empty();
-  r.chunk = r.chunk_given ? count("chunk", chunk, 1, kMaxChunk) : kDefaultChunk;
+  r.chunk = count("chunk", chunk, 1, kMaxChunk);
   r.max_chunks = count("max-chunks", max_chunks, 0, kMaxChunks);
   r.progress = progress;
   return r;

@@ -16,7 +16,7 @@ struct SweepArguments {
   std::string a = "1", q_range, b_range, observables = "covering,superstable,lyapunov,rate,period";
   std::string superstable_scan = "400", theta0 = "0.5", transient = "1000", steps = "1000";
   std::string period_max = "64", period_tol = "1e-9";
-  std::string shard, out, resume, chunk, max_chunks = "0";
+  std::string shard, out, resume, chunk = std::to_string(kDefaultChunk), max_chunks = "0";
   bool progress = false;
 
   /// Registers the options on `app`, with the output columns in its footer.

@@ -23,7 +23,7 @@ namespace dfchaos::sweep {
 
 /// Exit status of a run stopped by --max-chunks before it was complete (rerun to continue).
 inline constexpr int kExitIncomplete = 3;
-/// Default cells per chunk (the unit of checkpoints and of MPI rounds).
+/// Default cells per chunk (the unit of checkpoints, and of delivery by the MPI driver).
 inline constexpr long long kDefaultChunk = 256;
 /// Most cells per chunk.
 inline constexpr long long kMaxChunk = 1'000'000;
@@ -37,7 +37,6 @@ struct RunOptions {
   std::string out;             ///< the output file ("" and no resume: stdout)
   std::string resume;          ///< the output file of a resumable run (checkpoints in FILE.chunks/)
   long long chunk = kDefaultChunk;  ///< cells per chunk, 1..kMaxChunk (it never changes the output)
-  bool chunk_given = false;    ///< --chunk was given (else the MPI driver scales the default with the ranks)
   long long max_chunks = 0;    ///< with resume: stop after this many new chunks (0: no limit)
   bool progress = false;       ///< progress on stderr even when it is not a terminal
 };
