@@ -92,6 +92,7 @@ expect_error "q-range:"  sweep --q-range 0.5:1:1e5 --b-range 0.01:0.1:1e4
 expect_error "b-range:"  sweep --q-range 0.5:1:3 --b-range 0.1:0.5:3
 expect_error "b-range:"  sweep --q-range 0.5:1:3 --b-range 0:0.1:3:log
 expect_error "a:"        sweep --a 0 "${W[@]}"
+expect_error "a:"        sweep --a 1e308 "${W[@]}"
 expect_error "observables:" sweep "${G[@]}" --observables covering,chaos
 expect_error "observables:" sweep "${G[@]}" --observables ,
 expect_error "observables:" sweep "${G[@]}" --observables rate,rate

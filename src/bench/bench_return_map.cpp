@@ -117,6 +117,8 @@ void bm_sincos(benchmark::State& state) {
 /// seconds here, long enough that the start-up of mpiexec (a few tenths of a second) hardly counts.
 constexpr int kScalingSide = 30;
 constexpr long long kScalingCells = static_cast<long long>(kScalingSide) * kScalingSide;
+/// A 1-minute load average above this before the scaling runs means other work shared the cores.
+constexpr double kBusyLoad = 0.5;
 /// Runs of each worker count (alternating), of which the fastest counts.
 constexpr int kScalingRepeats = 2;
 
@@ -188,7 +190,14 @@ Json measure_plane(double sincos_seconds) {
 }
 
 /// One run of the scaling sweep on `workers` ranks (or threads); its output goes to `file`.
-Json scaling_run(int workers, const std::filesystem::path& file, bool mpi, double& seconds) {
+/// One run of the scaling sweep: its record, and (NaN where not measured) its wall seconds, the
+/// CPU seconds its ranks spent on cells in total, and its utilization.
+struct ScalingRun {
+  Json json;
+  double seconds = NAN, cpu = NAN, utilization = NAN;
+};
+
+ScalingRun scaling_run(int workers, const std::filesystem::path& file, bool mpi) {
   const std::string s0 = format_double(std::sin(vartheta0()));
   const std::vector<std::string> spec = {"--q-range", s0 + ":1:" + std::to_string(kScalingSide) + ":mid", "--b-range",
                                          "1e-4:0.1:" + std::to_string(kScalingSide) + ":log", "--out", file.string()};
@@ -204,27 +213,35 @@ Json scaling_run(int workers, const std::filesystem::path& file, bool mpi, doubl
   if (!mpi) argv = {DFCHAOS_BENCH_CLI, "sweep"};
   argv.insert(argv.end(), spec.begin(), spec.end());
   const ChildResult c = run_child(argv, env, true);
-  Json j = Json::object();
+  ScalingRun result;
+  Json& j = result.json;
+  j = Json::object();
   // "ranks": MPI ranks, or OpenMP threads of the one process when no MPI driver was built.
   j.set("ranks", workers).set("seconds", c.seconds).set("exit_status", c.status);
-  seconds = c.status == 0 ? c.seconds : NAN;
+  result.seconds = c.status == 0 ? c.seconds : NAN;
   if (mpi) {
     // "cpu seconds per rank: a b; busy seconds per rank: a b; utilization x" (the driver's --progress line)
-    auto list = [&c](const std::string& key) {
+    auto list = [&c](const std::string& key, double& sum) {
       Json values = Json::array();
       const auto at = c.text.find(key);
       if (at != std::string::npos) {
         std::istringstream in(c.text.substr(at + key.size(), c.text.find(';', at) - at - key.size()));
-        for (double v; in >> v;) values.push(v);
+        sum = 0;
+        for (double v; in >> v;) {
+          values.push(v);
+          sum += v;
+        }
       }
       return values;
     };
-    j.set("cpu_seconds_per_rank", list("cpu seconds per rank: ")).set("busy_seconds_per_rank", list("busy seconds per rank: "))
-        .set("utilization", value_after(c.text, "utilization "));
+    double busy_total = NAN;
+    result.utilization = value_after(c.text, "utilization ");
+    j.set("cpu_seconds_per_rank", list("cpu seconds per rank: ", result.cpu))
+        .set("busy_seconds_per_rank", list("busy seconds per rank: ", busy_total)).set("utilization", result.utilization);
   }
   std::printf("bench: scaling: %d %s: %.2f s\n", workers, mpi ? "rank(s)" : "thread(s)", c.seconds);
   std::fflush(stdout);
-  return j;
+  return result;
 }
 
 /// Collects seconds per iteration of every run while printing as usual.
@@ -358,16 +375,17 @@ int main(int argc, char** argv) {
     // Alternately 1, 2, 1, 2 workers; each entry of "scaling" is the fastest of its runs, the
     // least disturbed by anything else on the machine (all times are in "all_seconds").
     Json runs = Json::array();
-    double best[2] = {INFINITY, INFINITY};
+    double best[2] = {INFINITY, INFINITY}, best_cpu[2] = {NAN, NAN}, best_utilization[2] = {NAN, NAN};
     Json best_run[2], all[2] = {Json::array(), Json::array()};
     for (int rep = 0; rep < kScalingRepeats; ++rep)
       for (int w = 0; w < 2; ++w) {
-        double t = NAN;
-        const Json r = scaling_run(w + 1, dir / (std::to_string(w + 1) + ".tsv"), mpi, t);
-        all[w].push(t);
-        if (rep == 0 || t < best[w]) {
-          best[w] = t;
-          best_run[w] = r;
+        const ScalingRun r = scaling_run(w + 1, dir / (std::to_string(w + 1) + ".tsv"), mpi);
+        all[w].push(r.seconds);
+        if (rep == 0 || r.seconds < best[w]) {
+          best[w] = r.seconds;
+          best_run[w] = r.json;
+          best_cpu[w] = r.cpu;
+          best_utilization[w] = r.utilization;
         }
       }
     for (int w = 0; w < 2; ++w) runs.push(best_run[w].set("all_seconds", all[w]));
@@ -376,10 +394,20 @@ int main(int argc, char** argv) {
     std::error_code ec;
     std::filesystem::remove_all(dir, ec);
     const double efficiency = t1 / (2 * t2);
+    // What the run would give on 2 otherwise idle cores: each rank at full speed, so the wall time
+    // is the busiest rank's CPU time; = utilization x (CPU seconds on 1 rank / on 2 ranks). An
+    // estimate (it leaves out mpiexec's start-up), recorded apart from the measured efficiency.
+    const double cpu_ratio = best_cpu[0] / best_cpu[1], utilization2 = best_utilization[1];
+    const double idle_estimate = utilization2 * cpu_ratio;
     doc.set("scaling", runs).set("scaling_mode", mpi ? "mpi: dfchaos-sweep-mpi, mpiexec --oversubscribe --bind-to none -np R, 1 thread per rank"
                                                      : "openmp: dfchaos sweep, OMP_NUM_THREADS = 1 and 2 (no MPI driver built)")
         .set("scaling_cells", kScalingCells).set("scaling_observables", "covering,superstable,lyapunov,rate,period")
-        .set("scaling_efficiency", efficiency).set("scaling_outputs_identical", identical).set("load_average_1min_before", load[0]);
+        .set("scaling_efficiency", efficiency).set("scaling_outputs_identical", identical).set("load_average_1min_before", load[0])
+        .set("scaling_cpu_ratio", cpu_ratio).set("scaling_efficiency_on_idle_cores_estimate", idle_estimate);
+    if (load[0] > kBusyLoad)
+      std::printf("bench: the machine was busy (load average %.1f before the scaling runs): the measured efficiency understates;\n"
+                  "       on idle cores it would be about %.3f (utilization %.4f x CPU ratio %.3f)\n", load[0], idle_estimate,
+                  utilization2, cpu_ratio);
     targets.push(target("2-rank efficiency t1/(2 t2) >= 0.9", efficiency >= 0.9 && identical, efficiency));
   }
   doc.set("targets", targets);

@@ -1,6 +1,7 @@
 #include "sweep/cell.hpp"
 
 #include <exception>
+#include <optional>
 
 #include "dfchaos/covering.hpp"
 #include "dfchaos/errors.hpp"
@@ -59,7 +60,10 @@ CellValues evaluate_cell(const Spec& spec, long long index) {
   v.q_over_a = spec.q_at(index);
   v.b_over_a = spec.b_at(index);
   const ObservableSet& obs = spec.observables;
-  const Parameters p(spec.a, v.b_over_a * spec.a, v.q_over_a * spec.a);
+  std::optional<Parameters> made;
+  guarded(v, "parameters", [&] { made.emplace(spec.a, v.b_over_a * spec.a, v.q_over_a * spec.a); });  // Spec::validate makes it succeed
+  if (!made) return v;
+  const Parameters& p = *made;
   if (!(p.q() > 2 * p.b())) {  // exactly the condition of Parameters::require_return_map
     v.status = CellStatus::Inadmissible;
     return v;

@@ -16,7 +16,7 @@ long long count(const std::string& name, const std::string& text, long long lo, 
 }  // namespace
 
 void SweepArguments::add_to(CLI::App* app) {
-  app->add_option("--a", a, "forcing amplitude a > 0 (default 1; only q/a and b/a matter)")->type_name("FLOAT");
+  app->add_option("--a", a, "forcing amplitude, 1e-150 <= a <= 1e150 (default 1; only q/a and b/a matter)")->type_name("FLOAT");
   app->add_option("--q-range", q_range, "q/a axis lo:hi:n[:lin|log|mid] (every q/a > 0)")->required()->type_name("LO:HI:N[:KIND]");
   app->add_option("--b-range", b_range, "b/a axis lo:hi:n[:lin|log|mid] (every b/a in (0, 1/2))")->required()->type_name("LO:HI:N[:KIND]");
   app->add_option("--observables", observables, "comma-separated: covering,superstable,lyapunov,rate,period (default all)")->type_name("LIST");

@@ -11,10 +11,15 @@ std::string count_text(long long v) { return std::to_string(v); }
 }  // namespace
 
 void Spec::validate() const {
-  if (!(std::isfinite(a) && a > 0)) throw InvalidParameter("a", "0 < a < inf", a);
+  if (!(a >= kMinA && a <= kMaxA)) throw InvalidParameter("a", "1e-150 <= a <= 1e150", a);
   if (q_over_a.size() < 1 || b_over_a.size() < 1) throw InvalidParameter("q-range", "both ranges are required");
   q_over_a.require_within("q-range", 0, INFINITY, "every q/a must be positive and finite");
   b_over_a.require_within("b-range", 0, 0.5, "every b/a must lie in (0, 1/2), where t2 and t3 exist");
+  // The parameters themselves, a·(q/a) and a·(b/a), must be finite and positive (a huge or tiny a
+  // would overflow or underflow them).
+  for (double r : {q_over_a[0], q_over_a[q_over_a.size() - 1], b_over_a[0], b_over_a[b_over_a.size() - 1]})
+    if (!(std::isnormal(a * r) && a * r > 0))
+      throw InvalidParameter("a", "a * (q/a) and a * (b/a) must be finite, positive and normal for every cell", a);
   // The product is checked in floating point first: n_q and n_b are each at most 10^8.
   if (static_cast<double>(q_over_a.size()) * static_cast<double>(b_over_a.size()) > static_cast<double>(kMaxCells))
     throw InvalidParameter("q-range", "n_q * n_b <= " + count_text(kMaxCells) + " cells (got " + count_text(q_over_a.size()) +

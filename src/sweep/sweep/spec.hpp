@@ -31,6 +31,8 @@ inline constexpr long long kMaxSuperstableScan = 1'000'000;  ///< most scan poin
 /// Most evaluations of T by the orbits of a whole sweep, cells·(transient + steps + period_max):
 /// 10^12, some 25 core-days at 2 µs per evaluation.
 inline constexpr double kMaxOrbitEvaluations = 1e12;
+inline constexpr double kMinA = 1e-150;  ///< smallest forcing amplitude (squares of a stay normal)
+inline constexpr double kMaxA = 1e150;   ///< largest forcing amplitude (squares of a stay finite)
 inline constexpr double kMinPeriodTol = 1e-15;  ///< smallest period tolerance (about the rounding of T)
 inline constexpr double kMaxPeriodTol = 1e-3;   ///< largest period tolerance
 
@@ -57,7 +59,8 @@ struct Spec {
   OrbitSettings orbit;           ///< the orbit (lyapunov, rate, period)
   PeriodSettings period;         ///< the period search
 
-  /// Checks every bound and admissibility condition before any work: a > 0 finite; every q/a in
+  /// Checks every bound and admissibility condition before any work: a in [kMinA, kMaxA], and
+  /// a·(q/a), a·(b/a) normal numbers for every cell; every q/a in
   /// (0, inf) and every b/a in (0, 1/2) (the joint condition q/a > 2 b/a is checked per cell, whose
   /// status is then `inadmissible`); the cell count, the orbit counts and the total orbit work
   /// bounded (the k* constants). @throws InvalidParameter naming the option (as on the command line).
