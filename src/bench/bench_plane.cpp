@@ -6,10 +6,12 @@
 ///
 ///     bench_plane [--nq N] [--nb N]      (1 <= N <= 2000; default 100 x 100)
 ///
-/// Prints `key value` lines: cells, T_evaluations, seconds, threads, errors. It is a separate
+/// Prints `key value` lines: cells, T_evaluations, seconds (wall), cpu_seconds (all threads),
+/// threads, errors. It is a separate
 /// executable because counting wraps every call of T in the process, which must not touch the
 /// timings of bench_return_map.
 #include <omp.h>
+#include <time.h>
 
 #include <chrono>
 #include <cmath>
@@ -26,6 +28,13 @@
 namespace {
 constexpr long long kDefaultN = 100;  ///< the report's plane is 100 x 100
 constexpr long long kMaxN = 2000;     ///< as thm1_parameter_plane's bounds
+
+/// CPU seconds of this process so far (all threads).
+double cpu_seconds() {
+  timespec ts{};
+  ::clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -54,13 +63,15 @@ int main(int argc, char** argv) {
   std::vector<long long> cells;
   for (long long k = 0; k < spec.cells(); ++k) cells.push_back(k);
   const long long before = T_evaluations();
+  const double cpu_start = cpu_seconds();
   const auto start = std::chrono::steady_clock::now();
   const auto rows = sweep::compute_rows(spec, cells, nullptr);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double cpu = cpu_seconds() - cpu_start;
   const long long evaluations = T_evaluations() - before;
   long long errors = 0;
   for (const auto& r : rows) errors += r.find("\terror\t") != std::string::npos;
-  std::printf("cells %lld\nT_evaluations %lld\nseconds %.6f\nthreads %d\nerrors %lld\n", spec.cells(), evaluations, seconds,
-              omp_get_max_threads(), errors);
+  std::printf("cells %lld\nT_evaluations %lld\nseconds %.6f\ncpu_seconds %.6f\nthreads %d\nerrors %lld\n", spec.cells(), evaluations,
+              seconds, cpu, omp_get_max_threads(), errors);
   return 0;
 }
