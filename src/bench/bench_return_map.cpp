@@ -114,9 +114,9 @@ void bm_sincos(benchmark::State& state) {
 
 // ---- child processes: the plane and the scaling sweep ----------------------------------------------
 
-/// Cells of the scaling sweep: a 30 x 30 plane (thm1's axes) with every observable, about 15 CPU
-/// seconds here, long enough that the start-up of mpiexec (a few tenths of a second) hardly counts.
-constexpr int kScalingSide = 30;
+/// Cells of the scaling sweep: a 40 x 40 plane (thm1's axes) with every observable, about 25 CPU
+/// seconds here, long enough that the start-up of mpiexec (about 0.4 s) hardly counts.
+constexpr int kScalingSide = 40;
 constexpr long long kScalingCells = static_cast<long long>(kScalingSide) * kScalingSide;
 /// A 1-minute load average above this before the scaling runs means other work shared the cores.
 constexpr double kBusyLoad = 0.5;

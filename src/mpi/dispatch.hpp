@@ -6,7 +6,7 @@
 /// asks rank 0 for a batch, and asks for the next one *before* computing the current one, so that
 /// the answer is waiting when it is done; it sends the batch's rows back. On rank 0 a second thread
 /// computes cells from the same queue, while the main thread (the only one that calls MPI) answers
-/// requests within a millisecond, receives rows and, as soon as every cell of the next chunk is in,
+/// requests within a few milliseconds, receives rows and, as soon as every cell of the next chunk is in,
 /// delivers the chunk (Run::deliver: stdout, the output file, or the checkpoint of --resume). The cost of a cell varies by a factor of ten across
 /// the plane, so a static split leaves ranks idle (measured: a cyclic split of 900 cells over 2
 /// ranks gave them 7.2 and 7.75 CPU seconds, balance 0.96); handing out batches keeps every rank
@@ -34,8 +34,9 @@ namespace dfchaos::sweep::mpi {
 inline constexpr long long kBatchPerThread = 2;
 /// Cells rank 0's computing thread takes from the queue at a time, per OpenMP thread.
 inline constexpr long long kRootCellsPerThread = 1;
-/// How long rank 0's main thread sleeps when no message and no rows are waiting.
-inline constexpr std::chrono::microseconds kIdlePoll{500};
+/// How long rank 0's main thread sleeps when no message and no rows are waiting (a worker asks
+/// for its next batch a whole batch ahead, so this delay is hidden; each look costs CPU).
+inline constexpr std::chrono::microseconds kIdlePoll{2000};
 
 /// The queue of cells: the chunks one after the other.
 class Queue {
