@@ -99,7 +99,7 @@ int run(int argc, char** argv, int rank, int ranks) {
   std::vector<double> by_rank(static_cast<std::size_t>(2 * ranks));
   MPI_Gather(mine, 2, MPI_DOUBLE, by_rank.data(), 2, MPI_DOUBLE, kRoot, MPI_COMM_WORLD);
   long long status = rank == kRoot ? job->finish() : 0;
-  if (rank == kRoot && options.progress) {
+  if (rank == kRoot && options.progress && queue.size() > 0) {
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
     std::string cpu, busy_wall;
     double sum = 0;
