@@ -10,12 +10,13 @@
 #include <string>
 #include <vector>
 
+#include "sweep/shard.hpp"
 #include "sweep/stream.hpp"
 
 namespace dfchaos::sweep {
 
 /// Most shard files merged at once (each is open during the merge).
-inline constexpr long long kMaxMergeFiles = 10'000;
+inline constexpr long long kMaxMergeFiles = kMaxShards;
 
 /// Merges the shard files into `out` (not committed). @throws InvalidParameter naming
 /// "sweep-merge" and the file for a missing, duplicate, foreign or damaged shard;

@@ -11,8 +11,8 @@
 
 namespace dfchaos::sweep {
 
-/// Most shards of one sweep.
-inline constexpr long long kMaxShards = 1'000'000;
+/// Most shards of one sweep (sweep-merge holds every shard file open at once).
+inline constexpr long long kMaxShards = 10'000;
 
 /// Shard `index` of `count` (the whole sweep is shard 0/1).
 struct Shard {
