@@ -112,6 +112,7 @@ expect_error "chunk:"    sweep "${W[@]}" --chunk 0
 expect_error "max-chunks:" sweep "${W[@]}" --max-chunks 2
 expect_error "--resume"  sweep "${W[@]}" --out "$tmp/o.tsv" --resume "$tmp/r.tsv"
 expect_error "out:"      sweep "${W[@]}" --out "$tmp/no/such/dir/o.tsv"
+expect_error "resume:"   sweep "${W[@]}" --resume "$tmp/no/such/dir/r.tsv"
 "$cli" sweep "${W[@]}" --steps 5 --resume "$tmp/res.tsv" --chunk 1 --max-chunks 1 2>/dev/null
 expect_error "resume:"   sweep "${W[@]}" --steps 6 --resume "$tmp/res.tsv"
 expect_error "resume:"   sweep "${W[@]}" --steps 5 --shard 0/2 --resume "$tmp/res.tsv"

@@ -49,7 +49,7 @@ Checkpoint::Checkpoint(const fs::path& file, std::string header, const Shard& sh
   std::error_code ec;
   if (fs::exists(dir_, ec) && !fs::is_directory(dir_, ec)) throw InvalidParameter(kOption, dir_.string() + " exists and is not a directory");
   const bool fresh = !fs::exists(dir_, ec);
-  fs::create_directories(dir_, ec);
+  if (fresh) fs::create_directory(dir_, ec);  // in FILE's directory, which must exist (as for --out)
   if (ec) throw kit::OutputError("resume: cannot create " + dir_.string() + " (" + ec.message() + ")", true);
   lock_.fd = ::open((dir_ / kLockFile).c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
   if (lock_.fd < 0) throw kit::OutputError("resume: cannot open " + (dir_ / kLockFile).string(), true);
