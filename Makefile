@@ -11,6 +11,8 @@ BUILD   ?= build
 JOBS    ?= $(shell nproc 2>/dev/null || echo 2)
 BTYPE   ?= RelWithDebInfo
 CMAKE   ?= cmake
+PLANE_N ?= 2000
+PLANE_RANKS ?= 2
 ABS     := $(abspath $(BUILD))
 
 EXPERIMENTS := $(sort $(basename $(notdir $(wildcard experiments/*.cpp))))
@@ -19,7 +21,7 @@ STAMPS      := $(EXPERIMENTS:%=$(BUILD)/stamps/%.ok)
 FIGS        := $(FIGURES:%=$(BUILD)/figures/%.tex)
 
 .PHONY: help deps deps-report configure build build-tools test reproduce experiments figures report manifest claims-map \
-        docs bench clean test-sanitize test-clang check-determinism certify-region
+        docs bench plane-hires clean test-sanitize test-clang check-determinism certify-region
 
 help:
 	@echo "dfchaos make targets:"
@@ -33,15 +35,17 @@ help:
 	@echo "  make claims-map  the claims map (paper item -> experiment -> claims -> figures -> tests): $(BUILD)/claims-map.md"
 	@echo "  make manifest    write $(BUILD)/MANIFEST.sha256 over data and tables"
 	@echo "  make docs        Doxygen HTML of the library and experiments in $(BUILD)/docs"
-	@echo "  make bench       T per second vs the GSL odeiv2 baseline: $(BUILD)/bench/bench.json, bench.tex;"
-	@echo "                   time per certified proof: $(BUILD)/bench/bench_certified.json, .tex"
+	@echo "  make bench       T per second vs the GSL odeiv2 baseline, the plane's cost, 1- vs 2-rank sweep:"
+	@echo "                   $(BUILD)/bench/bench.json, bench.tex; time per certified proof: bench_certified.json, .tex"
 	@echo "  make certify-region  Lemma 4 proved over parameter boxes on the larger band (CERT_REGION=...)"
+	@echo "  make plane-hires the (q/a, b/a) plane at $(PLANE_N) x $(PLANE_N), every observable, MPI on $(PLANE_RANKS) ranks"
+	@echo "                   when built: $(BUILD)/plane/ (hours: docs/cluster.md; rerun to resume)"
 	@echo "  make test-sanitize  build with ASan+UBSan in $(BUILD)-sanitize and run every test"
 	@echo "  make test-clang  build warning-free with clang++ in $(BUILD)-clang and run every test"
 	@echo "  make check-determinism  rerun every experiment with 1 and with 2 threads; manifests must match"
 	@echo "  make deps        install the packages needed to build and test"
 	@echo "  make clean       remove $(BUILD)/"
-	@echo "Variables: BUILD=$(BUILD) JOBS=$(JOBS) BTYPE=$(BTYPE)"
+	@echo "Variables: BUILD=$(BUILD) JOBS=$(JOBS) BTYPE=$(BTYPE) PLANE_N=$(PLANE_N) PLANE_RANKS=$(PLANE_RANKS)"
 
 deps:
 	@bash scripts/install-deps.sh build
@@ -126,6 +130,11 @@ certify-region: build-tools
 	@mkdir -p $(BUILD)/stamps
 	@$(BUILD)/bin/experiments/certified_region --out $(BUILD) $(CERT_REGION)
 	@touch $(BUILD)/stamps/certified_region.ok
+
+# The high-resolution plane (issue 16): resumable, so a second `make plane-hires` continues.
+plane-hires: deps configure
+	@$(CMAKE) --build $(BUILD) -j $(JOBS) --target dfchaos_cli $$(grep -q '^DFCHAOS_MPI:BOOL=ON' $(BUILD)/CMakeCache.txt && echo dfchaos_sweep_mpi)
+	@bash scripts/plane-hires.sh $(BUILD) $(PLANE_N) $(PLANE_RANKS)
 
 # ---- reliability checks (issue 7) -----------------------------------------------------------
 

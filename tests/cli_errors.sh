@@ -85,6 +85,67 @@ expect_error "frobnicate" frobnicate "${P[@]}"
 expect_error "--bogus" map "${P[@]}" --theta 4 --bogus 1
 expect_error "subcommand" 
 
+# ---- sweep and sweep-merge ----------------------------------------------------------------------
+G=(--q-range 0.7:0.9:2 --b-range 0.01:0.1:2)   # 4 cells
+W=("${G[@]}" --observables period --transient 5)  # cheap ones
+expect_error "--q-range" sweep --b-range 0.01:0.1:2
+expect_error "q-range:"  sweep --q-range 1:0.5:3 --b-range 0.01:0.1:2
+expect_error "q-range:"  sweep --q-range 0.5:0.5:3 --b-range 0.01:0.1:2
+expect_error "q-range:"  sweep --q-range 0.5:1 --b-range 0.01:0.1:2
+expect_error "q-range:"  sweep --q-range 0.5:1:3:cubic --b-range 0.01:0.1:2
+expect_error "q-range n:" sweep --q-range 0.5:1:0 --b-range 0.01:0.1:2
+expect_error "q-range n:" sweep --q-range 0.5:1:2.5 --b-range 0.01:0.1:2
+expect_error "q-range n:" sweep --q-range 0.5:1:1e9 --b-range 0.01:0.1:2
+expect_error "q-range lo:" sweep --q-range x:1:3 --b-range 0.01:0.1:2
+expect_error "q-range hi:" sweep --q-range 0.5:inf:3 --b-range 0.01:0.1:2
+expect_error "q-range:"  sweep --q-range -0.5:1:3 --b-range 0.01:0.1:2
+expect_error "q-range:"  sweep --q-range 0.5:1:1e5 --b-range 0.01:0.1:1e4
+expect_error "b-range:"  sweep --q-range 0.5:1:3 --b-range 0.1:0.5:3
+expect_error "b-range:"  sweep --q-range 0.5:1:3 --b-range 0:0.1:3:log
+expect_error "a:"        sweep --a 0 "${W[@]}"
+expect_error "a:"        sweep --a 1e308 "${W[@]}"
+expect_error "observables:" sweep "${G[@]}" --observables covering,chaos
+expect_error "observables:" sweep "${G[@]}" --observables ,
+expect_error "observables:" sweep "${G[@]}" --observables rate,rate
+expect_error "shard:"    sweep "${W[@]}" --shard 2/2
+expect_error "shard:"    sweep "${W[@]}" --shard 1/0
+expect_error "shard:"    sweep "${W[@]}" --shard 1
+expect_error "shard i:"  sweep "${W[@]}" --shard a/2
+expect_error "shard:"    sweep "${W[@]}" --shard 0/5
+expect_error "transient:" sweep "${G[@]}" --transient -1
+expect_error "steps:"    sweep "${W[@]}" --steps 0
+expect_error "steps:"    sweep "${W[@]}" --steps 1e8
+expect_error "theta0:"   sweep "${W[@]}" --theta0 1
+expect_error "period-max:" sweep "${W[@]}" --period-max 0
+expect_error "period-tol:" sweep "${W[@]}" --period-tol 0
+expect_error "superstable-scan:" sweep "${W[@]}" --superstable-scan 1
+expect_error "chunk:"    sweep "${W[@]}" --chunk 0
+expect_error "max-chunks:" sweep "${W[@]}" --max-chunks 2
+expect_error "--resume"  sweep "${W[@]}" --out "$tmp/o.tsv" --resume "$tmp/r.tsv"
+expect_error "out:"      sweep "${W[@]}" --out "$tmp/no/such/dir/o.tsv"
+expect_error "resume:"   sweep "${W[@]}" --resume "$tmp/no/such/dir/r.tsv"
+"$cli" sweep "${W[@]}" --steps 5 --resume "$tmp/res.tsv" --chunk 1 --max-chunks 1 2>/dev/null
+expect_error "resume:"   sweep "${W[@]}" --steps 6 --resume "$tmp/res.tsv"
+expect_error "resume:"   sweep "${W[@]}" --steps 5 --shard 0/2 --resume "$tmp/res.tsv"
+for i in 0 1; do "$cli" sweep "${W[@]}" --shard $i/2 --out "$tmp/sh$i.tsv"; done
+for i in 0 1 2; do "$cli" sweep "${W[@]}" --shard $i/3 --out "$tmp/th$i.tsv"; done
+"$cli" sweep "${W[@]}" --steps 6 --shard 1/2 --out "$tmp/other1.tsv"
+"$cli" sweep "${W[@]}" > "$tmp/whole.tsv"
+head -c -1 "$tmp/sh1.tsv" > "$tmp/cut1.tsv"
+head -n -1 "$tmp/sh1.tsv" > "$tmp/short1.tsv"
+expect_error "files"       sweep-merge
+expect_error "sweep-merge:" sweep-merge "$tmp/sh0.tsv"
+expect_error "sweep-merge:" sweep-merge "$tmp/sh0.tsv" "$tmp/sh0.tsv"
+expect_error "sweep-merge:" sweep-merge "$tmp/sh0.tsv" "$tmp/other1.tsv"
+expect_error "sweep-merge:" sweep-merge "$tmp/sh0.tsv" "$tmp/th1.tsv" "$tmp/th2.tsv"
+expect_error "sweep-merge:" sweep-merge "$tmp/sh0.tsv" "$tmp/cut1.tsv"
+expect_error "sweep-merge:" sweep-merge "$tmp/sh0.tsv" "$tmp/short1.tsv"
+expect_error "sweep-merge:" sweep-merge "$tmp/whole.tsv"
+expect_error "sweep-merge:" sweep-merge "$tmp/sh0.tsv" "$tmp/no-such-file.tsv"
+expect_error "sweep-merge:" sweep-merge "$tmp/sh0.tsv" "$cli"
+expect_ok "^# dfchaos sweep: " sweep "${W[@]}"
+expect_ok "^# dfchaos sweep: " sweep-merge "$tmp/sh1.tsv" "$tmp/sh0.tsv"
+
 expect_ok "^theta	T1	T	scenario	elapsed	penetration$" map "${P[@]}" --theta 3.5 4.5
 expect_ok "^n	theta	scenario	elapsed	penetration	time	y$" orbit "${P[@]}" --theta0 3.5 --steps 5
 expect_ok "^t	phase	before	after	kind" simulate "${P[@]}" --x0 0 --y0 0 --v0 0 --t0 4 --t-end 100 --sample 1

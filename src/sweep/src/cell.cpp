@@ -1,0 +1,115 @@
+#include "sweep/cell.hpp"
+
+#include <exception>
+#include <optional>
+
+#include "dfchaos/covering.hpp"
+#include "dfchaos/errors.hpp"
+#include "dfchaos/map_derivative.hpp"
+#include "dfchaos/parameters.hpp"
+#include "dfchaos/phase.hpp"
+#include "dfchaos/return_map.hpp"
+#include "dfchaos/superstable.hpp"
+
+namespace dfchaos::sweep {
+
+const char* status_name(CellStatus s) {
+  switch (s) {
+    case CellStatus::Ok: return "ok";
+    case CellStatus::Inadmissible: return "inadmissible";
+    case CellStatus::Error: return "error";
+  }
+  return "?";
+}
+
+namespace {
+
+/// Runs one group of observables; an exception is recorded under `name`.
+template <class F>
+void guarded(CellValues& v, const char* name, F&& f) {
+  try {
+    f();
+  } catch (const std::exception& e) {
+    v.status = CellStatus::Error;
+    v.error += (v.error.empty() ? "" : "; ") + std::string(name) + ": " + e.what();
+  }
+}
+
+/// The smallest k in 1..max with |T^k(e) - e| <= tol on the circle, 0 if none.
+long long cycle_period(const Parameters& p, double e, const PeriodSettings& s) {
+  double theta = e;
+  for (long long k = 1; k <= s.max; ++k) {
+    theta = T(p, theta);
+    if (circle_distance(theta, e) <= s.tol) return k;
+  }
+  return 0;
+}
+
+/// A message made safe for one TSV field: no tab, no line break.
+std::string one_field(std::string text) {
+  for (auto& ch : text)
+    if (ch == '\t' || ch == '\n' || ch == '\r') ch = ' ';
+  return text.empty() ? "-" : text;
+}
+
+}  // namespace
+
+CellValues evaluate_cell(const Spec& spec, long long index) {
+  CellValues v;
+  v.index = index;
+  v.q_over_a = spec.q_at(index);
+  v.b_over_a = spec.b_at(index);
+  const ObservableSet& obs = spec.observables;
+  std::optional<Parameters> made;
+  guarded(v, "parameters", [&] { made.emplace(spec.a, v.b_over_a * spec.a, v.q_over_a * spec.a); });  // Spec::validate makes it succeed
+  if (!made) return v;
+  const Parameters& p = *made;
+  if (!(p.q() > 2 * p.b())) {  // exactly the condition of Parameters::require_return_map
+    v.status = CellStatus::Inadmissible;
+    return v;
+  }
+  if (obs.has(Observable::Covering)) guarded(v, "covering", [&] { v.covering = lemma4_covering(p).holds ? 1 : 0; });
+  if (obs.has(Observable::Superstable))
+    guarded(v, "superstable", [&] {
+      const SuperstableCheck s = superstable_check(p, static_cast<int>(spec.superstable_scan));
+      v.superstable = s.fixed && s.epsilon > 0 ? 1 : 0;
+      v.epsilon = s.epsilon;
+    });
+  if (obs.needs_orbit())
+    guarded(v, "orbit", [&] {
+      const double t2 = p.t2_required(), t3 = p.t3_required();
+      const double theta0 = t2 + spec.orbit.theta0_fraction * (t3 - t2);
+      const long long total = spec.orbit.transient + spec.orbit.steps;
+      double end = theta0;  // T^(transient + steps)(theta0), needed by the period only
+      if (obs.has(Observable::Lyapunov) || obs.has(Observable::Rate)) {
+        const OrbitStatistics st = orbit_statistics(p, theta0, spec.orbit.transient, spec.orbit.steps, 1);
+        v.lyapunov = st.lyapunov;
+        v.rate = st.penetration_rate;
+        if (obs.has(Observable::Period)) end = T(p, st.tail.back());  // the tail holds T^(total - 1)(theta0)
+      } else {
+        for (long long n = 0; n < total; ++n) end = T(p, end);
+      }
+      if (obs.has(Observable::Period)) v.period = static_cast<double>(cycle_period(p, end, spec.period));
+    });
+  return v;
+}
+
+std::string format_row(const Spec& spec, const CellValues& v) {
+  std::string row = std::to_string(v.index) + '\t' + format_double(v.q_over_a) + '\t' + format_double(v.b_over_a) + '\t' +
+                    status_name(v.status);
+  auto add = [&row](double x) { row += '\t' + format_double(x); };
+  for (Observable o : kAllObservables) {
+    if (!spec.observables.has(o)) continue;
+    switch (o) {
+      case Observable::Covering: add(v.covering); break;
+      case Observable::Superstable: add(v.superstable); add(v.epsilon); break;
+      case Observable::Lyapunov: add(v.lyapunov); break;
+      case Observable::Rate: add(v.rate); break;
+      case Observable::Period: add(v.period); break;
+    }
+  }
+  row += '\t' + one_field(v.error) + '\n';
+  return row;
+}
+
+}  // namespace dfchaos::sweep

@@ -1,0 +1,79 @@
+#include "sweep/options.hpp"
+
+#include "dfchaos/errors.hpp"
+#include "kit/options.hpp"
+#include "sweep/header.hpp"
+
+namespace dfchaos::sweep {
+
+namespace {
+long long count(const std::string& name, const std::string& text, long long lo, long long hi) {
+  const double v = kit::parse_number(name, text, true);
+  if (v < static_cast<double>(lo) || v > static_cast<double>(hi))
+    throw InvalidParameter(name, std::to_string(lo) + " <= " + name + " <= " + std::to_string(hi), v);
+  return static_cast<long long>(v);
+}
+}  // namespace
+
+void SweepArguments::add_to(CLI::App* app) {
+  app->add_option("--a", a, "forcing amplitude, 1e-150 <= a <= 1e150 (default 1; only q/a and b/a matter)")->type_name("FLOAT");
+  app->add_option("--q-range", q_range, "q/a axis lo:hi:n[:lin|log|mid] (every q/a > 0)")->required()->type_name("LO:HI:N[:KIND]");
+  app->add_option("--b-range", b_range, "b/a axis lo:hi:n[:lin|log|mid] (every b/a in (0, 1/2))")->required()->type_name("LO:HI:N[:KIND]");
+  app->add_option("--observables", observables, "comma-separated: covering,superstable,lyapunov,rate,period (default all)")->type_name("LIST");
+  app->add_option("--superstable-scan", superstable_scan, "scan of superstable_check, " + std::to_string(kMinSuperstableScan) + ".." +
+                                                              std::to_string(kMaxSuperstableScan) + " (default 400)")->type_name("N");
+  app->add_option("--theta0", theta0, "orbit start as a fraction f in [0, 1): theta_0 = t2 + f (t3 - t2) (default 0.5)")->type_name("F");
+  app->add_option("--transient", transient, "orbit steps discarded, 0.." + std::to_string(kMaxTransient) + " (default 1000)")->type_name("N");
+  app->add_option("--steps", steps, "orbit steps averaged, 1.." + std::to_string(kMaxSteps) + " (default 1000)")->type_name("N");
+  app->add_option("--period-max", period_max, "largest period searched, 1.." + std::to_string(kMaxPeriod) + " (default 64)")->type_name("K");
+  app->add_option("--period-tol", period_tol, "closing tolerance of a cycle on the circle, 1e-15..1e-3 (default 1e-9)")->type_name("TOL");
+  app->add_option("--shard", shard, "compute only shard i of N: the cells with index mod N = i (0 <= i < N)")->type_name("i/N");
+  auto* o = app->add_option("--out", out, "write to FILE (atomically) instead of stdout")->type_name("FILE");
+  auto* r = app->add_option("--resume", resume, "write to FILE, keeping finished chunks in FILE.chunks/; rerun to continue an interrupted run")
+                ->type_name("FILE");
+  o->excludes(r);
+  app->add_option("--chunk", chunk, "cells per chunk (the unit of --resume), 1.." + std::to_string(kMaxChunk) + " (default " +
+                                        std::to_string(kDefaultChunk) + ")")->type_name("N");
+  app->add_option("--max-chunks", max_chunks, "with --resume: stop after N new chunks, exit status 3 (0: no limit)")->type_name("N");
+  app->add_flag("--progress", progress, "progress on stderr even when it is not a terminal");
+  app->footer(
+      "Output (TSV, stdout unless --out/--resume): '#' header lines (title; dfchaos version, git hash, compiler; the spec as\n"
+      "'key = value'; shard files also '# shard = i/N'), then the column names, then one row per cell in increasing index\n"
+      "(index = i*n_b + j, i over q/a, j over b/a), numbers in %.17g:\n"
+      "  index, q_over_a, b_over_a   the cell\n"
+      "  status       ok | inadmissible (q/a <= 2 b/a) | error (an observable threw; its values nan)\n"
+      "  covering     Lemma 4 / Theorem 1: two disjoint covering segments found (1) or not (0)\n"
+      "  superstable  Theorem 2: T(t2) = t2 with superstable width epsilon > 0 (1) or not (0); then epsilon\n"
+      "  lyapunov     mean ln|T'| over the averaged steps of the orbit (-inf when a step stops)\n"
+      "  rate         mean drilling speed over those steps (delimiter advance / elapsed time)\n"
+      "  period       smallest k <= period-max with |T^k(e) - e| <= period-tol, e = T^(transient+steps)(theta_0); 0 if none\n"
+      "  error        'observable: message' for each observable that threw, '-' if none\n"
+      "Progress with an estimate of the time left goes to stderr (on a terminal, or with --progress).\n"
+      "Exit status: 0 done, 1 writing failed, 2 bad input, 3 stopped by --max-chunks (rerun to continue).\n"
+      "Threads: OMP_NUM_THREADS. The rows do not depend on the thread, shard or rank count.");
+}
+
+RunOptions SweepArguments::resolve() const {
+  RunOptions r;
+  Spec& s = r.spec;
+  s.a = kit::parse_number("a", a, false);
+  s.q_over_a = Range::parse("q-range", q_range);
+  s.b_over_a = Range::parse("b-range", b_range);
+  s.observables = ObservableSet::parse("observables", observables);
+  s.superstable_scan = count("superstable-scan", superstable_scan, kMinSuperstableScan, kMaxSuperstableScan);
+  s.orbit.theta0_fraction = kit::parse_number("theta0", theta0, false);
+  s.orbit.transient = count("transient", transient, 0, kMaxTransient);
+  s.orbit.steps = count("steps", steps, 1, kMaxSteps);
+  s.period.max = count("period-max", period_max, 1, kMaxPeriod);
+  s.period.tol = kit::parse_number("period-tol", period_tol, false);
+  s.validate();
+  if (!shard.empty()) r.shard = Shard::parse("shard", shard, s.cells());
+  r.out = out;
+  r.resume = resume;
+  r.chunk = count("chunk", chunk, 1, kMaxChunk);
+  r.max_chunks = count("max-chunks", max_chunks, 0, kMaxChunks);
+  r.progress = progress;
+  return r;
+}
+
+}  // namespace dfchaos::sweep

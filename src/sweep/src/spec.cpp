@@ -1,0 +1,80 @@
+#include "sweep/spec.hpp"
+
+#include <cmath>
+
+#include "dfchaos/errors.hpp"
+
+namespace dfchaos::sweep {
+
+namespace {
+std::string count_text(long long v) { return std::to_string(v); }
+}  // namespace
+
+void Spec::validate() const {
+  if (!(a >= kMinA && a <= kMaxA)) throw InvalidParameter("a", "1e-150 <= a <= 1e150", a);
+  if (q_over_a.size() < 1 || b_over_a.size() < 1) throw InvalidParameter("q-range", "both ranges are required");
+  q_over_a.require_within("q-range", 0, INFINITY, "every q/a must be positive and finite");
+  b_over_a.require_within("b-range", 0, 0.5, "every b/a must lie in (0, 1/2), where t2 and t3 exist");
+  // The parameters themselves, a·(q/a) and a·(b/a), must be finite and positive (a huge or tiny a
+  // would overflow or underflow them).
+  for (double r : {q_over_a[0], q_over_a[q_over_a.size() - 1], b_over_a[0], b_over_a[b_over_a.size() - 1]})
+    if (!(std::isnormal(a * r) && a * r > 0))
+      throw InvalidParameter("a", "a * (q/a) and a * (b/a) must be finite, positive and normal for every cell", a);
+  // The product is checked in floating point first: n_q and n_b are each at most 10^8.
+  if (static_cast<double>(q_over_a.size()) * static_cast<double>(b_over_a.size()) > static_cast<double>(kMaxCells))
+    throw InvalidParameter("q-range", "n_q * n_b <= " + count_text(kMaxCells) + " cells (got " + count_text(q_over_a.size()) +
+                                          " * " + count_text(b_over_a.size()) + ")");
+  if (superstable_scan < kMinSuperstableScan || superstable_scan > kMaxSuperstableScan)
+    throw InvalidParameter("superstable-scan", count_text(kMinSuperstableScan) + " <= superstable-scan <= " + count_text(kMaxSuperstableScan),
+                           static_cast<double>(superstable_scan));
+  if (!(orbit.theta0_fraction >= 0 && orbit.theta0_fraction < 1))
+    throw InvalidParameter("theta0", "0 <= theta0 < 1 (a fraction of [t2, t3))", orbit.theta0_fraction);
+  if (orbit.transient < 0 || orbit.transient > kMaxTransient)
+    throw InvalidParameter("transient", "0 <= transient <= " + count_text(kMaxTransient), static_cast<double>(orbit.transient));
+  if (orbit.steps < 1 || orbit.steps > kMaxSteps)
+    throw InvalidParameter("steps", "1 <= steps <= " + count_text(kMaxSteps), static_cast<double>(orbit.steps));
+  if (period.max < 1 || period.max > kMaxPeriod)
+    throw InvalidParameter("period-max", "1 <= period-max <= " + count_text(kMaxPeriod), static_cast<double>(period.max));
+  if (!(period.tol >= kMinPeriodTol && period.tol <= kMaxPeriodTol))
+    throw InvalidParameter("period-tol", format_double(kMinPeriodTol) + " <= period-tol <= " + format_double(kMaxPeriodTol), period.tol);
+  if (observables.needs_orbit()) {
+    const double work = static_cast<double>(cells()) *
+                        static_cast<double>(orbit.transient + orbit.steps + (observables.has(Observable::Period) ? period.max : 0));
+    if (work > kMaxOrbitEvaluations)
+      throw InvalidParameter("steps", "cells * (transient + steps + period-max) <= 1e12 evaluations of T (got " + format_double(work) + ")");
+  }
+}
+
+std::vector<std::string> Spec::header_lines() const {
+  std::vector<std::string> h;
+  h.push_back("a = " + format_double(a));
+  h.push_back("q_over_a = " + q_over_a.canonical());
+  h.push_back("b_over_a = " + b_over_a.canonical());
+  h.push_back("observables = " + observables.canonical());
+  if (observables.has(Observable::Superstable)) h.push_back("superstable_scan = " + count_text(superstable_scan));
+  if (observables.needs_orbit()) {
+    h.push_back("theta0 = " + format_double(orbit.theta0_fraction) + "  (theta_0 = t2 + theta0 (t3 - t2))");
+    h.push_back("transient = " + count_text(orbit.transient));
+    h.push_back("steps = " + count_text(orbit.steps));
+  }
+  if (observables.has(Observable::Period)) {
+    h.push_back("period_max = " + count_text(period.max));
+    h.push_back("period_tol = " + format_double(period.tol) +
+                "  (period: the smallest k <= period_max with |T^k(e) - e| <= period_tol on the circle, "
+                "e = T^(transient+steps)(theta_0); 0 if none)");
+  }
+  h.push_back("cells = " + count_text(cells()) + "  (index = i * " + count_text(b_over_a.size()) +
+              " + j, i over q_over_a, j over b_over_a; a = A, q = q_over_a A, b = b_over_a A)");
+  h.push_back("status: ok | inadmissible (q/a <= 2 b/a: T undefined; values nan) | error (an observable threw: "
+              "its values nan, the message in the error column)");
+  return h;
+}
+
+std::vector<std::string> Spec::columns() const {
+  std::vector<std::string> c = {"index", "q_over_a", "b_over_a", "status"};
+  for (auto& name : observables.columns()) c.push_back(name);
+  c.push_back("error");
+  return c;
+}
+
+}  // namespace dfchaos::sweep

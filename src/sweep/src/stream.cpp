@@ -1,0 +1,90 @@
+#include "sweep/stream.hpp"
+
+#include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <random>
+#include <sstream>
+
+#include "dfchaos/errors.hpp"
+#include "kit/output.hpp"
+
+namespace dfchaos::sweep {
+
+namespace fs = std::filesystem;
+
+namespace {
+/// A temporary name beside `path` that no other process or call uses: pid, a counter, a random tag.
+fs::path unique_temporary(const fs::path& path) {
+  static std::atomic<unsigned long> counter{0};
+  static const unsigned long tag = std::random_device{}();
+  char buf[96];
+  std::snprintf(buf, sizeof buf, ".tmp.%ld.%lu.%lx", static_cast<long>(::getpid()), counter++, tag);
+  return fs::path(path.string() + buf);
+}
+}  // namespace
+
+void StdoutStream::write(std::string_view text) {
+  if (text.empty()) return;
+  if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size() || std::ferror(stdout))
+    throw kit::OutputError(std::string("cannot write the output: ") + std::strerror(errno), false);
+}
+
+void StdoutStream::commit() {
+  if (std::fflush(stdout) != 0 || std::ferror(stdout))
+    throw kit::OutputError(std::string("cannot write the output: ") + std::strerror(errno), false);
+}
+
+AtomicFile::AtomicFile(fs::path path) : path_(std::move(path)), tmp_(unique_temporary(path_)) {
+  std::error_code ec;
+  if (fs::is_directory(path_, ec)) throw kit::OutputError("out: " + path_.string() + " is a directory", true);
+  file_ = std::fopen(tmp_.c_str(), "wx");  // exclusive: never reuses a name
+  if (!file_) {
+    const int err = errno;
+    const bool bad_path = err == ENOTDIR || err == ENOENT || err == EACCES || err == EROFS || err == EISDIR || err == EPERM;
+    throw kit::OutputError("out: cannot create a file beside " + path_.string() + ": " + std::strerror(err), bad_path);
+  }
+}
+
+AtomicFile::~AtomicFile() {
+  if (file_) std::fclose(file_);
+  if (!committed_) ::unlink(tmp_.c_str());
+}
+
+void AtomicFile::write(std::string_view text) {
+  if (!file_) throw kit::OutputError("cannot write " + path_.string() + ": already closed", false);
+  if (std::fwrite(text.data(), 1, text.size(), file_) != text.size())
+    throw kit::OutputError("cannot write " + path_.string() + ": " + std::strerror(errno), false);
+}
+
+void AtomicFile::commit() {
+  if (!file_) throw kit::OutputError("cannot write " + path_.string() + ": already closed", false);
+  const bool flushed = std::fflush(file_) == 0 && !std::ferror(file_) && ::fsync(::fileno(file_)) == 0;
+  const int err = errno;
+  const bool closed = std::fclose(file_) == 0;
+  file_ = nullptr;
+  if (!flushed || !closed) throw kit::OutputError("cannot write " + path_.string() + ": " + std::strerror(err), false);
+  if (std::rename(tmp_.c_str(), path_.c_str()) != 0)
+    throw kit::OutputError("cannot rename into " + path_.string() + ": " + std::strerror(errno), false);
+  committed_ = true;
+}
+
+void write_file_atomically(const fs::path& path, std::string_view content) {
+  AtomicFile f(path);
+  f.write(content);
+  f.commit();
+}
+
+std::string read_file(const std::string& option, const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InvalidParameter(option, "cannot read " + path.string() + ": " + std::strerror(errno));
+  std::ostringstream s;
+  s << in.rdbuf();
+  if (in.bad()) throw InvalidParameter(option, "cannot read " + path.string());
+  return s.str();
+}
+
+}  // namespace dfchaos::sweep

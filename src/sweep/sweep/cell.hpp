@@ -1,0 +1,45 @@
+/// @file cell.hpp
+/// @brief One cell of a sweep: its observables, computed and formatted as one row of the output.
+#pragma once
+
+#include <cmath>
+#include <string>
+
+#include "sweep/spec.hpp"
+
+namespace dfchaos::sweep {
+
+/// The status of a cell.
+enum class CellStatus {
+  Ok,            ///< every observable computed
+  Inadmissible,  ///< q/a <= 2 b/a: the return map is not defined (Parameters::require_return_map)
+  Error          ///< an observable threw (e.g. GaveUp: the orbit met eternal stick-slip)
+};
+
+/// The observables of one cell (NaN where not computed).
+struct CellValues {
+  long long index = 0;      ///< the cell
+  double q_over_a = 0;      ///< its q/a
+  double b_over_a = 0;      ///< its b/a
+  CellStatus status = CellStatus::Ok;  ///< ok, inadmissible or error
+  double covering = NAN;    ///< lemma4_covering(p).holds as 0/1
+  double superstable = NAN; ///< fixed && epsilon > 0, as 0/1
+  double epsilon = NAN;     ///< superstable_check(p, scan).epsilon
+  double lyapunov = NAN;    ///< orbit_statistics: Lyapunov exponent (-inf when a step stops)
+  double rate = NAN;        ///< orbit_statistics: penetration rate
+  double period = NAN;      ///< the period of the cycle at the orbit's end, 0 if none (see Spec)
+  std::string error;        ///< "observable: message" of each observable that threw, joined by "; "
+};
+
+/// Computes the observables of cell `index` of `spec`. Never throws for a failure of the cell:
+/// each group (covering; superstable; the orbit behind lyapunov, rate and period) that throws is
+/// recorded in `error` and its values stay NaN; the others are kept.
+CellValues evaluate_cell(const Spec& spec, long long index);
+
+/// The row of a cell: the spec's columns, tab-separated, numbers in %.17g, ending in '\n'.
+std::string format_row(const Spec& spec, const CellValues& v);
+
+/// The name of a status as written in the status column.
+const char* status_name(CellStatus s);
+
+}  // namespace dfchaos::sweep

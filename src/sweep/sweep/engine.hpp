@@ -1,0 +1,24 @@
+/// @file engine.hpp
+/// @brief Computing rows of a sweep in parallel on one machine (OpenMP threads), and the whole
+/// serial run of `dfchaos sweep`.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "kit/grid.hpp"
+#include "sweep/run.hpp"
+#include "sweep/spec.hpp"
+
+namespace dfchaos::sweep {
+
+/// The rows of the given cells, in the given order, computed by OpenMP threads (dynamic schedule:
+/// the cost of a cell varies a lot); one step of `progress` (if any) per cell. Deterministic: the
+/// rows do not depend on the thread count.
+std::vector<std::string> compute_rows(const Spec& spec, const std::vector<long long>& cells, kit::Progress* progress);
+
+/// A whole run on this machine: every chunk of `run` computed by compute_rows and delivered.
+/// @return Run::finish()'s status.
+int run_on_threads(Run& run);
+
+}  // namespace dfchaos::sweep

@@ -1,0 +1,55 @@
+/// @file header.hpp
+/// @brief The header of a sweep's TSV output, and its reading back (by sweep-merge and --resume).
+///
+/// The output is `#` comment lines, then one line of column names, then one row per cell in
+/// increasing index:
+///
+///     # dfchaos sweep: observables over the (q/a, b/a) plane
+///     # dfchaos VERSION (GIT HASH), COMPILER
+///     # key = value                      (the spec: Spec::header_lines())
+///     [# shard = i/N  (...)]             (shard files only)
+///     index  q_over_a  b_over_a  status  <observable columns>  error
+///
+/// Nothing in it differs between an unsharded, a merged, a resumed or an MPI run of the same spec
+/// with the same build: no time, no thread, shard or rank count. Shard files carry one more line,
+/// which the merge checks and drops.
+#pragma once
+
+#include <istream>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "sweep/shard.hpp"
+#include "sweep/spec.hpp"
+
+namespace dfchaos::sweep {
+
+/// The first line of every sweep output.
+inline constexpr std::string_view kTitleLine = "# dfchaos sweep: observables over the (q/a, b/a) plane";
+/// The prefix of the shard line.
+inline constexpr std::string_view kShardPrefix = "# shard = ";
+/// The prefix of the cell-count line.
+inline constexpr std::string_view kCellsPrefix = "# cells = ";
+
+/// The header (comment lines and the column line, each ending in '\n') of the output of `spec`;
+/// with a shard line when `shard` is given.
+std::string header_text(const Spec& spec, const std::optional<Shard>& shard);
+
+/// A header read back from a file.
+struct ParsedHeader {
+  std::string common;            ///< every header line but the shard line, with the column line, as text
+  std::optional<Shard> shard;    ///< from the shard line, if any
+  long long cells = 0;           ///< from the cells line
+  std::size_t fields = 0;        ///< the number of columns
+};
+
+/// Reads the header at the start of `in`, leaving `in` at the first row. Errors name `option` and
+/// `file`. @throws InvalidParameter when the text is not a sweep output.
+ParsedHeader read_header(const std::string& option, const std::string& file, std::istream& in);
+
+/// Whether `row` (without its '\n') is a row of cell `index` with `fields` tab-separated fields.
+bool row_matches(std::string_view row, long long index, std::size_t fields);
+
+}  // namespace dfchaos::sweep

@@ -1,0 +1,48 @@
+/// @file observables.hpp
+/// @brief What a sweep computes at each cell of the (q/a, b/a) plane.
+///
+///  - `covering`: Lemma 4 / Theorem 1 by sampling, lemma4_covering(p).holds (0 or 1);
+///  - `superstable`: Theorem 2, superstable_check(p, scan): \f$T(t_2) = t_2\f$ with a measured
+///    superstable width \f$\varepsilon > 0\f$ (0 or 1), and that width `epsilon`;
+///  - `lyapunov`: \f$\frac1N\sum\ln|T'(\theta_n)|\f$ over the orbit's averaged steps (orbit_statistics;
+///    -inf when a step stops, i.e. the orbit is superstable);
+///  - `rate`: the mean drilling speed, the delimiter's advance over the elapsed time of those steps;
+///  - `period`: the period of the attracting cycle found at the end of the orbit (see Spec).
+/// Their columns always come in this order, whatever the order in which they were asked for.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace dfchaos::sweep {
+
+/// One observable.
+enum class Observable { Covering, Superstable, Lyapunov, Rate, Period };
+
+/// All observables, in column order.
+inline constexpr Observable kAllObservables[] = {Observable::Covering, Observable::Superstable, Observable::Lyapunov,
+                                                  Observable::Rate, Observable::Period};
+
+/// The name as written on the command line and in the header ("covering", ...).
+const char* observable_name(Observable o);
+
+/// A set of observables.
+class ObservableSet {
+ public:
+  /// Parses a comma-separated list of names, e.g. "covering,period". @throws InvalidParameter
+  /// naming `option` for an empty list, an empty or unknown name, or a name given twice.
+  static ObservableSet parse(const std::string& option, const std::string& text);
+
+  bool has(Observable o) const { return (bits_ >> static_cast<int>(o)) & 1U; }  ///< whether o is in the set
+  /// Whether the orbit of T is needed (lyapunov, rate or period).
+  bool needs_orbit() const { return has(Observable::Lyapunov) || has(Observable::Rate) || has(Observable::Period); }
+  /// The canonical list, in column order, e.g. "covering,superstable".
+  std::string canonical() const;
+  /// The data columns of these observables, in order (superstable gives two: superstable, epsilon).
+  std::vector<std::string> columns() const;
+
+ private:
+  unsigned bits_ = 0;
+};
+
+}  // namespace dfchaos::sweep

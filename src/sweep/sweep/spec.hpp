@@ -1,0 +1,80 @@
+/// @file spec.hpp
+/// @brief What one sweep computes: the plane's axes, the observables and their settings. Everything
+/// that determines the output's bytes is here, and nothing else is (no shard, thread or rank count).
+///
+/// **Cells.** Cell `index` = i·n_b + j (i over q/a, slowest; j over b/a), 0 <= index < n_q·n_b. Its
+/// parameters are a = A, q = (q/a)_i·A, b = (b/a)_j·A.
+///
+/// **The orbit** (for lyapunov, rate and period): from \f$\theta_0 = t_2 + f\,(t_3 - t_2)\f$, `transient`
+/// steps of T are discarded, then `steps` steps are averaged (orbit_statistics).
+///
+/// **The period** of the attracting cycle: with \f$\theta_e = T^{\,transient + steps}(\theta_0)\f$ (the
+/// end of that orbit), the smallest \f$k \le\f$ period_max with \f$|T^k(\theta_e) - \theta_e| \le\f$
+/// period_tol on the circle; 0 when there is none (no cycle of period \f$\le\f$ period_max found: a
+/// chaotic orbit, a longer cycle, or a slower approach).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "sweep/observables.hpp"
+#include "sweep/range.hpp"
+
+namespace dfchaos::sweep {
+
+inline constexpr long long kMaxCells = 100'000'000;          ///< most cells in one sweep
+inline constexpr long long kMaxTransient = 10'000'000;       ///< most transient steps per cell
+inline constexpr long long kMaxSteps = 10'000'000;           ///< most averaged steps per cell
+inline constexpr long long kMaxPeriod = 10'000;              ///< largest period searched for
+inline constexpr long long kMinSuperstableScan = 2;          ///< superstable_check's least scan
+inline constexpr long long kMaxSuperstableScan = 1'000'000;  ///< most scan points of superstable_check
+/// Most evaluations of T by the orbits of a whole sweep, cells·(transient + steps + period_max):
+/// 10^12, some 25 core-days at 2 µs per evaluation.
+inline constexpr double kMaxOrbitEvaluations = 1e12;
+inline constexpr double kMinA = 1e-150;  ///< smallest forcing amplitude (squares of a stay normal)
+inline constexpr double kMaxA = 1e150;   ///< largest forcing amplitude (squares of a stay finite)
+inline constexpr double kMinPeriodTol = 1e-15;  ///< smallest period tolerance (about the rounding of T)
+inline constexpr double kMaxPeriodTol = 1e-3;   ///< largest period tolerance
+
+/// The orbit of T followed at each cell (lyapunov, rate, period).
+struct OrbitSettings {
+  double theta0_fraction = 0.5;  ///< f in [0, 1): \f$\theta_0 = t_2 + f(t_3 - t_2)\f$
+  long long transient = 1000;    ///< steps discarded, 0..kMaxTransient
+  long long steps = 1000;        ///< steps averaged, 1..kMaxSteps
+};
+
+/// The search for the period of the attracting cycle.
+struct PeriodSettings {
+  long long max = 64;   ///< largest k tried, 1..kMaxPeriod
+  double tol = 1e-9;    ///< the closing tolerance on the circle
+};
+
+/// A sweep of the (q/a, b/a) plane.
+struct Spec {
+  double a = 1;                  ///< the forcing amplitude (the dynamics depend only on q/a and b/a)
+  Range q_over_a;                ///< first axis (slowest)
+  Range b_over_a;                ///< second axis
+  ObservableSet observables;     ///< what each cell computes
+  long long superstable_scan = 400;  ///< scan of superstable_check (as in thm1_parameter_plane)
+  OrbitSettings orbit;           ///< the orbit (lyapunov, rate, period)
+  PeriodSettings period;         ///< the period search
+
+  /// Checks every bound and admissibility condition before any work: a in [kMinA, kMaxA], and
+  /// a·(q/a), a·(b/a) normal numbers for every cell; every q/a in
+  /// (0, inf) and every b/a in (0, 1/2) (the joint condition q/a > 2 b/a is checked per cell, whose
+  /// status is then `inadmissible`); the cell count, the orbit counts and the total orbit work
+  /// bounded (the k* constants). @throws InvalidParameter naming the option (as on the command line).
+  void validate() const;
+
+  long long cells() const { return q_over_a.size() * b_over_a.size(); }  ///< n_q·n_b
+  double q_at(long long index) const { return q_over_a[index / b_over_a.size()]; }  ///< (q/a) of a cell
+  double b_at(long long index) const { return b_over_a[index % b_over_a.size()]; }  ///< (b/a) of a cell
+
+  /// The header lines `key = value` (without the leading "# ") that describe the spec; identical
+  /// for every run of the same spec, canonical whatever the spelling on the command line.
+  std::vector<std::string> header_lines() const;
+  /// The column names of a row: index, q_over_a, b_over_a, status, the observables' columns, error.
+  std::vector<std::string> columns() const;
+};
+
+}  // namespace dfchaos::sweep

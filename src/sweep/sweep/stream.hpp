@@ -1,0 +1,56 @@
+/// @file stream.hpp
+/// @brief Where a sweep's text goes: standard output, streamed, or a file written atomically
+/// (streamed into a uniquely named temporary beside it, renamed into place only when complete).
+#pragma once
+
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <string_view>
+
+namespace dfchaos::sweep {
+
+/// A destination of text. A failed write throws kit::OutputError (bad_path() false: exit 1).
+class Stream {
+ public:
+  virtual ~Stream() = default;
+  /// Appends text. @throws kit::OutputError
+  virtual void write(std::string_view text) = 0;
+  /// Completes the output (flushes; renames a file into place). @throws kit::OutputError
+  virtual void commit() = 0;
+};
+
+/// Standard output, through a large buffer.
+class StdoutStream final : public Stream {
+ public:
+  void write(std::string_view text) override;
+  void commit() override;
+};
+
+/// A file written atomically: its previous content stays until commit(); an uncommitted temporary
+/// is removed by the destructor (an interrupted run leaves at most a `.tmp.*` file behind).
+class AtomicFile final : public Stream {
+ public:
+  /// Creates the temporary beside `path`. @throws kit::OutputError (bad_path() true when the
+  /// directory does not exist or cannot be written).
+  explicit AtomicFile(std::filesystem::path path);
+  ~AtomicFile() override;
+  AtomicFile(const AtomicFile&) = delete;
+  AtomicFile& operator=(const AtomicFile&) = delete;
+  void write(std::string_view text) override;
+  void commit() override;
+
+ private:
+  std::filesystem::path path_, tmp_;
+  std::FILE* file_ = nullptr;
+  bool committed_ = false;
+};
+
+/// Writes `content` to `path` atomically (an AtomicFile written and committed at once).
+void write_file_atomically(const std::filesystem::path& path, std::string_view content);
+
+/// The whole content of a file. @throws InvalidParameter naming `option` if it cannot be read.
+std::string read_file(const std::string& option, const std::filesystem::path& path);
+
+}  // namespace dfchaos::sweep
