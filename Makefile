@@ -21,7 +21,7 @@ STAMPS      := $(EXPERIMENTS:%=$(BUILD)/stamps/%.ok)
 FIGS        := $(FIGURES:%=$(BUILD)/figures/%.tex)
 
 .PHONY: help deps deps-report configure build build-tools test reproduce experiments figures report manifest claims-map \
-        docs bench plane-hires clean test-sanitize test-clang check-determinism certify-region
+        docs bench bench-snapshot plane-hires clean test-sanitize test-clang check-determinism certify-region
 
 help:
 	@echo "dfchaos make targets:"
@@ -37,6 +37,7 @@ help:
 	@echo "  make docs        Doxygen HTML of the library and experiments in $(BUILD)/docs"
 	@echo "  make bench       T per second vs the GSL odeiv2 baseline, the plane's cost, 1- vs 2-rank sweep:"
 	@echo "                   $(BUILD)/bench/bench.json, bench.tex; time per certified proof: bench_certified.json, .tex"
+	@echo "  make bench-snapshot  make bench, then copy its table with its date into paper/bench-snapshot.tex"
 	@echo "  make certify-region  Lemma 4 proved over parameter boxes on the larger band (CERT_REGION=...)"
 	@echo "  make plane-hires the (q/a, b/a) plane at $(PLANE_N) x $(PLANE_N), every observable, MPI on $(PLANE_RANKS) ranks"
 	@echo "                   when built: $(BUILD)/plane/ (hours: docs/cluster.md; rerun to resume)"
@@ -120,6 +121,16 @@ bench: deps configure
 	@$(CMAKE) --build $(BUILD) -j $(JOBS) --target bench_return_map bench_certified
 	@$(BUILD)/bin/bench_return_map --out=$(BUILD)
 	@$(BUILD)/bin/bench_certified --out=$(BUILD)
+	@printf '\\def\\dfcBenchWhen{%s, %s cores, %s}\n' "$$(date -u +%F)" "$$(nproc)" \
+	  "$$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo | head -1 | sed 's/[\\&%$$#_{}~^]/ /g')" > $(BUILD)/bench/bench-when.tex
+
+# The report's Performance section shows build/bench/bench.tex when `make bench` ran in this build,
+# else the last committed measurement, paper/bench-snapshot.tex (with its date); this refreshes it.
+bench-snapshot: bench
+	@{ echo "% written by make bench-snapshot from $(BUILD)/bench; do not edit"; \
+	   sed 's/dfcBenchWhen/dfcBenchSnapshotWhen/' $(BUILD)/bench/bench-when.tex; \
+	   grep -v '^%' $(BUILD)/bench/bench.tex; } > paper/bench-snapshot.tex.tmp && mv paper/bench-snapshot.tex.tmp paper/bench-snapshot.tex
+	@echo "bench-snapshot: paper/bench-snapshot.tex (commit it)"
 
 # Issue 14: Theorem 1's covering proved over boxes of (b/a, q/a) on a larger band than `make
 # reproduce` certifies (its default is a thin strip that fits the reproduce budget). Rewrites

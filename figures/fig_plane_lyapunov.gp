@@ -1,5 +1,6 @@
 # Figure: the Lyapunov exponent of T over the (q/a, b/a) plane, from the parameter sweep
-#   dfchaos sweep ... --observables lyapunov   ->   build/data/plane_lyapunov.tsv
+#   experiment plane_lyapunov (the cells of `dfchaos sweep --observables lyapunov`)
+#   ->   build/data/plane_lyapunov.tsv
 # Columns used (by name; others are ignored):
 #   q_over_a   q/a of the cell
 #   b_over_a   b/a of the cell (the grid is a product grid, log-spaced in b/a, linear in q/a)
@@ -11,18 +12,9 @@
 # in the key. Where q/a < sin(vartheta0), assumption (2) fails: hatched.
 load figdir."/style.gp"
 set terminal cairolatex pdf input size 14cm,8.6cm
-set output "fig_lyapunov_plane.tex"
+set output "fig_plane_lyapunov.tex"
 f = data."/plane_lyapunov.tsv"
 s0 = 0.7246113537767086   # sin(vartheta0), Eq. (1)
-# Until the sweep writes its table into build/data, draw a visible placeholder instead of failing
-# `make figures` (the report does not include this figure before the sweep is part of the pipeline).
-if (system("test -r '".f."' && echo 1 || echo 0") + 0 == 0) {
-  unset border; unset tics; unset key
-  set label 1 '\small \texttt{build/data/plane\_lyapunov.tsv} not found:' at screen 0.5, screen 0.55 center
-  set label 2 '\small run \texttt{dfchaos sweep \dots{} --observables lyapunov}' at screen 0.5, screen 0.45 center
-  plot [0:1][0:1] NaN notitle
-  exit
-}
 ok(x) = (strcol("status") eq "ok")
 isinf(x) = (x < -1e300)
 # the grid and the counts of each kind of cell (stats obeys ranges: before any is set)
