@@ -246,65 +246,247 @@ constexpr long double kRestOffset = 1e-7L;
   }
 }
 
+/// Where the search looks, from the quadratic envelope \f$\alpha s^2 + \beta s + \gamma \pm R\f$ of f
+/// (\f$R = \sqrt{A^2 + B^2}\f$).
+struct SearchBounds {
+  /// Skip window (ws, we): there \f$U(s) = \alpha s^2 + \beta s + \gamma + R < 0\f$ and \f$f \le U\f$,
+  /// so f has no root (no window when ws = we = 0).
+  long double ws = 0, we = 0;
+  /// End of the search: the horizon, or a root bound beyond which
+  /// \f$f \ge \alpha s^2 + \beta s + \gamma - R \ge 0\f$.
+  long double limit = 0;
+  bool limit_is_bound = false;  ///< limit is a root bound: a root must be found before it
+  bool no_root = false;         ///< U is negative from the start on and never rises: no root at all
+
+  /// Whether the elapsed time s lies in the skip window.
+  bool in_window(long double s) const { return we > 0 && s >= ws && s < we; }
+};
+
+/// The skip window and the limit of a search (SearchBounds), searching up to `horizon`.
+SearchBounds search_bounds(const QuadraticPlusHarmonic& f, long double R, long double horizon) {
+  SearchBounds b;
+  b.limit = horizon;
+  auto shrink = [](long double lo, long double hi, long double& a, long double& e) {
+    const long double margin = 1e-9L * (1 + std::fabs(hi));
+    a = lo + margin;
+    e = hi - margin;
+    if (!(a < e)) a = e = 0;
+  };
+  if (f.alpha > 0) {
+    long double r1, r2;
+    if (quadratic_roots(f.alpha, f.beta, f.gamma + R, r1, r2) && r2 > 0) shrink(std::max(r1, 0.0L), r2, b.ws, b.we);
+    if (quadratic_roots(f.alpha, f.beta, f.gamma - R, r1, r2)) {
+      const long double bound = std::max(r2, 0.0L) * (1 + 1e-9L) + 1e-6L;
+      if (bound < b.limit) { b.limit = bound; b.limit_is_bound = true; }
+    } else {
+      b.limit = std::min(b.limit, 1e-6L);  // lower bound positive everywhere: f >= 0 at once
+      b.limit_is_bound = true;
+    }
+  } else if (f.beta > 0) {
+    const long double s_neg = -(f.gamma + R) / f.beta;
+    if (s_neg > 0) shrink(0, s_neg, b.ws, b.we);
+    const long double bound = std::max((R - f.gamma) / f.beta, 0.0L) * (1 + 1e-9L) + 1e-6L;
+    if (bound < b.limit) { b.limit = bound; b.limit_is_bound = true; }
+  } else if (f.beta < 0 || f.gamma + R < 0) {
+    // U decreases (or is a negative constant): beyond its root there is no root of f.
+    const long double s_neg = f.beta < 0 ? -(f.gamma + R) / f.beta : 0;
+    if (s_neg <= 0) {
+      b.no_root = true;
+      return b;
+    }
+    b.limit = std::min(b.limit, s_neg * (1 + 1e-9L) + 1e-6L);
+  }
+  return b;
+}
+
+/// The phases in [0, 2 pi) where pieces end: 0 and the inflections of f (zeros of f''), ascending
+/// and distinct. Between two consecutive breaks f' is monotone. (A fixed array: this is built once
+/// per search, and a heap allocation here cost more than the arithmetic.)
+struct PieceBreaks {
+  std::array<double, 3> at{};  ///< the breaks, ascending; at[0] = 0
+  int n = 0;                   ///< how many
+
+  /// The end of the piece that starts at `cursor`: the first break after its phase, else the next 0.
+  Instant next_after(const Instant& cursor) const {
+    const double* next = std::upper_bound(at.data(), at.data() + n, cursor.phase);
+    return next == at.data() + n ? Instant{cursor.turn + 1, 0.0} : Instant{cursor.turn, *next};
+  }
+};
+
+/// The piece breaks of f. An inflection computed a few ulp away from the origin's phase (the origin
+/// *is* an inflection, e.g. a start at rest at t2) would leave a sliver piece whose rounded slope
+/// has no meaning: such a break is snapped onto the origin (within 1e-12 on the circle).
+PieceBreaks piece_breaks(const QuadraticPlusHarmonic& f) {
+  PieceBreaks b;
+  double* buf = b.at.data();
+  const int n_inflections = inflection_phases_into(f, buf);
+  for (int i = 0; i < n_inflections; ++i) {
+    const double d = std::fabs(buf[i] - f.origin.phase);
+    if (std::min(d, two_pi - d) < 1e-12) buf[i] = f.origin.phase;
+  }
+  // 0 first (phases lie in [0, 2 pi)), then the inflections in ascending order (the snap may
+  // have swapped two inflections that were within 1e-12 of each other).
+  if (n_inflections == 2 && buf[1] < buf[0]) std::swap(buf[0], buf[1]);
+  for (int i = n_inflections; i > 0; --i) buf[i] = buf[i - 1];
+  buf[0] = 0.0;
+  b.n = static_cast<int>(std::unique(buf, buf + n_inflections + 1) - buf);
+  return b;
+}
+
+/// The polynomial part carried from piece to piece far from the origin (see roots.hpp): at the
+/// instant `at`, \f$\alpha(s_0+u)^2 + \beta(s_0+u) + \gamma = P_0 + P_1 u + \alpha u^2\f$.
+struct Recentring {
+  bool valid = false;  ///< P0, P1 hold for the instant `at`
+  Instant at;          ///< where they hold
+  long double P0 = 0;  ///< the polynomial at `at`
+  long double P1 = 0;  ///< its slope at `at`
+  int steps = 0;       ///< carried steps since the last exact re-centring
+
+  /// The coefficients (base, c1, c0) of the polynomial part on the piece starting at `cursor`
+  /// (elapsed time s0), written as \f$(\alpha s + c_1) s + c_0\f$ with \f$s = \mathrm{base} + u\f$:
+  /// directly (base = s0, c1 = beta, c0 = gamma) below kRecentreFrom; beyond, re-centred (base = 0,
+  /// c1 = P1, c0 = P0), exactly (double-double) at the first far piece and every kRecentreEvery
+  /// pieces, in between carried over from the previous piece (carry()).
+  void coefficients(const QuadraticPlusHarmonic& f, const Instant& cursor, long double s0, long double& base, long double& c1,
+                    long double& c0) {
+    base = s0;
+    c1 = f.beta + f.beta_tail;
+    c0 = f.gamma;
+    if (s0 >= kRecentreFrom) {
+      base = 0;
+      if (valid && at == cursor && steps < kRecentreEvery) {
+        c0 = P0;
+        c1 = P1;
+        ++steps;
+      } else {
+        std::tie(c0, c1) = recentred(f, cursor);
+        steps = 0;
+      }
+    }
+  }
+  /// Carries re-centred coefficients (c0, c1) at `from` over a piece to `to` in long double:
+  /// \f$P_0 \mathrel{+}= (P_1 + \alpha L) L\f$, \f$P_1 \mathrel{+}= 2\alpha L\f$ (each step adds ~1e-19 a:
+  /// the pieces there have \f$P_0, P_1 = O(a)\f$).
+  void carry(const QuadraticPlusHarmonic& f, const Instant& from, const Instant& to, long double c0, long double c1) {
+    const long double Lp = elapsed(from, to);
+    P0 = c0 + (c1 + f.alpha * Lp) * Lp;
+    P1 = c1 + 2 * f.alpha * Lp;
+    at = to;
+    valid = true;
+  }
+};
+
+/// f on one piece, as a function of the time u elapsed since the piece's start (phase phi0): the
+/// polynomial part \f$(\alpha s + c_1) s + c_0\f$, \f$s = \mathrm{base} + u\f$ (Recentring::coefficients),
+/// plus the harmonic part. One formula, no branch in the evaluations.
+struct PieceFunction {
+  const QuadraticPlusHarmonic& f;
+  double phi0;       ///< phase of the piece's start
+  long double base;  ///< s at the piece's start, or 0 when re-centred
+  long double c1;    ///< linear coefficient (beta, or P1)
+  long double c0;    ///< constant (gamma, or P0)
+
+  long double poly(double u) const {
+    const long double s = base + u;
+    return (f.alpha * s + c1) * s + c0;
+  }
+  long double dpoly(double u) const { return 2 * f.alpha * (base + u) + c1; }
+  /// \f$f(u)\f$.
+  long double value(double u) const {
+    return poly(u) + static_cast<long double>(f.A * std::sin(phi0 + u) + f.B * std::cos(phi0 + u));
+  }
+  /// \f$f'(u)\f$.
+  long double slope(double u) const {
+    return dpoly(u) + static_cast<long double>(f.A * std::cos(phi0 + u) - f.B * std::sin(phi0 + u));
+  }
+  /// \f$(f, f')\f$ from one sine-cosine evaluation.
+  std::pair<long double, long double> value_slope(double u) const {
+    const double sn = std::sin(phi0 + u), cs = std::cos(phi0 + u);
+    return {poly(u) + static_cast<long double>(f.A * sn + f.B * cs), dpoly(u) + static_cast<long double>(f.A * cs - f.B * sn)};
+  }
+  /// \f$(f', f'')\f$ from one sine-cosine evaluation.
+  std::pair<long double, long double> slope_curvature(double u) const {
+    const double sn = std::sin(phi0 + u), cs = std::cos(phi0 + u);
+    return {dpoly(u) + static_cast<long double>(f.A * cs - f.B * sn), 2 * f.alpha - static_cast<long double>(f.A * sn + f.B * cs)};
+  }
+};
+
+/// The first up-crossing of f on one piece [0, L] (f' monotone there), or nothing. `f_start` is f at
+/// u = 0 when known better than by a direct evaluation (after the rest region), else that
+/// evaluation; `pieces` is the work count to report with a crossing.
+std::optional<UpCrossing> search_piece(const QuadraticPlusHarmonic& f, const PieceFunction& pf, const Instant& cursor, long double s0,
+                                       double L, std::optional<long double> left_value, long double R, long pieces) {
+  auto val_der = [&pf](double u) { return pf.value_slope(u); };
+  auto crossing_at = [&](double u) {
+    UpCrossing r;
+    r.t = advance(cursor, u);
+    r.s = s0 + u;
+    r.slope = static_cast<double>(pf.slope(u));
+    r.pieces = pieces;
+    return r;
+  };
+  const double phi0 = pf.phi0;
+  // Value and slope at both ends (one sine-cosine evaluation each).
+  const auto [f_end, d1] = val_der(L);
+  const auto [f_start_computed, d0] = val_der(0);
+  const long double f_start = left_value ? *left_value : f_start_computed;
+  // On a piece f' is monotone, so f is increasing, decreasing, convex with one minimum or
+  // concave with one maximum. Two shortcuts avoid the split point m below:
+  // (1) f(0) < 0 <= f(L): in every one of these shapes there is exactly one up-crossing in
+  //     (0, L], with f < 0 before it and f >= 0 after it, so the sign bracket [0, L] is valid
+  //     (the solver bisects where f' < 0).
+  if (f_start < 0 && f_end >= 0) return crossing_at(solve_increasing(val_der, 0, L, phi0, f_start, f_end));
+  // (2) f < 0 at both ends: only a concave piece can rise above 0 in between. Its graph lies
+  //     below the tangent lines at both ends, so its maximum is at most where the tangents
+  //     cross; the piece is skipped when that bound is negative beyond a rounding margin (the
+  //     terms of f are up to alpha s^2 in size).
+  if (f_start < 0 && f_end < 0) {
+    if (!(d0 > 0 && d1 < 0)) return std::nullopt;
+    const long double s_far = s0 + L;
+    const long double margin = 1e-12L * (R + f.alpha * s_far * s_far + std::fabs(f.beta) * s_far + std::fabs(f.gamma) + 1);
+    const long double u_cross = std::clamp((f_end - d1 * L - f_start) / (d0 - d1), 0.0L, static_cast<long double>(L));
+    if (std::min(f_start + d0 * u_cross, f_end + d1 * (u_cross - L)) < -margin) return std::nullopt;
+  }
+  // The general case: split at the zero m of f' and look for a crossing from below in each
+  // monotone part.
+  double sub[3] = {0, L, L};
+  int nsub = 1;
+  if ((d0 > 0 && d1 < 0) || (d0 < 0 && d1 > 0)) {
+    auto der_curv = [&pf](double u) { return pf.slope_curvature(u); };
+    const double m = d0 > 0 ? solve_increasing(
+                                  [&](double u) {
+                                    const auto [d, c] = der_curv(u);
+                                    return std::pair<long double, long double>{-d, -c};
+                                  },
+                                  0, L, phi0, -d0, -d1)
+                            : solve_increasing(der_curv, 0, L, phi0, d0, d1);
+    sub[1] = m;
+    nsub = 2;
+  }
+  for (int i = 0; i < nsub; ++i) {
+    const double u0 = sub[i], u1 = sub[i + 1];
+    const long double dl = (i == 0) ? d0 : 0.0L, dr = (i + 1 == nsub) ? d1 : 0.0L;
+    if (!(dl + dr > 0) || u1 <= u0) continue;  // f decreasing (or constant) here: no crossing from below
+    const long double f1 = u1 == L ? f_end : pf.value(u1);
+    if (f1 < 0) continue;
+    const long double f0 = u0 == 0 ? f_start : pf.value(u0);
+    if (f0 >= 0) return crossing_at(u0);  // a start not strictly below zero
+    return crossing_at(solve_increasing(val_der, u0, u1, phi0, f0, f1));
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 std::optional<UpCrossing> first_upcrossing(const QuadraticPlusHarmonic& f, const SearchLimits& limits) {
   if (f.alpha < 0) throw std::logic_error("first_upcrossing: alpha must be >= 0");
   const long double R = std::hypot(f.A, f.B);
-
-  // Skip window (ws, we): there U(s) = alpha s^2 + beta s + gamma + R < 0 >= f, so no root.
-  long double ws = 0, we = 0;
-  // Root bound: f(s) >= alpha s^2 + beta s + gamma - R >= 0 for s >= s_bound.
-  long double limit = limits.horizon;
-  bool limit_is_bound = false;
-  auto shrink = [](long double lo, long double hi, long double& a, long double& b) {
-    const long double margin = 1e-9L * (1 + std::fabs(hi));
-    a = lo + margin;
-    b = hi - margin;
-    if (!(a < b)) a = b = 0;
-  };
-  if (f.alpha > 0) {
-    long double r1, r2;
-    if (quadratic_roots(f.alpha, f.beta, f.gamma + R, r1, r2) && r2 > 0) shrink(std::max(r1, 0.0L), r2, ws, we);
-    if (quadratic_roots(f.alpha, f.beta, f.gamma - R, r1, r2)) {
-      const long double bound = std::max(r2, 0.0L) * (1 + 1e-9L) + 1e-6L;
-      if (bound < limit) { limit = bound; limit_is_bound = true; }
-    } else {
-      limit = std::min(limit, 1e-6L);  // lower bound positive everywhere: f >= 0 at once
-      limit_is_bound = true;
-    }
-  } else if (f.beta > 0) {
-    const long double s_neg = -(f.gamma + R) / f.beta;
-    if (s_neg > 0) shrink(0, s_neg, ws, we);
-    const long double bound = std::max((R - f.gamma) / f.beta, 0.0L) * (1 + 1e-9L) + 1e-6L;
-    if (bound < limit) { limit = bound; limit_is_bound = true; }
-  } else if (f.beta < 0 || f.gamma + R < 0) {
-    // U decreases (or is negative constant): beyond its root there is no root of f.
-    const long double s_neg = f.beta < 0 ? -(f.gamma + R) / f.beta : 0;
-    if (s_neg <= 0) return std::nullopt;
-    limit = std::min(limit, s_neg * (1 + 1e-9L) + 1e-6L);
-  }
-  if (!std::isfinite(static_cast<double>(limit)))
+  const SearchBounds bounds = search_bounds(f, R, limits.horizon);
+  if (bounds.no_root) return std::nullopt;
+  if (!std::isfinite(static_cast<double>(bounds.limit)))
     throw GaveUp("first_upcrossing: no horizon and no root bound; the search would not end");
-
-  // The piece boundaries on one period: the inflections and 0 (a fixed array: this runs once per
-  // evaluation of T1, and a heap allocation here cost more than the arithmetic).
-  std::array<double, 3> break_buf{};
-  const int n_inflections = inflection_phases_into(f, break_buf.data());
-  // An inflection computed a few ulp away from the origin's phase (the origin *is* an inflection,
-  // e.g. a start at rest at t2) would leave a sliver piece whose rounded slope has no meaning:
-  // snap such a break onto the origin.
-  for (int i = 0; i < n_inflections; ++i) {
-    const double d = std::fabs(break_buf[i] - f.origin.phase);
-    if (std::min(d, two_pi - d) < 1e-12) break_buf[i] = f.origin.phase;
-  }
-  // 0 first (phases lie in [0, 2 pi)), then the inflections in ascending order (the snap may
-  // have swapped two inflections that were within 1e-12 of each other).
-  if (n_inflections == 2 && break_buf[1] < break_buf[0]) std::swap(break_buf[0], break_buf[1]);
-  for (int i = n_inflections; i > 0; --i) break_buf[i] = break_buf[i - 1];
-  break_buf[0] = 0.0;
-  const auto breaks_begin = break_buf.begin();
-  const auto breaks_end = std::unique(break_buf.begin(), break_buf.begin() + n_inflections + 1);
+  const long double limit = bounds.limit;
+  const PieceBreaks breaks = piece_breaks(f);
 
   Instant cursor = f.origin;
   long double s_cursor = 0;
@@ -312,11 +494,7 @@ std::optional<UpCrossing> first_upcrossing(const QuadraticPlusHarmonic& f, const
   // the rest region below); -1 stands for "known negative, value not needed" (Case A).
   std::optional<long double> left_value;
   long pieces = 0;
-  // Re-centred polynomial carried from piece to piece (see the piece loop).
-  bool rc_valid = false;
-  Instant rc_at;
-  long double rc_P0 = 0, rc_P1 = 0;
-  int rc_steps = 0;
+  Recentring recentring;
   if (f.starts_at_rest) {
     const RestStart rs = rest_start(f, R, limit);
     if (rs.kind == RestStart::Root) return rs.root;
@@ -326,8 +504,8 @@ std::optional<UpCrossing> first_upcrossing(const QuadraticPlusHarmonic& f, const
     left_value = rs.left_value;
   }
   while (true) {
-    if (we > 0 && s_cursor >= ws && s_cursor < we) {
-      cursor = advance(f.origin, std::min(we, limit));  // (a window may reach far beyond a horizon)
+    if (bounds.in_window(s_cursor)) {
+      cursor = advance(f.origin, std::min(bounds.we, limit));  // (a window may reach far beyond a horizon)
       s_cursor = elapsed(f.origin, cursor);
       left_value.reset();
     }
@@ -336,129 +514,25 @@ std::optional<UpCrossing> first_upcrossing(const QuadraticPlusHarmonic& f, const
       throw GaveUp("first_upcrossing: gave up after " + std::to_string(limits.max_pieces) + " monotone pieces");
 
     // The piece [cursor, end]: up to the next inflection or period boundary, the limit, or the window.
-    auto next = std::upper_bound(breaks_begin, breaks_end, cursor.phase);
-    Instant end = next == breaks_end ? Instant{cursor.turn + 1, 0.0} : Instant{cursor.turn, *next};
+    Instant end = breaks.next_after(cursor);
     long double s_end = elapsed(f.origin, end);
     long double cut = limit;
-    if (we > 0 && ws > s_cursor) cut = std::min(cut, ws);
+    if (bounds.we > 0 && bounds.ws > s_cursor) cut = std::min(cut, bounds.ws);
     if (s_end > cut) {
       end = advance(f.origin, cut);
       s_end = cut;
     }
     const double L = static_cast<double>(elapsed(cursor, end));
-    const double phi0 = cursor.phase;
-    const long double s0 = s_cursor;
-    // The polynomial part on this piece, (alpha s + c1) s + c0 with s = base + u: directly
-    // (base = s0, c1 = beta, c0 = gamma), or re-centred at s0 far from the origin (base = 0,
-    // c1 = P1, c0 = P0; see roots.hpp). One formula, no branch in the evaluations.
-    long double base = s0, c1 = f.beta + f.beta_tail, c0 = f.gamma;
-    if (s0 >= kRecentreFrom) {
-      base = 0;
-      // Exactly (double-double) at the first far piece and every kRecentreEvery pieces; in
-      // between carried over from the previous piece in long double, P0 += (P1 + alpha L) L,
-      // P1 += 2 alpha L (each step adds ~1e-19 a: the pieces there have P0, P1 = O(a)).
-      if (rc_valid && rc_at == cursor && rc_steps < kRecentreEvery) {
-        c0 = rc_P0;
-        c1 = rc_P1;
-        ++rc_steps;
-      } else {
-        std::tie(c0, c1) = recentred(f, cursor);
-        rc_steps = 0;
-      }
-    }
-    auto poly = [&](double u) -> long double {
-      const long double s = base + u;
-      return (f.alpha * s + c1) * s + c0;
-    };
-    auto dpoly = [&](double u) -> long double { return 2 * f.alpha * (base + u) + c1; };
-    auto val = [&](double u) -> long double { return poly(u) + static_cast<long double>(f.A * std::sin(phi0 + u) + f.B * std::cos(phi0 + u)); };
-    auto der = [&](double u) -> long double { return dpoly(u) + static_cast<long double>(f.A * std::cos(phi0 + u) - f.B * std::sin(phi0 + u)); };
-    // Value and slope, or slope and curvature, from one sine-cosine evaluation.
-    auto val_der = [&](double u) {
-      const double sn = std::sin(phi0 + u), cs = std::cos(phi0 + u);
-      return std::pair<long double, long double>{poly(u) + static_cast<long double>(f.A * sn + f.B * cs),
-                                                 dpoly(u) + static_cast<long double>(f.A * cs - f.B * sn)};
-    };
-    auto der_curv = [&](double u) {
-      const double sn = std::sin(phi0 + u), cs = std::cos(phi0 + u);
-      return std::pair<long double, long double>{dpoly(u) + static_cast<long double>(f.A * cs - f.B * sn),
-                                                 2 * f.alpha - static_cast<long double>(f.A * sn + f.B * cs)};
-    };
-
-    auto crossing_at = [&](double u) {
-      UpCrossing r;
-      r.t = advance(cursor, u);
-      r.s = s0 + u;
-      r.slope = static_cast<double>(der(u));
-      r.pieces = pieces;
-      return r;
-    };
-    if (L > 0) {
-      // Value and slope at both ends (one sine-cosine evaluation each).
-      const auto [f_end, d1] = val_der(L);
-      const auto [f_start_computed, d0] = val_der(0);
-      const long double f_start = left_value ? *left_value : f_start_computed;
-      // On a piece f' is monotone, so f is increasing, decreasing, convex with one minimum or
-      // concave with one maximum. Two shortcuts avoid the split point m below:
-      // (1) f(0) < 0 <= f(L): in every one of these shapes there is exactly one up-crossing in
-      //     (0, L], with f < 0 before it and f >= 0 after it, so the sign bracket [0, L] is valid
-      //     (the solver bisects where f' < 0).
-      if (f_start < 0 && f_end >= 0) return crossing_at(solve_increasing(val_der, 0, L, phi0, f_start, f_end));
-      // (2) f < 0 at both ends: only a concave piece can rise above 0 in between. Its graph lies
-      //     below the tangent lines at both ends, so its maximum is at most where the tangents
-      //     cross; the piece is skipped when that bound is negative beyond a rounding margin (the
-      //     terms of f are up to alpha s^2 in size).
-      bool skip = false;
-      if (f_start < 0 && f_end < 0) {
-        if (!(d0 > 0 && d1 < 0)) {
-          skip = true;
-        } else {
-          const long double s_far = s0 + L;
-          const long double margin = 1e-12L * (R + f.alpha * s_far * s_far + std::fabs(f.beta) * s_far + std::fabs(f.gamma) + 1);
-          const long double u_cross = std::clamp((f_end - d1 * L - f_start) / (d0 - d1), 0.0L, static_cast<long double>(L));
-          skip = std::min(f_start + d0 * u_cross, f_end + d1 * (u_cross - L)) < -margin;
-        }
-      }
-      // The general case: split at the zero m of f' and look for a crossing from below in each
-      // monotone part.
-      if (!skip) {
-        double sub[3] = {0, L, L};
-        int nsub = 1;
-        if ((d0 > 0 && d1 < 0) || (d0 < 0 && d1 > 0)) {
-          const double m = d0 > 0 ? solve_increasing(
-                                        [&](double u) {
-                                          const auto [d, c] = der_curv(u);
-                                          return std::pair<long double, long double>{-d, -c};
-                                        },
-                                        0, L, phi0, -d0, -d1)
-                                  : solve_increasing(der_curv, 0, L, phi0, d0, d1);
-          sub[1] = m;
-          nsub = 2;
-        }
-        for (int i = 0; i < nsub; ++i) {
-          const double u0 = sub[i], u1 = sub[i + 1];
-          const long double dl = (i == 0) ? d0 : 0.0L, dr = (i + 1 == nsub) ? d1 : 0.0L;
-          if (!(dl + dr > 0) || u1 <= u0) continue;  // f decreasing (or constant) here: no crossing from below
-          const long double f1 = u1 == L ? f_end : val(u1);
-          if (f1 < 0) continue;
-          const long double f0 = u0 == 0 ? f_start : val(u0);
-          if (f0 >= 0) return crossing_at(u0);  // a start not strictly below zero
-          return crossing_at(solve_increasing(val_der, u0, u1, phi0, f0, f1));
-        }
-      }
-    }
-    if (base == 0) {  // re-centred: carry P0, P1 over to the next piece
-      const long double Lp = elapsed(cursor, end);
-      rc_P0 = c0 + (c1 + f.alpha * Lp) * Lp;
-      rc_P1 = c1 + 2 * f.alpha * Lp;
-      rc_at = end;
-      rc_valid = true;
-    }
+    PieceFunction pf{f, cursor.phase, 0, 0, 0};
+    recentring.coefficients(f, cursor, s_cursor, pf.base, pf.c1, pf.c0);
+    if (L > 0)
+      if (auto root = search_piece(f, pf, cursor, s_cursor, L, left_value, R, pieces)) return root;
+    if (pf.base == 0) recentring.carry(f, cursor, end, pf.c0, pf.c1);  // re-centred: carry P0, P1 over
     cursor = end;
     s_cursor = s_end;
     left_value.reset();
   }
-  if (limit_is_bound && limit < limits.horizon)
+  if (bounds.limit_is_bound && limit < limits.horizon)
     throw std::logic_error("first_upcrossing: no root found before the guaranteed bound (a bug)");
   return std::nullopt;
 }
