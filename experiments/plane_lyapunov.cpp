@@ -68,7 +68,7 @@ const Experiment experiment{
       const long long n_cells = spec.cells();
       run.out.claim("plane.lyapunov_both_regimes", "Theorems 1 and 2", EvidenceKind::Sampled,
                     "Over the plane, orbits with a positive Lyapunov exponent (the expanding regime of Theorem 1) and orbits "
-                    "that meet a stop, lambda = -inf (the superstable regime of Theorem 2), both occur.")
+                    "that meet a stop, where lambda is minus infinity (the superstable regime of Theorem 2), both occur.")
           .ours()
           .evidence("cells", n_cells).evidence("positive", n_pos).evidence("stop", n_stop).evidence("finite_nonpositive", n_neg)
           .evidence("errors", n_err).evidence("max_lyapunov", lmax).evidence("max_at_q_over_a", qmax).evidence("max_at_b_over_a", bmax)

@@ -57,8 +57,9 @@ def main():
             sys.exit(f"claims_map: experiment {name} has no {claims_file}: run it first (make experiments)")
         desc["claims"] = json.load(open(claims_file))["claims"]
         for t in desc["tests"]:
-            if not os.path.exists(os.path.join(root, "tests", t + ".cpp")):
-                sys.exit(f"claims_map: experiment {name} declares test suite {t}, but tests/{t}.cpp does not exist")
+            # a GoogleTest suite (tests/T.cpp) or a script test (tests/T.sh, tests/T.py)
+            if not any(os.path.exists(os.path.join(root, "tests", t + ext)) for ext in (".cpp", ".sh", ".py")):
+                sys.exit(f"claims_map: experiment {name} declares test {t}, but none of tests/{t}.cpp, .sh, .py exists")
         desc["figures"] = sorted(os.path.basename(g)[:-3] for g in glob.glob(os.path.join(root, "figures", "fig_*.gp"))
                                  if re.search(r"[/\"']" + re.escape(name) + r"[-.\"']", open(g).read()))
         experiments[name] = desc
