@@ -46,7 +46,7 @@ set format cb '$%g$'
 set palette defined (lmin "#2166ac", lmin/2 "#92c5de", 0 "#f7f7f7", lmax/3 "#f4a582", lmax "#b2182b")
 # q/a < sin(vartheta0): hatched, over the cells
 set object 1 rect from graph 0, graph 0 to first s0, graph 1 fc rgb "#707070" fs transparent pattern 5 border lc rgb "#707070" front
-if (QQ_min - dq/2 >= s0) { unset object 1 }
+if (QQ_min - dq/2 >= s0 - 1e-9) { unset object 1 }
 plot f using "q_over_a":(log10(column("b_over_a"))):(ok(0) && !isinf(column("lyapunov")) ? column("lyapunov") : NaN) w image pixels notitle, \
      f using "q_over_a":(ok(0) && isinf(column("lyapunov")) ? log10(column("b_over_a")) : NaN):(dq/2):(db/2) \
        w boxxyerror fs solid 1.0 noborder fc rgb c_stop notitle, \
@@ -62,7 +62,10 @@ set object 11 rect center screen 0.06, screen ky size screen 0.018, screen 0.03 
 set label 11 sprintf('\small $\lambda=-\infty$: a step with $T''=0$ (%d cells)', int(NINF_sum)) at screen 0.075, screen ky left front
 set object 12 rect center screen 0.56, screen ky size screen 0.018, screen 0.03 fc rgb "black" fs solid noborder front
 set label 12 sprintf('\small failed (%d)', int(NFAIL_sum)) at screen 0.575, screen ky left front
-set object 13 rect center screen 0.71, screen ky size screen 0.03, screen 0.03 fc rgb "#707070" fs transparent pattern 5 border lc rgb "#707070" front
-set label 13 '\small $q/a<\sin\vartheta_0$: (2) fails' at screen 0.735, screen ky left front
+# the hatched entry only when the grid reaches below sin(vartheta0)
+if (QQ_min - dq/2 < s0 - 1e-9) {
+  set object 13 rect center screen 0.71, screen ky size screen 0.03, screen 0.03 fc rgb "#707070" fs transparent pattern 5 border lc rgb "#707070" front
+  set label 13 '\small $q/a<\sin\vartheta_0$: (2) fails' at screen 0.735, screen ky left front
+}
 plot NaN notitle
 unset multiplot
