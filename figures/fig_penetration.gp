@@ -37,10 +37,9 @@ set format y '$10^{%T}$'
 plot f using "b_over_a":"rate_mean":"rate_min":"rate_max" w yerrorbars pt 7 ps 0.35 lw 0.8 lc rgb c_free notitle
 
 # ---- (b)
-set lmargin at screen 0.395; set rmargin at screen 0.615
+set lmargin at screen 0.41; set rmargin at screen 0.615
 set title '(b) $q/a=0.85$'
-unset label 90
-set ylabel 'rate$/(b/a)$' offset 0.8,0
+set label 90 'rate$/(b/a)$' at screen 0.343, graph 0.5 rotate center
 unset logscale y
 set format y '$%.1f$'
 set yrange [0:*]
@@ -53,7 +52,7 @@ plot f using "b_over_a":(column("rate_mean")/column("b_over_a")):(column("rate_m
 unset logscale x
 set lmargin at screen 0.735; set rmargin at screen 0.88
 set title '(c) the plane'
-set xlabel '$q/a$'; unset ylabel
+set xlabel '$q/a$'; unset ylabel; unset label 90
 set label 91 '$b/a$' at screen 0.65, graph 0.5 rotate center
 set xrange [Q_min - dq/2 : Q_max + dq/2]; set yrange [B_min - db/2 : B_max + db/2]
 set xtics 0.1 format '$%.1f$'

@@ -40,7 +40,8 @@ set ytics ('$10^{-5}$' -5, '$10^{-4}$' -4, '$10^{-3}$' -3, '$10^{-2}$' -2, '$10^
 set mytics 10
 set grid noxtics noytics
 set colorbox user origin screen 0.77, screen 0.25 size screen 0.02, screen 0.71
-set cblabel 'finite $\lambda=\langle\ln|T''|\rangle$' offset 0.5,0
+# the colour bar's label placed by hand, clear of its tick labels (gnuplot misjudges the width of TeX text)
+set label 95 'finite $\lambda=\langle\ln|T''|\rangle$' at screen 0.855, screen 0.605 rotate center
 set cbrange [lmin:lmax]
 set format cb '$%g$'
 set palette defined (lmin "#2166ac", lmin/2 "#92c5de", 0 "#f7f7f7", lmax/3 "#f4a582", lmax "#b2182b")
@@ -54,7 +55,7 @@ plot f using "q_over_a":(log10(column("b_over_a"))):(ok(0) && !isinf(column("lya
        w boxxyerror fs solid 1.0 noborder fc rgb "black" notitle
 
 # ---- the key of the categories, drawn by hand under the plot
-unset border; unset tics; unset xlabel; unset ylabel; unset colorbox; unset object 1
+unset border; unset tics; unset xlabel; unset ylabel; unset colorbox; unset object 1; unset label 95
 set lmargin at screen 0; set rmargin at screen 1; set bmargin at screen 0; set tmargin at screen 1
 set xrange [0:1]; set yrange [0:1]
 ky = 0.05

@@ -12,13 +12,15 @@ set multiplot
 set bmargin at screen 0.16; set tmargin at screen 0.9
 s0 = 0.7246113537767086   # sin(vartheta0), Eq. (1)
 set xlabel '$q/a$'
-set ylabel '$b_0/a$' offset 1,0
+# y labels placed by hand (label 90, per panel): gnuplot misjudges the width of TeX tick labels
+unset ylabel
 set logscale y
 set format y '$10^{%T}$'
 set format x '$%.2f$'
 
 # ---- Lemma 1
-set lmargin at screen 0.085; set rmargin at screen 0.425
+set lmargin at screen 0.105; set rmargin at screen 0.42
+set label 90 '$b_0/a$' at screen 0.02, graph 0.5 rotate center
 set title 'Lemma 1'
 set xrange [0.6:1]; set xtics 0.1
 set yrange [1e-4:1]
@@ -32,7 +34,8 @@ plot f1 using "q_over_a":(column("b0_lemma1") > 0 ? column("b0_lemma1") : NaN) w
 unset object 1; unset label 1; unset label 2
 
 # ---- Lemma 4, on its grid
-set lmargin at screen 0.53; set rmargin at screen 0.79
+set lmargin at screen 0.565; set rmargin at screen 0.79
+set label 90 '$b_0/a$' at screen 0.475, graph 0.5 rotate center
 set title 'Lemma 4 on the grid'
 f4 = data."/lemma4_coverage.tsv"
 g4 = data."/lemma4_coverage-grid.tsv"
