@@ -9,7 +9,7 @@ set terminal cairolatex pdf input size 15cm,11.5cm
 set output "fig_bifurcation.tex"
 orb = data."/bifurcation_diagram-orbits.tsv"
 lya = data."/bifurcation_diagram-lyapunov.tsv"
-s0 = 0.7246113537767086   # sin(vartheta0), Eq. (1)
+s0 = sin_vartheta0   # Eq. (1), from eq1_vartheta0 (style.gp)
 # ranges of the data (stats obeys ranges: read before any is set)
 stats lya using (strcol("sweep") eq "b" ? column("b_over_a") : NaN) name "BX" nooutput
 stats lya using (strcol("sweep") eq "q" ? column("q_over_a") : NaN) name "QX" nooutput

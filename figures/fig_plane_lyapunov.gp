@@ -14,7 +14,7 @@ load figdir."/style.gp"
 set terminal cairolatex pdf input size 14cm,8.6cm
 set output "fig_plane_lyapunov.tex"
 f = data."/plane_lyapunov.tsv"
-s0 = 0.7246113537767086   # sin(vartheta0), Eq. (1)
+s0 = sin_vartheta0   # Eq. (1), from eq1_vartheta0 (style.gp)
 ok(x) = (strcol("status") eq "ok")
 isinf(x) = (x < -1e300)
 # the grid and the counts of each kind of cell (stats obeys ranges: before any is set)

@@ -10,7 +10,7 @@ set terminal cairolatex pdf input size 15cm,7cm
 set output "fig_thresholds.tex"
 set multiplot
 set bmargin at screen 0.16; set tmargin at screen 0.9
-s0 = 0.7246113537767086   # sin(vartheta0), Eq. (1)
+s0 = sin_vartheta0   # Eq. (1), from eq1_vartheta0 (style.gp)
 set xlabel '$q/a$'
 # y labels placed by hand (label 90, per panel): gnuplot misjudges the width of TeX tick labels
 unset ylabel

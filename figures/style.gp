@@ -24,3 +24,8 @@ set datafile columnheaders
 # Text placed by LaTeX: pi and phases as TeX.
 set format x "$%g$"
 set format y "$%g$"
+
+# sin(vartheta0) of Eq. (1), as computed by experiment eq1_vartheta0 (its macro in build/tables):
+# the figures mark the edge q/a = sin(vartheta0) of assumption (2) with the computed value.
+sin_vartheta0 = real(system("sed -n 's/^\\\\newcommand{\\\\dfcSinVarthetaZero}{\\(.*\\)}$/\\1/p' '".data."/../tables/eq1_vartheta0-macros.tex'"))
+if (!(sin_vartheta0 > 0.7 && sin_vartheta0 < 0.75)) { print "style.gp: no sin(vartheta0) in tables/eq1_vartheta0-macros.tex (run eq1_vartheta0)"; exit status 1 }
