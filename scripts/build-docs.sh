@@ -55,7 +55,7 @@ cat > "$abs/docs/Doxyfile" <<DOX
 PROJECT_NAME           = dfchaos
 PROJECT_BRIEF          = "Dry-friction oscillator of Begun & Kryzhevich: return maps, experiments, claims"
 OUTPUT_DIRECTORY       = $abs/docs
-INPUT                  = $root/README.md $root/src/dfchaos $root/src/dfchaos/certified $root/src/cli $root/experiments $pages
+INPUT                  = $root/README.md $root/src/dfchaos $root/src/dfchaos/certified $root/src/kit/kit $root/src/sweep/sweep $root/src/cli $root/experiments $pages
 FILE_PATTERNS          = *.hpp *.cpp *.md
 RECURSIVE              = NO
 USE_MDFILE_AS_MAINPAGE = $root/README.md

@@ -13,7 +13,8 @@ namespace dfchaos::dd {
 
 /// hi + lo with \f$|lo| \le \mathrm{ulp}(hi)/2\f$.
 struct DD {
-  double hi, lo;
+  double hi;  ///< the leading double
+  double lo;  ///< the trailing double, the rounding error of hi
 };
 
 /// Knuth's TwoSum: \f$a + b = s + e\f$ exactly.
@@ -39,6 +40,7 @@ inline DD two_prod(double a, double b) {
   const DD x = split(a), y = split(b);
   return {p, ((x.hi * y.hi - p) + x.hi * y.lo + x.lo * y.hi) + x.lo * y.lo};
 }
+/// x + y to about 107 bits (the accurate sum: both parts added with TwoSum).
 inline DD add(DD x, DD y) {
   DD s = two_sum(x.hi, y.hi);
   const DD t = two_sum(x.lo, y.lo);
@@ -47,17 +49,21 @@ inline DD add(DD x, DD y) {
   s.lo += t.lo;
   return fast_two_sum(s.hi, s.lo);
 }
+/// -x, exactly.
 inline DD neg(DD x) { return {-x.hi, -x.lo}; }
+/// x·y to about 106 bits (the product of the leading parts exact, the cross terms in double).
 inline DD mul(DD x, DD y) {
   DD p = two_prod(x.hi, y.hi);
   p.lo += x.hi * y.lo + x.lo * y.hi;
   return fast_two_sum(p.hi, p.lo);
 }
+/// x·y for a double y, to about 106 bits.
 inline DD mul(DD x, double y) {
   DD p = two_prod(x.hi, y);
   p.lo += x.lo * y;
   return fast_two_sum(p.hi, p.lo);
 }
+/// x/y for a double y: the quotient of the leading part and one correction step.
 inline DD div(DD x, double y) {
   const double q1 = x.hi / y;
   const DD p = two_prod(q1, y);
@@ -69,6 +75,7 @@ inline DD of(long double x) {
   const double hi = static_cast<double>(x);
   return {hi, static_cast<double>(x - hi)};
 }
+/// hi + lo rounded to a long double.
 inline long double to_long_double(DD x) { return static_cast<long double>(x.hi) + x.lo; }
 
 /// \f$2\pi\f$ = hi + lo to \f$6\cdot 10^{-33}\f$.

@@ -91,14 +91,14 @@ class Parameters {
   /// Which assumptions of the paper hold.
   Assumptions assumptions() const;
 
-  /// Demands what the return map \f$T\f$ needs: \f$b < a/2\f$ (so that \f$t_2, t_3\f$ exist),
-  /// \f$q > 2b\f$ (so that every progression stops) and \f$b/a \ge\f$ kMinMapRatio (the accuracy
-  /// floor, docs/accuracy.md).
-  /// @throws InvalidParameter naming `b` or `q`.
   /// Demands assumption (2) of the paper: \f$0 < b < a/2\f$ and \f$a\sin\vartheta_0 < q < a\f$.
   /// @throws InvalidParameter naming `b` or `q`, whichever breaks it (b first).
   void require_eq2() const;
 
+  /// Demands what the return map \f$T\f$ needs: \f$b < a/2\f$ (so that \f$t_2, t_3\f$ exist),
+  /// \f$q > 2b\f$ (so that every progression stops) and \f$b/a \ge\f$ kMinMapRatio (the accuracy
+  /// floor, docs/accuracy.md).
+  /// @throws InvalidParameter naming `b` or `q`.
   void require_return_map() const;
 
   /// "a=... b=... q=..." with 17 significant digits.

@@ -26,8 +26,14 @@ struct Verdict {
   /// A step shown false.
   static Verdict refute(std::string step, std::string detail) { return Verdict{false, true, std::move(step), std::move(detail)}; }
   explicit operator bool() const { return proved; }  ///< proved
-  /// "proved", or "not proved: STEP (DETAIL)".
-  std::string describe() const;
+  /// "proved", or "not proved: STEP (DETAIL)" ("refuted: ..." for a step shown false).
+  std::string describe() const {
+    if (proved) return "proved";
+    std::string s = refuted ? "refuted: " : "not proved: ";
+    s += step;
+    if (!detail.empty()) s += " (" + detail + ")";
+    return s;
+  }
 };
 
 /// A bound on the work of one proof (counted in interval tests), shared by its sub-steps. Every
@@ -43,13 +49,5 @@ struct Budget {
   }
   bool exhausted() const { return used > max_tests; }  ///< the budget is spent
 };
-
-inline std::string Verdict::describe() const {
-  if (proved) return "proved";
-  std::string s = refuted ? "refuted: " : "not proved: ";
-  s += step;
-  if (!detail.empty()) s += " (" + detail + ")";
-  return s;
-}
 
 }  // namespace dfchaos::certified
