@@ -22,6 +22,14 @@ function(dfchaos_add_experiments dir)
     add_executable(${name} ${src})
     target_compile_definitions(${name} PRIVATE DFCHAOS_EXPERIMENT_NAME="${name}")
     target_link_libraries(${name} PRIVATE dfchaos::kit dfchaos::dfchaos)
+    # Inside the dfchaos build every experiment may also use the certified layer and the sweep
+    # engine (static libraries: what an experiment does not use is not linked in), so that a new
+    # experiment is one file whatever it calls.
+    foreach(extra IN ITEMS dfchaos_certified dfchaos_sweep)
+      if(TARGET ${extra})
+        target_link_libraries(${name} PRIVATE ${extra})
+      endif()
+    endforeach()
     set_target_properties(${name} PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${ARG_OUTPUT_DIR})
     add_test(NAME smoke_${name} COMMAND ${name} --fast --out ${ARG_SMOKE_OUT})
     set_tests_properties(smoke_${name} PROPERTIES TIMEOUT 300 LABELS smoke)

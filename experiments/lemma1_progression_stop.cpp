@@ -16,7 +16,7 @@ using namespace dfchaos::kit;
 const Experiment experiment{
     .title = "Lemma 1: where the progression from rest at t0 stops",
     .paper = {"Lemma 1", "Eq. (7)", "Eq. (8)", "Eq. (9)"},
-    .tests = {"test_reduction"},
+    .tests = {"test_reduction", "test_motion"},
     .options = {count("nq", 400, "grid points of q/a in (0, 1)").range(2, 100000).fast_value(20),
                 count("nb", 241, "grid points of b/a, log-spaced in [ba-min, 0.49]").range(2, 100000).fast_value(13),
                 real("ba-min", 1e-5, "smallest b/a").range(1e-9, 0.1)},

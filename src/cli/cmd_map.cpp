@@ -42,7 +42,8 @@ Command add_map(CLI::App& app) {
       "  needs b/a >= " + format_double(kMinMapRatio) + " (refused below, exit 2).\n"
       "  T: within 1e-11 of the exact T(theta) (radians); within 1e-9 down to a relative distance of\n"
       "     1e-11 from a discontinuity of T1; at a discontinuity either one-sided value may be returned.\n"
-      "  T1, elapsed: within 1e-11 plus the rounding of the printed double (relative 2.2e-16).\n"
+      "  T1, elapsed: within 1e-11 plus the rounding of the printed double (relative 2.2e-16); near a\n"
+      "     discontinuity of T1 as T.\n"
       "  scenario: exact except where T is discontinuous.  penetration: to 1e-7 (against ODE integration).");
   return {cmd, [o] {
             const Parameters p = o->m.model();

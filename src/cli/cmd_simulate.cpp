@@ -12,11 +12,13 @@ Command add_simulate(CLI::App& app) {
   };
   auto o = std::make_shared<Opts>();
   o->m.add_to(cmd);
-  cmd->add_option("--x0", o->x0, "initial position of the mass (x0 <= y0)")->required()->type_name("FLOAT");
-  cmd->add_option("--y0", o->y0, "initial position of the delimiter")->required()->type_name("FLOAT");
-  cmd->add_option("--v0", o->v0, "initial velocity of the mass")->required()->type_name("FLOAT");
-  cmd->add_option("--t0", o->t0, "initial time")->required()->type_name("FLOAT");
-  cmd->add_option("--t-end", o->t_end, "final time, t-end >= t0")->required()->type_name("FLOAT");
+  const std::string state_range = "|.| <= " + dfchaos::format_double(dfchaos::kMaxParameter);
+  const std::string time_range = "|.| <= " + dfchaos::format_double(dfchaos::kMaxSimulationTime);
+  cmd->add_option("--x0", o->x0, "initial position of the mass, x0 <= y0, " + state_range)->required()->type_name("FLOAT");
+  cmd->add_option("--y0", o->y0, "initial position of the delimiter, " + state_range)->required()->type_name("FLOAT");
+  cmd->add_option("--v0", o->v0, "initial velocity of the mass, " + state_range)->required()->type_name("FLOAT");
+  cmd->add_option("--t0", o->t0, "initial time, " + time_range)->required()->type_name("FLOAT");
+  cmd->add_option("--t-end", o->t_end, "final time, t0 <= t-end, " + time_range)->required()->type_name("FLOAT");
   cmd->add_option("--sample", o->sample, "also print the state every DT time units (DT > 0; at most 5e6 samples) [default: no samples]")
       ->type_name("DT");
   cmd->add_option("--max-events", o->max_events, "give up after this many events, 1 <= N <= 1e8 [default 1000000]")->type_name("N");
