@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "dfchaos/covering.hpp"
+#include "dfchaos/lemma4_construction.hpp"
 #include "dfchaos/ode_map.hpp"
 
 using namespace dfchaos;
@@ -88,4 +89,31 @@ TEST(Covering, AVerdictHoldsIsKeptUnderAFinerScan) {
   }
   EXPECT_GE(default_holds, 3);
   EXPECT_TRUE(lemma4_covering(Parameters(1.0, 5e-4, 0.75), CoveringSearch{200, 40000, 400, 32, 0}).holds);
+}
+
+// The paper's own construction of Lemma 4 (lemma4_construction.hpp) against independent checks:
+// the count of T1's discontinuities in L2 = [101pi/100, 51pi/50] from the closed form
+// 2z - (a/b) cos z = (2k+1) pi, counted here from the values of f(z) = 2z - (a/b) cos z at the ends of
+// L2 (f is monotone there: f' = 2 + (a/b) sin z < 0 for these b/a), and the verdicts where they
+// are known: the construction goes through at (q/a, b/a) = (0.85, 5e-5) (certified in
+// cert.lemma4.paper_construction) and cannot at b/a = 0.02, where there is no covering at all.
+TEST(Covering, PaperConstructionOfLemma4) {
+  const double pi = std::acos(-1.0);
+  for (double b : {5e-5, 1e-4, 1e-3, 0.02}) {
+    const Parameters p(1.0, b, 0.85);
+    const Lemma4Construction c = lemma4_construction(p);
+    const double lo = 101 * pi / 100, hi = 51 * pi / 50;
+    const auto f = [&](double z) { return 2 * z - std::cos(z) / b; };
+    ASSERT_LT(2 + std::sin(hi) / b, 0) << "f not decreasing on L2 at b/a = " << b;
+    // odd multiples of pi in (f(hi), f(lo)]
+    const long long k_hi = static_cast<long long>(std::floor((f(lo) / pi - 1) / 2));
+    const long long k_lo = static_cast<long long>(std::ceil((f(hi) / pi - 1) / 2));
+    EXPECT_EQ(c.discontinuities, std::max(0LL, k_hi - k_lo + 1)) << "b/a = " << b;
+    EXPECT_EQ(c.three_discontinuities, c.discontinuities >= 3) << "b/a = " << b;
+    if (b == 5e-5) {
+      EXPECT_GE(c.discontinuities, 3);  // the count is not vacuous
+    }
+  }
+  EXPECT_TRUE(lemma4_construction(Parameters(1.0, 5e-5, 0.85)).all());
+  EXPECT_FALSE(lemma4_construction(Parameters(1.0, 0.02, 0.85)).all());
 }

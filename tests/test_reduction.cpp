@@ -8,6 +8,7 @@
 #include <set>
 
 #include "dfchaos/errors.hpp"
+#include "dfchaos/progression_stop.hpp"
 #include "dfchaos/return_map.hpp"
 #include "dfchaos/simulator.hpp"
 
@@ -141,4 +142,23 @@ TEST(Simulator, RegressionFreeStartAtRestAtT2WithTinyHorizonIsNotAZenoLoop) {
   // And a contact at rest exactly at t3, where F rises through 0, is a stop at once.
   const Simulation t = simulate(p, 0.0, 0.0, 0.0, *p.t3(), *p.t3() + 1.0, o);
   EXPECT_EQ(t.initial_regime, Regime::Stop);
+}
+
+// Lemma 1's threshold b0(q) (lemma1_threshold, by bisection) against progression_from_t0 directly:
+// the conclusion holds just below the threshold and fails just above it, and the proof's sufficient
+// bound gives a threshold no larger than the lemma's own (a sufficient condition cannot reach further).
+TEST(Reduction, Lemma1ThresholdSeparatesHoldsFromFails) {
+  for (double qa : {0.75, 0.85, 0.95}) {
+    const double b0 = lemma1_threshold(qa, 1e-4, 0.3, Lemma1Criterion::StopsInT1T2);
+    ASSERT_GT(b0, 1e-4) << "q/a = " << qa;
+    ASSERT_LT(b0, 0.3) << "q/a = " << qa;
+    EXPECT_TRUE(progression_from_t0(Parameters(1.0, b0, qa)).stops_in_t1_t2) << "q/a = " << qa;
+    EXPECT_TRUE(progression_from_t0(Parameters(1.0, b0 * (1 - 1e-6), qa)).stops_in_t1_t2) << "q/a = " << qa;
+    const double above = b0 * (1 + 1e-6);
+    if (above < qa / 2) {
+      EXPECT_FALSE(progression_from_t0(Parameters(1.0, above, qa)).stops_in_t1_t2) << "q/a = " << qa;
+    }
+    const double b0_bound = lemma1_threshold(qa, 1e-4, 0.3, Lemma1Criterion::ProofBound);
+    EXPECT_LE(b0_bound, b0 * (1 + 1e-9)) << "q/a = " << qa;
+  }
 }
