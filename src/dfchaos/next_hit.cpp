@@ -4,6 +4,7 @@
 #include <cfloat>
 #include <cmath>
 
+#include "dfchaos/bisect.hpp"
 #include "dfchaos/errors.hpp"
 #include "dfchaos/motion.hpp"
 
@@ -159,11 +160,8 @@ std::vector<SymmetricTangency> symmetric_tangencies(const Parameters& p, double 
   const long long k_hi = static_cast<long long>(std::floor((h(lo) / pi - 1) / 2));
   for (long long k = k_hi; k >= k_lo; --k) {
     const double target = (2 * k + 1) * pi;
-    double a = lo, b = hi;  // h(a) >= target >= h(b)
-    for (int it = 0; it < 200 && b - a > 2 * DBL_EPSILON * b; ++it) {
-      const double m = 0.5 * (a + b);
-      if (h(m) >= target) a = m; else b = m;
-    }
+    // h(lo) >= target > h(hi)
+    const auto [a, b] = bisect([&](double m) { return h(m) >= target; }, lo, hi, {.max_iterations = 200, .rel_tol = 2 * DBL_EPSILON});
     const double z = 0.5 * (a + b);
     if (z < lo || z > hi) continue;
     out.push_back(SymmetricTangency{z, -r * std::cos(z), k});

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <memory>
 
+#include "dfchaos/bisect.hpp"
 #include "dfchaos/errors.hpp"
 #include "dfchaos/phase.hpp"
 
@@ -125,11 +126,8 @@ OdeMapStep ode_return_map_step(const Parameters& p, double theta, const OdeMapOp
         hi = lo + o.max_step;
         if (++scans > o.max_steps) throw GaveUp("ode_return_map_step: a stop never ends");
       } while (!leaves(hi));
-      while (hi - lo > o.event_tol) {
-        const double mid = 0.5 * (lo + hi);
-        if (leaves(mid)) hi = mid; else lo = mid;
-      }
-      t = hi;
+      // (bisect also stops at adjacent doubles: at large t the tolerance can be below one ulp)
+      t = bisect([&](double mid) { return !leaves(mid); }, lo, hi, {.abs_tol = o.event_tol}).second;
       y[0] = delimiter;
       y[1] = 0;
       if (contact_force(t) < 0) regime = 'f';

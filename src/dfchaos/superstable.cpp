@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "dfchaos/bisect.hpp"
 #include "dfchaos/errors.hpp"
 
 namespace dfchaos {
@@ -33,10 +34,7 @@ SuperstableCheck superstable_check(const Parameters& p, int scan) {
     lo = th;
   }
   if (std::isnan(hi)) { r.epsilon = t3 - t2; return r; }
-  for (int it = 0; it < 100 && hi - lo > 4e-16 * hi; ++it) {
-    const double m = 0.5 * (lo + hi);
-    if (T(p, m) == t2) lo = m; else hi = m;
-  }
+  lo = bisect([&](double m) { return T(p, m) == t2; }, lo, hi, {.max_iterations = 100, .rel_tol = 4e-16}).first;
   r.epsilon = lo - t2;
   return r;
 }

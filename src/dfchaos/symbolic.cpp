@@ -3,6 +3,7 @@
 #include <cfloat>
 #include <cmath>
 
+#include "dfchaos/bisect.hpp"
 #include "dfchaos/errors.hpp"
 #include "dfchaos/return_map.hpp"
 
@@ -15,18 +16,11 @@ InverseBranch make_inverse_branch(const Parameters& p, const CoveringSegment& J,
   g.top = top;
   // From the T = t2 end towards the T >= top end: the first point where T reaches top, and the
   // last point before it where T = t2. Between them T is continuous (J is a covering segment).
-  double a = J.theta_at_t2, b = J.theta_at_top;
-  for (int it = 0; it < 200 && std::fabs(b - a) > 4e-16 * std::fabs(b); ++it) {  // T(a) < top <= T(b)
-    const double m = 0.5 * (a + b);
-    if (T(p, m) < top) a = m; else b = m;
-  }
-  g.k_at_top = b;
-  double c = J.theta_at_t2, d = b;  // T(c) = t2 < T(d)
-  for (int it = 0; it < 200 && std::fabs(d - c) > 4e-16 * std::fabs(d); ++it) {
-    const double m = 0.5 * (c + d);
-    if (T(p, m) == t2) c = m; else d = m;
-  }
-  g.k_at_t2 = c;
+  const BisectStop to_4e16{.max_iterations = 200, .rel_tol = 4e-16};
+  // T(theta_at_t2) < top <= T(theta_at_top)
+  g.k_at_top = bisect([&](double m) { return T(p, m) < top; }, J.theta_at_t2, J.theta_at_top, to_4e16).second;
+  // T = t2 at theta_at_t2, T > t2 at k_at_top
+  g.k_at_t2 = bisect([&](double m) { return T(p, m) == t2; }, J.theta_at_t2, g.k_at_top, to_4e16).first;
   // Strict monotonicity on K, checked on a grid.
   const double sign = g.k_at_top > g.k_at_t2 ? 1.0 : -1.0;
   double prev = T(p, g.k_at_t2);
@@ -44,12 +38,8 @@ InverseBranch make_inverse_branch(const Parameters& p, const CoveringSegment& J,
 double inverse(const Parameters& p, const InverseBranch& g, double y) {
   const double t2 = *p.t2();
   if (!(y >= t2 && y <= g.top)) throw InvalidParameter("y", "t2 <= y <= top", y);
-  double lo = g.k_at_t2, hi = g.k_at_top;  // T(lo) = t2 <= y <= T(hi), T increasing from lo to hi
-  for (int it = 0; it < 200 && std::fabs(hi - lo) > 2e-16 * std::fabs(hi); ++it) {
-    const double m = 0.5 * (lo + hi);
-    if (m == lo || m == hi) break;
-    if (T(p, m) < y) lo = m; else hi = m;
-  }
+  // T(k_at_t2) = t2 <= y <= T(k_at_top), T increasing from k_at_t2 to k_at_top
+  const auto [lo, hi] = bisect([&](double m) { return T(p, m) < y; }, g.k_at_t2, g.k_at_top, {.max_iterations = 200, .rel_tol = 2e-16});
   return std::fabs(T(p, lo) - y) < std::fabs(T(p, hi) - y) ? lo : hi;
 }
 
