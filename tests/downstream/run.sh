@@ -1,15 +1,17 @@
 #!/usr/bin/env bash
 # package_downstream: build tests/downstream against the dfchaos installed under PREFIX, with the
 # worked example of docs/adding-an-experiment.md copied under a new name as its only experiment;
-# run both. Usage: run.sh PREFIX EXAMPLE.cpp WORKDIR CXX
+# run both. Usage: run.sh PREFIX EXAMPLE.cpp WORKDIR CXX [FLAGS]
+# FLAGS: compile and link flags the installed library needs (the sanitizers of make test-sanitize).
 set -euo pipefail
-prefix=$1 example=$2 work=$3 cxx=$4
+prefix=$1 example=$2 work=$3 cxx=$4 flags=${5:-}
 here=$(cd "$(dirname "$0")" && pwd)
 rm -rf "$work"
 mkdir -p "$work/experiments"
 cp "$example" "$work/experiments/my_copied_experiment.cpp"
 cmake -S "$here" -B "$work/build" -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_CXX_COMPILER="$cxx" \
-      -DEXPERIMENTS_DIR="$work/experiments" -DCMAKE_BUILD_TYPE=Release > "$work/configure.log"
+      -DEXPERIMENTS_DIR="$work/experiments" -DCMAKE_BUILD_TYPE=Release \
+      -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="$flags" > "$work/configure.log"
 cmake --build "$work/build" -j 2 > "$work/build.log"
 # The library call gives the same T as the dfchaos tool installed with it.
 lib=$("$work/build/downstream")
