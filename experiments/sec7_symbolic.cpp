@@ -35,10 +35,7 @@ const Experiment experiment{
       const double b = run.real("b"), q = run.real("q");
       const int n_max = run.count_int("n-max");
       const Parameters p(1.0, b, q);
-      p.require_eq2();
-      p.require_return_map();
-      const Lemma4Covering c = lemma4_covering(p);
-      if (!c.holds) throw InvalidParameter("b", "a parameter set where the covering of Lemma 4 holds (none found at " + p.describe() + ")");
+      const Lemma4Covering c = require_lemma4_covering(p);
       const InverseBranch g[2] = {make_inverse_branch(p, c.J0), make_inverse_branch(p, c.J1)};
 
       // A word is realised when its orbit stays in K_{w_j} with one-step residuals below kStepTol;

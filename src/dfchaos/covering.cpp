@@ -189,4 +189,12 @@ Lemma4Covering lemma4_covering(const Parameters& p, const CoveringSearch& search
   return r;
 }
 
+Lemma4Covering require_lemma4_covering(const Parameters& p) {
+  p.require_eq2();
+  p.require_return_map();
+  Lemma4Covering c = lemma4_covering(p);
+  if (!c.holds) throw InvalidParameter("b", "a parameter set where the covering of Lemma 4 holds (none found at " + p.describe() + ")");
+  return c;
+}
+
 }  // namespace dfchaos

@@ -82,4 +82,10 @@ struct Lemma4Covering {
 };
 Lemma4Covering lemma4_covering(const Parameters& p, const CoveringSearch& search = {});
 
+/// Lemma 4's covering where an experiment needs it to exist: demands assumption (2) and the
+/// return map (Parameters::require_eq2, require_return_map), then searches as lemma4_covering.
+/// @throws InvalidParameter naming `b` or `q` for broken assumptions, and `b` when no covering is
+/// found at these parameters.
+Lemma4Covering require_lemma4_covering(const Parameters& p);
+
 }  // namespace dfchaos
