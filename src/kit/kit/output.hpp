@@ -19,6 +19,11 @@
 
 namespace dfchaos::kit {
 
+/// A temporary name beside `path` that no other process or call uses (pid, a counter and a random
+/// tag): where a file is written before it is renamed onto `path`, so that readers never see it
+/// half written. Used by the experiment outputs and by the sweep's output files.
+std::filesystem::path unique_temporary(const std::filesystem::path& path);
+
 /// A file-system failure while writing outputs. `bad_path()` is true when the output location
 /// itself is unusable (not a directory, not creatable: bad input, exit 2) and false when writing
 /// failed (disk full, I/O error: exit 1).

@@ -20,9 +20,6 @@ namespace dfchaos::kit {
 
 namespace fs = std::filesystem;
 
-namespace {
-
-/// A temporary name beside `path` that no other process or call uses: pid, a counter, and a random tag.
 fs::path unique_temporary(const fs::path& path) {
   static std::atomic<unsigned long> counter{0};
   static const unsigned long tag = std::random_device{}();
@@ -30,6 +27,8 @@ fs::path unique_temporary(const fs::path& path) {
   std::snprintf(buf, sizeof buf, ".tmp.%ld.%lu.%lx", static_cast<long>(::getpid()), counter++, tag);
   return fs::path(path.string() + buf);
 }
+
+namespace {
 
 /// Writes content to a new file `tmp`. @throws OutputError (after removing tmp).
 void write_file(const fs::path& tmp, const std::string& content) {

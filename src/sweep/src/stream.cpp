@@ -16,16 +16,6 @@ namespace dfchaos::sweep {
 
 namespace fs = std::filesystem;
 
-namespace {
-/// A temporary name beside `path` that no other process or call uses: pid, a counter, a random tag.
-fs::path unique_temporary(const fs::path& path) {
-  static std::atomic<unsigned long> counter{0};
-  static const unsigned long tag = std::random_device{}();
-  char buf[96];
-  std::snprintf(buf, sizeof buf, ".tmp.%ld.%lu.%lx", static_cast<long>(::getpid()), counter++, tag);
-  return fs::path(path.string() + buf);
-}
-}  // namespace
 
 void StdoutStream::write(std::string_view text) {
   if (text.empty()) return;
@@ -38,7 +28,7 @@ void StdoutStream::commit() {
     throw kit::OutputError(std::string("cannot write the output: ") + std::strerror(errno), false);
 }
 
-AtomicFile::AtomicFile(fs::path path) : path_(std::move(path)), tmp_(unique_temporary(path_)) {
+AtomicFile::AtomicFile(fs::path path) : path_(std::move(path)), tmp_(kit::unique_temporary(path_)) {
   std::error_code ec;
   if (fs::is_directory(path_, ec)) throw kit::OutputError("out: " + path_.string() + " is a directory", true);
   file_ = std::fopen(tmp_.c_str(), "wx");  // exclusive: never reuses a name
