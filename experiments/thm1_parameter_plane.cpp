@@ -2,9 +2,13 @@
 /// @brief Theorems 1 and 2 over the parameter plane: for q/a in (sin vartheta0, 1) and b/a
 /// log-spaced in [1e-4, 0.1], whether the covering of Lemma 4 holds (the chaos witness of
 /// Theorem 1), whether t2 is superstable (Theorem 2), both (coexistence), or neither.
+/// The covering is searched branch by branch (CoveringMethod::Branchwise, about 100 evaluations of
+/// T per cell); on a sub-grid (every `check_every`-th cell on both axes) the dense reference search
+/// is run too and the two verdicts are compared (claim plane.branchwise_vs_dense).
 /// Parallel over the grid (kit::sweep); every cell is independent, so the output does not depend
 /// on the number of threads.
 #include <cmath>
+#include <set>
 
 #include "dfchaos/covering.hpp"
 #include "dfchaos/superstable.hpp"
@@ -18,6 +22,8 @@ namespace {
 struct PlaneCell {
   int covering = 0, superstable = 0;
   double epsilon = 0, J0_lo = 0, J1_lo = 0;
+  int dense = -1;            ///< the dense search's verdict on the cross-check sub-grid (-1 elsewhere)
+  long long fallbacks = 0;   ///< the branchwise search fell back to the dense one
 };
 }  // namespace
 
@@ -25,20 +31,26 @@ const Experiment experiment{
     .title = "Theorems 1 and 2 over the (q/a, b/a) plane",
     .paper = {"Theorem 1", "Theorem 2", "Section 8"},
     .tests = {"test_covering", "test_symbolic"},
-    .options = {count("nq", 100, "grid points of q/a in (sin vartheta0, 1)").range(1, 2000).fast_value(8),
-                count("nb", 100, "grid points of b/a, log-spaced in [1e-4, 0.1]").range(2, 2000).fast_value(8)},
+    .options = {count("nq", 400, "grid points of q/a in (sin vartheta0, 1)").range(1, 2000).fast_value(8),
+                count("nb", 400, "grid points of b/a, log-spaced in [1e-4, 0.1]").range(2, 2000).fast_value(8),
+                count("check_every", 16, "cross-check the covering against the dense search at every k-th cell of both axes")
+                    .range(1, 2000)
+                    .fast_value(2)},
     .outputs = {data("", "class: 0 neither, 1 covering (Theorem 1), 2 t2 superstable (Theorem 2), 3 both, -1 error")},
     .body = [](Run& run) {
-      const int nq = run.count_int("nq"), nb = run.count_int("nb");
+      const int nq = run.count_int("nq"), nb = run.count_int("nb"), every = run.count_int("check_every");
       const double s0 = sin_vartheta0();
       const Axis q_axis = Axis::centres(s0, 1, nq), b_axis = Axis::log_ratio(1e-4, 1000.0, nb);
       const auto cells = sweep<PlaneCell>(
           q_axis, b_axis,
-          [](const Cell2& c) {
+          [every](const Cell2& c) {
             const Parameters p(1.0, c.y, c.x);
             PlaneCell r;
-            const Lemma4Covering cov = lemma4_covering(p);
+            CoveringSearchStats stats;
+            const Lemma4Covering cov = lemma4_covering(p, CoveringSearch::branchwise(), &stats);
+            r.fallbacks = stats.dense_fallbacks;
             r.covering = cov.holds;
+            if (c.i % every == every / 2 && c.j % every == every / 2) r.dense = lemma4_covering(p).holds;
             r.J0_lo = cov.holds ? cov.J0.lo : NAN;
             r.J1_lo = cov.holds ? cov.J1.lo : NAN;
             const SuperstableCheck s = superstable_check(p, 400);
@@ -48,8 +60,9 @@ const Experiment experiment{
           },
           "thm1_parameter_plane");
       Table t({"q_over_a", "b_over_a", "covering", "superstable", "class", "epsilon", "J0_lo", "J1_lo"});
-      long long n_cov = 0, n_sup = 0, n_both = 0, n_err = 0;
-      double both_q = NAN, both_b = NAN;
+      long long n_cov = 0, n_sup = 0, n_both = 0, n_err = 0, n_checked = 0, n_differ = 0, n_fallback = 0;
+      double both_q = NAN, both_b = NAN, differ_q = NAN, differ_b = NAN;
+      std::set<int> superstable_rows;  // the b/a rows holding a superstable cell
       for (int i = 0; i < nq; ++i)
         for (int j = 0; j < nb; ++j) {
           const auto& c = cells[static_cast<std::size_t>(i) * nb + j];
@@ -59,7 +72,15 @@ const Experiment experiment{
           t.row({qa, ba, static_cast<long long>(v.covering), static_cast<long long>(v.superstable), cls, v.epsilon, v.J0_lo, v.J1_lo});
           n_cov += v.covering;
           n_sup += v.superstable;
+          if (v.superstable) superstable_rows.insert(j);
           n_err += c.failed;
+          n_fallback += v.fallbacks;
+          if (v.dense >= 0) {
+            ++n_checked;
+            if (v.dense != v.covering) {
+              if (n_differ++ == 0) { differ_q = qa; differ_b = ba; }
+            }
+          }
           if (v.covering && v.superstable) {
             ++n_both;
             if (std::isnan(both_q)) { both_q = qa; both_b = ba; }
@@ -81,6 +102,19 @@ const Experiment experiment{
           .ours()
           .evidence("errors", n_err)
           .holds(n_err == 0);
+      auto& bw = run.out.claim("plane.branchwise_vs_dense", "Lemma 4", EvidenceKind::Sampled,
+                               "On the cross-check sub-grid the branch-by-branch covering search gives the same verdict as the dense "
+                               "reference search at every cell.");
+      bw.ours().evidence("cells_checked", n_checked).evidence("disagreements", n_differ).evidence("dense_fallbacks", n_fallback);
+      if (n_differ > 0) bw.evidence("first_disagreement_q_over_a", differ_q).evidence("first_disagreement_b_over_a", differ_b);
+      bw.holds(n_checked > 0 && n_differ == 0);
+      run.out.macro("PlaneNq", std::to_string(nq));
+      run.out.macro("PlaneNb", std::to_string(nb));
+      run.out.macro("PlaneCheckEvery", std::to_string(every));
+      run.out.macro("PlaneChecked", std::to_string(n_checked));
+      run.out.macro("PlaneDisagree", std::to_string(n_differ));
+      run.out.macro("PlaneFallbacks", std::to_string(n_fallback));
+      run.out.macro("PlaneSuperstableRows", std::to_string(superstable_rows.size()));
       run.out.macro("PlaneCells", std::to_string(n_cells));
       run.out.macro("PlaneCovering", std::to_string(n_cov));
       run.out.macro("PlaneSuperstable", std::to_string(n_sup));

@@ -16,7 +16,10 @@ do for [c=-1:3] {
 }
 stats f using "q_over_a" name "Q" nooutput
 stats f using (log10(column("b_over_a"))) name "B" nooutput
-dq = (Q_max - Q_min) / 99.0; db = (B_max - B_min) / 99.0
+# cell sizes: a product grid, so the cells at the smallest q/a count the b/a values
+stats f using (abs(column("q_over_a") - Q_min) <= 1e-12*abs(Q_min) ? 1 : 0) name "NBQ" nooutput
+nb = int(NBQ_sum); nq = int(Q_records / nb + 0.5)
+dq = (Q_max - Q_min) / (nq > 1 ? nq - 1 : 1); db = (B_max - B_min) / (nb > 1 ? nb - 1 : 1)
 set lmargin at screen 0.11; set rmargin at screen 0.66; set bmargin at screen 0.15; set tmargin at screen 0.97
 set xlabel '$q/a$'; set ylabel '$b/a$' offset 0.5,0
 set xrange [Q_min - dq/2 : Q_max + dq/2]; set yrange [B_min - db/2 : B_max + db/2]

@@ -17,8 +17,8 @@ namespace {
 /// Checks a covering found by lemma4_covering independently of the search: the end values by the
 /// exact map and by numerical integration, and on a dense grid of each segment no jump of T and
 /// values in every fiftieth of [t2, 3pi/2].
-void expect_genuine_covering(const Parameters& p) {
-  const Lemma4Covering c = lemma4_covering(p);
+void expect_genuine_covering(const Parameters& p, const CoveringSearch& search = {}) {
+  const Lemma4Covering c = lemma4_covering(p, search);
   ASSERT_TRUE(c.holds);
   EXPECT_LT(c.J0.hi, c.J1.lo);  // disjoint, ordered
   EXPECT_GE(c.J0.lo, *p.t2());
@@ -48,6 +48,34 @@ void expect_genuine_covering(const Parameters& p) {
 
 TEST(Covering, Lemma4SegmentsAtAReferencePointAreGenuine) { expect_genuine_covering(Parameters(1.0, 1e-3, 0.85)); }
 
+TEST(Covering, BranchwiseSegmentsAreGenuine) {
+  expect_genuine_covering(Parameters(1.0, 1e-3, 0.85), CoveringSearch::branchwise());
+  expect_genuine_covering(Parameters(1.0, 0.00040370172585965549, 0.73424995639452384), CoveringSearch::branchwise());
+  expect_genuine_covering(Parameters(1.0, 1e-4, 0.8), CoveringSearch::branchwise());
+}
+
+// The two searches are independent ways to the same verdict: the dense one samples every branch at
+// thousands of points, the branchwise one reads each branch from the ends of theta2 (covering.hpp).
+// On a grid over the report's plane (q/a in (sin vartheta0, 1), b/a log-spaced in [1e-4, 0.1]) they
+// must agree at every cell, and both verdicts must occur.
+TEST(Covering, BranchwiseAgreesWithTheDenseSearchOverThePlane) {
+  constexpr int kN = 12;
+  const double s0 = std::sin(vartheta0());
+  int holds = 0, fails = 0;
+  for (int i = 0; i < kN; ++i)
+    for (int j = 0; j < kN; ++j) {
+      const double qa = s0 + (1 - s0) * (i + 0.5) / kN, ba = 1e-4 * std::pow(1000.0, static_cast<double>(j) / (kN - 1));
+      const Parameters p(1.0, ba, qa);
+      CoveringSearchStats stats;
+      const bool branchwise = lemma4_covering(p, CoveringSearch::branchwise(), &stats).holds;
+      EXPECT_EQ(branchwise, lemma4_covering(p).holds) << "q/a=" << qa << " b/a=" << ba;
+      EXPECT_EQ(stats.dense_fallbacks, 0) << "q/a=" << qa << " b/a=" << ba;
+      (branchwise ? holds : fails)++;
+    }
+  EXPECT_GT(holds, 0);
+  EXPECT_GT(fails, 0);
+}
+
 TEST(Covering, RegressionArcAtTheEndOfABranchIsFound) {
   // Bug fixed: here T falls from ~3.55 to t2 within 8e-4 just before its continuity label changes,
   // so the arc where T = t2 lay between two samples and never came within 5% of t2 at a sample; the
@@ -69,6 +97,8 @@ TEST(Covering, NoCoveringWhereBOverAIsLarge) {
   EXPECT_FALSE(c.holds);
   EXPECT_EQ(c.segments_found, 0);
   EXPECT_TRUE(covering_segments(p, t2, 1.5 * pi, 1.5 * pi).empty());
+  EXPECT_FALSE(lemma4_covering(p, CoveringSearch::branchwise()).holds);
+  EXPECT_TRUE(covering_segments(p, t2, 1.5 * pi, 1.5 * pi, CoveringSearch::branchwise()).empty());
 }
 
 TEST(Covering, AVerdictHoldsIsKeptUnderAFinerScan) {

@@ -1,6 +1,8 @@
 #include "dfchaos/covering.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "dfchaos/errors.hpp"
 #include "dfchaos/next_hit.hpp"
@@ -19,18 +21,29 @@ LabelledStep continuity_label(const Parameters& p, double theta) {
 
 namespace {
 
+/// \f$\psi = \theta_2 - t_2\f$ of a step, with \f$\theta\f$ in turn 0: where the first progression
+/// stops, measured from \f$t_2\f$ (CoveringMethod::Branchwise).
+long double psi_of(const Parameters& p, const MapStep& step) { return elapsed(Instant::at_phase(*p.t2()), step.theta2); }
+
 /// Re-checks a candidate on a fine grid: one label throughout, and T moving between neighbours by
-/// no more than a bound that a jump to or from t2 (of size >= gap) would break.
-bool recheck_segment(const Parameters& p, CoveringSegment& s, int n) {
+/// no more than a bound that a jump to or from t2 (of size >= gap) would break. With
+/// `psi_direction` = +1 or -1, \f$\psi\f$ must also move monotonically in that direction.
+bool recheck_segment(const Parameters& p, CoveringSegment& s, int n, int psi_direction = 0) {
   if (n < 2) return true;
   double prev_T = NAN;
+  long double prev_psi = 0;
   double max_step = 0;
   for (int i = 0; i <= n; ++i) {
     const double th = s.lo + (s.hi - s.lo) * i / n;
     const LabelledStep l = continuity_label(p, th);
     if (!(l.label == s.label)) return false;
-    if (i > 0) max_step = std::max(max_step, std::fabs(l.step.T - prev_T));
+    const long double psi = psi_direction != 0 ? psi_of(p, l.step) : 0;
+    if (i > 0) {
+      max_step = std::max(max_step, std::fabs(l.step.T - prev_T));
+      if ((psi_direction > 0 && psi < prev_psi) || (psi_direction < 0 && psi > prev_psi)) return false;
+    }
     prev_T = l.step.T;
+    prev_psi = psi;
   }
   // The image spans at least top - t2; on n steps a continuous T moves that far in total. A single
   // step carrying more than half of the whole span is taken as a possible jump.
@@ -77,22 +90,21 @@ double t2_arc_by_descent(const Parameters& p, double lo, double hi, const Contin
   return NAN;
 }
 
-}  // namespace
-
-std::vector<CoveringSegment> covering_segments(const Parameters& p, double lo, double hi, double top,
-                                               const CoveringSearch& search) {
-  p.require_return_map();
-  const double t2 = *p.t2(), t3 = *p.t3();
-  if (!(lo >= t2 && lo < hi && hi < t3)) throw InvalidParameter("lo, hi", "t2 <= lo < hi < t3");
-  if (search.scan < 2) throw InvalidParameter("scan", "scan >= 2", search.scan);
-  if (search.uniform < 0) throw InvalidParameter("uniform", "uniform >= 0", search.uniform);
-
-  // Scan each continuity branch of T1 separately: their widths range over orders of magnitude
-  // (about 2 pi b / (a |sin z|)), and the breakpoints are known in closed form (next_hit.hpp).
+/// The cuts lo < z_1 < ... < hi: the symmetric tangencies (next_hit.hpp) strictly inside (lo, hi).
+std::vector<double> branch_cuts(const Parameters& p, double lo, double hi) {
   std::vector<double> cuts{lo};
   for (const auto& z : symmetric_tangencies(p, lo, hi))
     if (z.z > lo && z.z < hi) cuts.push_back(z.z);
   cuts.push_back(hi);
+  return cuts;
+}
+
+/// CoveringMethod::Dense.
+std::vector<CoveringSegment> dense_segments(const Parameters& p, double lo, double hi, double top, const CoveringSearch& search) {
+  const double t2 = *p.t2();
+  // Scan each continuity branch of T1 separately: their widths range over orders of magnitude
+  // (about 2 pi b / (a |sin z|)), and the breakpoints are known in closed form (next_hit.hpp).
+  const std::vector<double> cuts = branch_cuts(p, lo, hi);
 
   std::vector<CoveringSegment> out;
   ContinuityLabel run_label;
@@ -174,12 +186,121 @@ std::vector<CoveringSegment> covering_segments(const Parameters& p, double lo, d
   return out;
 }
 
-Lemma4Covering lemma4_covering(const Parameters& p, const CoveringSearch& search) {
+/// One sample of the branchwise search: the labelled step and its \f$\psi\f$.
+struct BranchSample {
+  double theta = 0;
+  LabelledStep l;
+  long double psi = 0;
+};
+
+BranchSample branch_sample(const Parameters& p, double theta) {
+  BranchSample s{theta, continuity_label(p, theta), 0};
+  s.psi = psi_of(p, s.l.step);
+  return s;
+}
+
+/// Bisection between the samples `below` and `above` of one branch for a sample that `accept`s;
+/// a sample that is not accepted replaces `below` where `is_below` holds, `above` otherwise.
+/// Bounded: 80 halvings, or until the phases meet in the last bit (then gives up: nullopt).
+template <class Accept, class IsBelow>
+std::optional<BranchSample> seek(const Parameters& p, BranchSample below, BranchSample above, Accept accept, IsBelow is_below) {
+  for (int it = 0; it < 80; ++it) {
+    const double m = 0.5 * (below.theta + above.theta);
+    if (m == below.theta || m == above.theta) break;
+    BranchSample s = branch_sample(p, m);
+    if (accept(s)) return s;
+    (is_below(s) ? below : above) = std::move(s);
+  }
+  return std::nullopt;
+}
+
+/// CoveringMethod::Branchwise; nullopt when a branch does not show the structure it relies on.
+std::optional<std::vector<CoveringSegment>> branchwise_segments(const Parameters& p, double lo, double hi, double top,
+                                                                const CoveringSearch& search) {
+  const double t2 = *p.t2(), t3 = *p.t3();
+  const std::vector<double> cuts = branch_cuts(p, lo, hi);
+  std::vector<CoveringSegment> out;
+  long long previous_branch = 0;
+  for (std::size_t c = 0; c + 1 < cuts.size(); ++c) {
+    // The branch [L, R): its ends (just inside: at a cut T1 is the tangency itself) and two inner points.
+    const double L = cuts[c], R = cuts[c + 1], w = R - L;
+    constexpr double kInside = 1e-9;  // relative distance of the end samples from a cut
+    const BranchSample e0 = branch_sample(p, c == 0 ? L : L + kInside * w), e1 = branch_sample(p, R - kInside * w);
+    const BranchSample i1 = branch_sample(p, L + w / 3), i2 = branch_sample(p, L + 2 * w / 3);
+    const long long branch = e0.l.label.t1_branch;
+    // One branch of T1 between the cuts, and a real discontinuity at the cut before it.
+    if (e1.l.label.t1_branch != branch || i1.l.label.t1_branch != branch || i2.l.label.t1_branch != branch) return std::nullopt;
+    if (c > 0 && previous_branch == branch) return std::nullopt;
+    previous_branch = branch;
+    // psi monotone on the four samples.
+    const int dir = e1.psi > e0.psi ? 1 : -1;
+    const auto ordered = [&](long double x, long double y) { return dir > 0 ? x <= y : x >= y; };
+    if (!(ordered(e0.psi, i1.psi) && ordered(i1.psi, i2.psi) && ordered(i2.psi, e1.psi))) return std::nullopt;
+    const BranchSample& low = dir > 0 ? e0 : e1;   // the end with the least psi
+    const BranchSample& high = dir > 0 ? e1 : e0;  // the end with the largest psi
+    const auto is_below_level = [](long double level) { return [level](const BranchSample& s) { return s.psi < level; }; };
+    std::vector<CoveringSegment> here;
+    for (long long m = static_cast<long long>(std::ceil(low.psi / two_pi_l)); m * two_pi_l <= high.psi; ++m) {
+      // Stops in the window just below 2 pi m give T = t2; psi in [2 pi m + top - t2, 2 pi m + t3 - t2) T >= top.
+      const long double base = m * two_pi_l, level_top = base + (top - t2), level_t3 = base + (t3 - t2);
+      if (!(low.psi < base && high.psi >= level_top)) continue;
+      // The witnesses are taken inside the branch, not at its end samples: near a tangency T varies
+      // like a square root, and a witness 1e-9 from it would be fragile. Where the branch ends
+      // inside a target window, only the half of the window away from that end is accepted.
+      const long double cap_top = std::min(level_t3, (level_top + high.psi) / 2);
+      const auto accept_top = [&](const BranchSample& s) { return s.psi >= level_top && s.psi < cap_top && s.l.step.T >= top; };
+      std::optional<BranchSample> at_top = seek(p, low, high, accept_top, is_below_level(cap_top));
+      if (!at_top) continue;
+      const long double floor_t2 = std::max(level_t3 - two_pi_l, (low.psi + base) / 2);
+      const auto accept_t2 = [&](const BranchSample& s) {
+        return s.psi >= floor_t2 && s.psi < base && s.l.step.T == t2 && s.l.label == at_top->l.label;
+      };
+      std::optional<BranchSample> at_t2 = seek(p, low, *at_top, accept_t2, is_below_level(base));
+      if (!at_t2) continue;
+      CoveringSegment seg;
+      seg.lo = std::min(at_t2->theta, at_top->theta);
+      seg.hi = std::max(at_t2->theta, at_top->theta);
+      seg.theta_at_t2 = at_t2->theta;
+      seg.theta_at_top = at_top->theta;
+      seg.T_at_top = at_top->l.step.T;
+      seg.label = at_top->l.label;
+      seg.rechecked = recheck_segment(p, seg, search.recheck, dir);
+      if (seg.rechecked) here.push_back(seg);
+    }
+    std::sort(here.begin(), here.end(), [](const CoveringSegment& x, const CoveringSegment& y) { return x.lo < y.lo; });
+    for (const CoveringSegment& seg : here) {
+      out.push_back(seg);
+      if (search.max_segments > 0 && static_cast<int>(out.size()) >= search.max_segments) return out;
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<CoveringSegment> covering_segments(const Parameters& p, double lo, double hi, double top, const CoveringSearch& search,
+                                               CoveringSearchStats* stats) {
+  p.require_return_map();
+  const double t2 = *p.t2(), t3 = *p.t3();
+  if (!(lo >= t2 && lo < hi && hi < t3)) throw InvalidParameter("lo, hi", "t2 <= lo < hi < t3");
+  if (search.scan < 2) throw InvalidParameter("scan", "scan >= 2", search.scan);
+  if (search.uniform < 0) throw InvalidParameter("uniform", "uniform >= 0", search.uniform);
+  if (search.method == CoveringMethod::Branchwise) {
+    if (auto segs = branchwise_segments(p, lo, hi, top, search)) return *std::move(segs);
+    if (stats != nullptr) ++stats->dense_fallbacks;
+    CoveringSearch dense;  // the reference search, with the caller's limits
+    dense.max_segments = search.max_segments;
+    return dense_segments(p, lo, hi, top, dense);
+  }
+  return dense_segments(p, lo, hi, top, search);
+}
+
+Lemma4Covering lemma4_covering(const Parameters& p, const CoveringSearch& search, CoveringSearchStats* stats) {
   p.require_return_map();
   Lemma4Covering r;
   CoveringSearch s = search;
   if (s.max_segments == 0) s.max_segments = 2;
-  const auto segs = covering_segments(p, *p.t2(), 1.5 * pi, 1.5 * pi, s);
+  const auto segs = covering_segments(p, *p.t2(), 1.5 * pi, 1.5 * pi, s, stats);
   r.segments_found = static_cast<int>(segs.size());
   if (segs.size() >= 2) {
     r.holds = true;

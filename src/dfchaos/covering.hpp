@@ -57,20 +57,55 @@ struct CoveringSegment {
   bool rechecked = false;        ///< labels constant, and no T-jump on the fine grid inside
 };
 
+/// How covering_segments looks for covering segments.
+enum class CoveringMethod {
+  /// Samples every continuity branch of \f$T_1\f$ densely (at least CoveringSearch::scan points,
+  /// and the density of CoveringSearch::uniform), with local refinement and descents: thousands
+  /// of evaluations of \f$T\f$. The reference search; its segments feed Sections 6, 7, 10 and the
+  /// certified layer.
+  Dense,
+  /// Uses what is known about each branch instead of sampling it. After the first progression
+  /// stops at \f$\theta_2\f$ (Eq. 17) the motion depends only on the phase of \f$\theta_2\f$, so
+  /// \f$T(\theta) = g(\theta_2(\theta) \bmod 2\pi)\f$ for one function \f$g\f$ of the circle:
+  /// \f$g = t_2\f$ on the stop window just below \f$t_2\f$ (scenario B, the plateaus), the identity on
+  /// \f$[t_2, t_3)\f$ (scenario A), and \f$g\f$ is continuous across \f$t_2\f$. On a branch of \f$T_1\f$
+  /// (ends in closed form, next_hit.hpp) \f$\theta_2\f$ is continuous and monotone (the terms of
+  /// \f$d\theta_2/d\theta\f$ from Eq. 17 and Lemma 2 have one sign), so the range of
+  /// \f$\psi = \theta_2 - t_2\f$ over the branch follows from its two ends, and each multiple
+  /// \f$2\pi m\f$ with \f$\psi_{min} < 2\pi m\f$ and \f$\psi_{max} \ge 2\pi m + (top - t_2)\f$ marks
+  /// a covering segment. Its ends are found by bisection on \f$\psi\f$ (a phase with
+  /// \f$T = t_2\f$ just below \f$2\pi m\f$, one with \f$T \ge top\f$ above \f$2\pi m + top - t_2\f$)
+  /// and the segment is re-checked on CoveringSearch::recheck points (one label, \f$\psi\f$ monotone,
+  /// no jump of \f$T\f$). Monotonicity is checked on every branch at its ends and two inner
+  /// points; a branch where it fails, or a cut that is not a discontinuity of \f$T_1\f$, sends the
+  /// whole search back to Dense (counted in CoveringSearchStats::dense_fallbacks). About 100
+  /// evaluations of \f$T\f$ per parameter set. Sampled evidence, like Dense.
+  Branchwise
+};
+
 /// Options of the covering search.
 struct CoveringSearch {
   int scan = 48;                ///< at least this many grid points per continuity branch of T1
   int uniform = 8000;           ///< and at least the density of this many points spread over [lo, hi]
-  int recheck = 400;             ///< fine-grid points inside each segment found
+  int recheck = 400;             ///< fine-grid points inside each segment found (both methods)
   int refine = 32;              ///< local points on each side where T comes within 5% of t2 (narrow B arcs)
   bool descend = true;          ///< descend T into the end gaps of runs that reach the top without t2
-  int max_segments = 0;         ///< stop after this many rechecked segments (0: find all)
+  int max_segments = 0;         ///< stop after this many rechecked segments (0: find all; both methods)
+  CoveringMethod method = CoveringMethod::Dense;  ///< how to search (the fields above are for Dense unless noted)
+  /// The branchwise search with its re-check on 64 points (about 100 evaluations of T in all).
+  static CoveringSearch branchwise() { return {.recheck = 64, .method = CoveringMethod::Branchwise}; }
+};
+
+/// Whether a Branchwise search fell back to the dense one (for measurements and tests).
+struct CoveringSearchStats {
+  long long dense_fallbacks = 0;  ///< searches that went back to Dense (see CoveringMethod::Branchwise)
 };
 
 /// Disjoint covering segments of \f$[t_2, \text{top}]\f$ inside \f$[lo, hi]\f$, in ascending order.
 /// @throws InvalidParameter unless the map is defined and \f$t_2 \le lo < hi < t_3\f$.
+/// @param stats when given, counts a fallback of the Branchwise method to Dense.
 std::vector<CoveringSegment> covering_segments(const Parameters& p, double lo, double hi, double top,
-                                               const CoveringSearch& search = {});
+                                               const CoveringSearch& search = {}, CoveringSearchStats* stats = nullptr);
 
 /// Lemma 4's conclusion at one parameter set: two disjoint closed segments of \f$[t_2, 3\pi/2]\f$,
 /// each with \f$T\f$ continuous and \f$T(J_i) \supseteq [t_2, 3\pi/2]\f$.
@@ -80,7 +115,7 @@ struct Lemma4Covering {
   CoveringSegment J1;           ///< the next rechecked segment, disjoint from J0 (when holds)
   int segments_found = 0;       ///< rechecked segments found (at most search.max_segments if set)
 };
-Lemma4Covering lemma4_covering(const Parameters& p, const CoveringSearch& search = {});
+Lemma4Covering lemma4_covering(const Parameters& p, const CoveringSearch& search = {}, CoveringSearchStats* stats = nullptr);
 
 /// Lemma 4's covering where an experiment needs it to exist: demands assumption (2) and the
 /// return map (Parameters::require_eq2, require_return_map), then searches as lemma4_covering.

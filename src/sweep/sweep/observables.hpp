@@ -1,7 +1,8 @@
 /// @file observables.hpp
 /// @brief What a sweep computes at each cell of the (q/a, b/a) plane.
 ///
-///  - `covering`: Lemma 4 / Theorem 1 by sampling, lemma4_covering(p).holds (0 or 1);
+///  - `covering`: Lemma 4 / Theorem 1 by sampling, lemma4_covering(p, CoveringSearch::branchwise()).holds
+///    (0 or 1): the branch-by-branch search, about 100 evaluations of T (covering.hpp);
 ///  - `superstable`: Theorem 2, superstable_check(p, scan): \f$T(t_2) = t_2\f$ with a measured
 ///    superstable width \f$\varepsilon > 0\f$ (0 or 1), and that width `epsilon`;
 ///  - `lyapunov`: \f$\frac1N\sum\ln|T'(\theta_n)|\f$ over the orbit's averaged steps (orbit_statistics;
