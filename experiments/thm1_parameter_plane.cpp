@@ -3,10 +3,11 @@
 /// log-spaced in [1e-4, 0.1], whether the covering of Lemma 4 holds (the chaos witness of
 /// Theorem 1), whether t2 is superstable (Theorem 2), both (coexistence), or neither.
 /// The covering is searched branch by branch (CoveringMethod::Branchwise, about 100 evaluations of
-/// T per cell); on a sub-grid (every `check_every`-th cell on both axes) the dense reference search
+/// T per cell); on a sub-grid (every `check-every`-th cell on both axes) the dense reference search
 /// is run too and the two verdicts are compared (claim plane.branchwise_vs_dense).
 /// Parallel over the grid (kit::sweep); every cell is independent, so the output does not depend
 /// on the number of threads.
+#include <algorithm>
 #include <cmath>
 #include <set>
 
@@ -33,24 +34,25 @@ const Experiment experiment{
     .tests = {"test_covering", "test_symbolic"},
     .options = {count("nq", 400, "grid points of q/a in (sin vartheta0, 1)").range(1, 2000).fast_value(8),
                 count("nb", 400, "grid points of b/a, log-spaced in [1e-4, 0.1]").range(2, 2000).fast_value(8),
-                count("check_every", 16, "cross-check the covering against the dense search at every k-th cell of both axes")
+                count("check-every", 16, "cross-check the covering against the dense search at every k-th cell of both axes")
                     .range(1, 2000)
                     .fast_value(2)},
     .outputs = {data("", "class: 0 neither, 1 covering (Theorem 1), 2 t2 superstable (Theorem 2), 3 both, -1 error")},
     .body = [](Run& run) {
-      const int nq = run.count_int("nq"), nb = run.count_int("nb"), every = run.count_int("check_every");
+      const int nq = run.count_int("nq"), nb = run.count_int("nb"), every = run.count_int("check-every");
+      const int every_q = std::min(every, nq), every_b = std::min(every, nb);  // at least one row and column checked
       const double s0 = sin_vartheta0();
       const Axis q_axis = Axis::centres(s0, 1, nq), b_axis = Axis::log_ratio(1e-4, 1000.0, nb);
       const auto cells = sweep<PlaneCell>(
           q_axis, b_axis,
-          [every](const Cell2& c) {
+          [every_q, every_b](const Cell2& c) {
             const Parameters p(1.0, c.y, c.x);
             PlaneCell r;
             CoveringSearchStats stats;
             const Lemma4Covering cov = lemma4_covering(p, CoveringSearch::branchwise(), &stats);
             r.fallbacks = stats.dense_fallbacks;
             r.covering = cov.holds;
-            if (c.i % every == every / 2 && c.j % every == every / 2) r.dense = lemma4_covering(p).holds;
+            if (c.i % every_q == every_q / 2 && c.j % every_b == every_b / 2) r.dense = lemma4_covering(p).holds;
             r.J0_lo = cov.holds ? cov.J0.lo : NAN;
             r.J1_lo = cov.holds ? cov.J1.lo : NAN;
             const SuperstableCheck s = superstable_check(p, 400);
