@@ -4,9 +4,11 @@
 #include <pybind11/stl.h>
 
 #include <optional>
+#include <string>
 
 #include "convert.hpp"
 #include "dfchaos/covering.hpp"
+#include "dfchaos/errors.hpp"
 #include "dfchaos/phase.hpp"
 
 namespace dfchaos::python {
@@ -33,11 +35,15 @@ py::dict segment_dict(const CoveringSegment& s) {
   return d;
 }
 
-CoveringSearch search_options(int scan, int uniform, int recheck, int refine, bool descend, int max_segments) {
+/// "dense" or "branchwise" (CoveringMethod); the re-check defaults to each method's own.
+CoveringSearch search_options(const std::string& method, int scan, int uniform, std::optional<int> recheck, int refine, bool descend,
+                              int max_segments) {
   CoveringSearch s;
+  if (method == "branchwise") s = CoveringSearch::branchwise();
+  else if (method != "dense") throw InvalidParameter("method", "'dense' or 'branchwise' (got '" + method + "')");
   s.scan = scan;
   s.uniform = uniform;
-  s.recheck = recheck;
+  if (recheck) s.recheck = *recheck;
   s.refine = refine;
   s.descend = descend;
   s.max_segments = max_segments;
@@ -45,12 +51,13 @@ CoveringSearch search_options(int scan, int uniform, int recheck, int refine, bo
 }
 
 py::list covering_segments_py(const Parameters& p, std::optional<double> lo, std::optional<double> hi, std::optional<double> top,
-                              int scan, int uniform, int recheck, int refine, bool descend, int max_segments) {
+                              const std::string& method, int scan, int uniform, std::optional<int> recheck, int refine, bool descend,
+                              int max_segments) {
   p.require_return_map();
   const double l = lo ? finite("lo", *lo) : p.t2_required();
   const double h = hi ? finite("hi", *hi) : 1.5 * pi;
   const double t = top ? finite("top", *top) : 1.5 * pi;
-  const CoveringSearch s = search_options(scan, uniform, recheck, refine, descend, max_segments);
+  const CoveringSearch s = search_options(method, scan, uniform, recheck, refine, descend, max_segments);
   std::vector<CoveringSegment> segs;
   {
     py::gil_scoped_release nogil;
@@ -61,8 +68,9 @@ py::list covering_segments_py(const Parameters& p, std::optional<double> lo, std
   return out;
 }
 
-py::dict lemma4_covering_py(const Parameters& p, int scan, int uniform, int recheck, int refine, bool descend, int max_segments) {
-  const CoveringSearch s = search_options(scan, uniform, recheck, refine, descend, max_segments);
+py::dict lemma4_covering_py(const Parameters& p, const std::string& method, int scan, int uniform, std::optional<int> recheck, int refine,
+                            bool descend, int max_segments) {
+  const CoveringSearch s = search_options(method, scan, uniform, recheck, refine, descend, max_segments);
   Lemma4Covering r;
   {
     py::gil_scoped_release nogil;
@@ -84,21 +92,26 @@ void bind_covering(py::module_& m) {
   options.disable_function_signatures();
   const CoveringSearch def;
   m.def("covering_segments", &covering_segments_py, py::arg("p"), py::arg("lo") = py::none(), py::arg("hi") = py::none(),
-        py::arg("top") = py::none(), py::kw_only(), py::arg("scan") = def.scan, py::arg("uniform") = def.uniform,
-        py::arg("recheck") = def.recheck, py::arg("refine") = def.refine, py::arg("descend") = def.descend,
-        py::arg("max_segments") = def.max_segments, R"doc(covering_segments(p, lo=t2, hi=3 pi/2, top=3 pi/2, *, scan=48, uniform=8000, recheck=400, refine=32,
-                  descend=True, max_segments=0) -> list of dict
+        py::arg("top") = py::none(), py::kw_only(), py::arg("method") = "dense", py::arg("scan") = def.scan,
+        py::arg("uniform") = def.uniform, py::arg("recheck") = py::none(), py::arg("refine") = def.refine,
+        py::arg("descend") = def.descend, py::arg("max_segments") = def.max_segments,
+        R"doc(covering_segments(p, lo=t2, hi=3 pi/2, top=3 pi/2, *, method="dense", scan=48, uniform=8000, recheck=None,
+                  refine=32, descend=True, max_segments=0) -> list of dict
 
 Disjoint covering segments J inside [lo, hi], ascending (Lemma 4, Eq. 18): closed segments on which
 T is continuous (one continuity label) and which hold a point with T = t2 and a point with
-T >= top, so that T(J) contains [t2, top] by the intermediate value theorem. Sampled evidence: found
-on a grid (scan points per continuity branch of T1, at least the density of `uniform` points),
-re-checked on `recheck` points inside each. Each dict: lo, hi, theta_at_t2, theta_at_top, T_at_top,
-label (dict t1_branch, t3_passed, scenario_d) and rechecked (sampled on a finer grid, not proved).
-Raises ValueError unless the map is defined and t2 <= lo < hi < t3.)doc");
-  m.def("lemma4_covering", &lemma4_covering_py, py::arg("p"), py::kw_only(), py::arg("scan") = def.scan,
-        py::arg("uniform") = def.uniform, py::arg("recheck") = def.recheck, py::arg("refine") = def.refine,
-        py::arg("descend") = def.descend, py::arg("max_segments") = def.max_segments, R"doc(lemma4_covering(p, *, scan=48, uniform=8000, recheck=400, refine=32, descend=True, max_segments=0) -> dict
+T >= top, so that T(J) contains [t2, top] by the intermediate value theorem. Sampled evidence.
+method="dense": found on a grid (scan points per continuity branch of T1, at least the density of
+`uniform` points; refine and descend as in covering.hpp). method="branchwise": each branch of T1 is
+read from the ends of theta2 (about 100 evaluations of T; scan, uniform, refine and descend unused).
+Either way each segment is re-checked on `recheck` points inside it (default 400 dense, 64
+branchwise). Each dict: lo, hi, theta_at_t2, theta_at_top, T_at_top, label (dict t1_branch,
+t3_passed, scenario_d) and rechecked (sampled on a finer grid, not proved).
+Raises ValueError unless the map is defined and t2 <= lo < hi < t3, or for an unknown method.)doc");
+  m.def("lemma4_covering", &lemma4_covering_py, py::arg("p"), py::kw_only(), py::arg("method") = "dense", py::arg("scan") = def.scan,
+        py::arg("uniform") = def.uniform, py::arg("recheck") = py::none(), py::arg("refine") = def.refine,
+        py::arg("descend") = def.descend, py::arg("max_segments") = def.max_segments, R"doc(lemma4_covering(p, *, method="dense", scan=48, uniform=8000, recheck=None, refine=32, descend=True,
+                max_segments=0) -> dict
 
 Lemma 4's conclusion at one parameter set: two disjoint closed segments J0, J1 of [t2, 3 pi/2], each
 with T continuous and T(J) containing [t2, 3 pi/2]. Keys: holds, J0, J1 (dicts as from

@@ -1,6 +1,6 @@
 /// @file bench_plane.cpp
 /// @brief The cost of the report's parameter plane, run by `make bench` (bench_return_map): the
-/// 100 x 100 grid of experiments/thm1_parameter_plane (q/a: cell centres of (sin vartheta0, 1);
+/// region of experiments/thm1_parameter_plane at 100 x 100 (q/a: cell centres of (sin vartheta0, 1);
 /// b/a: log-spaced in [1e-4, 0.1]; covering and superstable at each cell) computed by the sweep
 /// engine with all OpenMP threads, with every evaluation of T counted (t_evaluations.hpp).
 ///
@@ -26,7 +26,7 @@
 #include "t_evaluations.hpp"
 
 namespace {
-constexpr long long kDefaultN = 100;  ///< the report's plane is 100 x 100
+constexpr long long kDefaultN = 100;  ///< 100 x 100: the size issue 16 sets its per-cell targets at
 constexpr long long kMaxN = 2000;     ///< as thm1_parameter_plane's bounds
 
 /// CPU seconds of this process so far (all threads).

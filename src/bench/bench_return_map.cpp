@@ -12,7 +12,7 @@
 ///   - `sincos_seconds` (and `sincos_cpu_seconds`): one sin+cos pair of a phase in [0, 2 pi), so that
 ///     the cost of T reads as a machine-independent multiple of it (`dfchaos_in_sincos` per row;
 ///     `cell_in_sincos` for the plane, from CPU times);
-///   - `plane`: the report's 100 x 100 plane (thm1_parameter_plane's grid, covering and superstable)
+///   - `plane`: the report's plane at 100 x 100 (thm1_parameter_plane's region, covering and superstable)
 ///     by bench_plane: cells, T evaluations per cell, cells per second (all OpenMP threads);
 ///   - `scaling`: one sweep (kScalingCells cells, every observable) on 1 and on 2 MPI ranks of
 ///     dfchaos-sweep-mpi (one thread each, `mpiexec --oversubscribe`), or, without MPI, dfchaos sweep
@@ -175,7 +175,7 @@ std::string slurp(const std::filesystem::path& p) {
 /// The plane by bench_plane (NaNs in the result if it failed). Its cost per cell in sin+cos pairs
 /// compares CPU times (the plane's, and one pair's), which other work on the machine does not inflate.
 Json measure_plane(double sincos_cpu_seconds) {
-  std::printf("bench: the 100 x 100 plane (bench_plane) ...\n");
+  std::printf("bench: the plane at 100 x 100 (bench_plane) ...\n");
   std::fflush(stdout);
   const ChildResult c = run_child({DFCHAOS_BENCH_PLANE}, {}, false);
   const double cells = value_after(c.text, "cells "), evaluations = value_after(c.text, "T_evaluations "),

@@ -232,6 +232,19 @@ def test_covering_segments_cover():
     assert len(dfchaos.covering_segments(p, max_segments=1)) == 1
 
 
+def test_covering_branchwise_agrees_with_dense():
+    top = 1.5 * np.pi
+    for b, q in [(0.002, 0.85), (1e-4, 0.8), (0.05, 0.9)]:
+        p = dfchaos.Parameters(1.0, b, q)
+        bw = dfchaos.lemma4_covering(p, method="branchwise")
+        assert bw["holds"] == dfchaos.lemma4_covering(p)["holds"]
+        for s in dfchaos.covering_segments(p, method="branchwise", max_segments=2):
+            assert s["rechecked"] and dfchaos.T(p, s["theta_at_t2"]) == p.t2
+            assert dfchaos.T(p, s["theta_at_top"]) >= top
+    with pytest.raises(ValueError, match="method"):
+        dfchaos.lemma4_covering(dfchaos.Parameters(1.0, 0.002, 0.85), method="fast")
+
+
 # ---- threads: the GIL is released and the library is reentrant ----------------------------------
 
 def test_threads_give_the_same_values():
