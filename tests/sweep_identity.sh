@@ -82,18 +82,23 @@ serial)
 
   # Killed without warning while it writes chunks of one cell (SIGKILL after 0.1 to 0.5 s, again
   # and again until a run finishes by itself), resumed each time: the final file is the same.
+  # A larger sweep than S, with longer orbits, so that a run lasts well over 0.5 s (the covering
+  # search alone is now too fast for S to be interrupted).
+  K=(--q-range 0.6:0.98:12 --b-range 2e-3:0.45:10:log --transient 2000 --steps 2000)
+  "$cli" sweep "${K[@]}" > "$tmp/kserial.tsv" 2> /dev/null
+  status "the larger sweep, serial" 0 $?
   killed=0
   for attempt in 1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 17 18 19 20; do
-    ( timeout -s KILL "0.$((1 + attempt % 5))" "$cli" sweep "${S[@]}" --resume "$tmp/killed.tsv" --chunk 1 ) 2> /dev/null
+    ( timeout -s KILL "0.$((1 + attempt % 5))" "$cli" sweep "${K[@]}" --resume "$tmp/killed.tsv" --chunk 1 ) 2> /dev/null
     rc=$?
     [[ $rc -eq 137 ]] && killed=$((killed + 1))
     [[ $rc -eq 0 ]] && break
   done
-  "$cli" sweep "${S[@]}" --resume "$tmp/killed.tsv" 2> /dev/null
+  "$cli" sweep "${K[@]}" --resume "$tmp/killed.tsv" 2> /dev/null
   status "resumed after $killed SIGKILL(s)" 0 $?
   checks=$((checks + 1))
   if [[ $killed -ge 1 ]]; then echo "ok:   killed at least once"; else echo "FAIL: never killed (the run is faster than 0.1 s?)"; fails=$((fails + 1)); fi
-  same "killed $killed time(s) and resumed = one run" "$tmp/serial.tsv" "$tmp/killed.tsv"
+  same "killed $killed time(s) and resumed = one run" "$tmp/kserial.tsv" "$tmp/killed.tsv"
   ;;
 mpi)
   mpi=$3
