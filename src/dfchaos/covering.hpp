@@ -103,7 +103,7 @@ struct CoveringSearchStats {
 
 /// Disjoint covering segments of \f$[t_2, \text{top}]\f$ inside \f$[lo, hi]\f$, in ascending order.
 /// @throws InvalidParameter unless the map is defined and \f$t_2 \le lo < hi < t_3\f$.
-/// @param stats when given, counts a fallback of the Branchwise method to Dense.
+/// When `stats` is given, a fallback of the Branchwise method to Dense is counted in it.
 std::vector<CoveringSegment> covering_segments(const Parameters& p, double lo, double hi, double top,
                                                const CoveringSearch& search = {}, CoveringSearchStats* stats = nullptr);
 
