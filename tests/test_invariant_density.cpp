@@ -31,6 +31,34 @@ TEST(InvariantDensity, IsAProbabilityOnTheArc) {
   }
 }
 
+TEST(InvariantDensity, RecordsTheReturnOfTheComputedOrbitToT2) {
+  // Started at t2 itself, the first visit is index 0; the return time must be the first k with
+  // T^k(t2) == t2, found here by iterating T by hand (0 if there is none within the orbit). From the
+  // gallery's parameters, whose computed orbit of t2 does return: a second start, reaching t2 after
+  // a transient, must record the same return time, since it then follows the same computed orbit.
+  const Parameters p(1.0, 0.01, 0.85);
+  const double t2 = *p.t2(), t3 = *p.t3();
+  constexpr long long kSteps = 40000;
+  const OrbitHistogram h = orbit_histogram(p, t2, 0, kSteps, 50);
+  EXPECT_EQ(h.first_t2, 0);
+  long long by_hand = 0;
+  double x = t2;
+  for (long long k = 1; k < kSteps; ++k) {
+    x = T(p, x);
+    if (x == t2) {
+      by_hand = k;
+      break;
+    }
+  }
+  EXPECT_EQ(h.t2_return, by_hand);
+  ASSERT_GT(by_hand, 0) << "the computed orbit of t2 no longer returns within " << kSteps << " steps: pick other parameters";
+  EXPECT_EQ(h.at_t2, (kSteps - 1) / by_hand + 1);  // then it is periodic
+  const OrbitHistogram g = orbit_histogram(p, t2 + 0.3 * (t3 - t2), 100, 400000, 50);
+  ASSERT_GE(g.first_t2, 0);
+  EXPECT_EQ(g.t2_return, by_hand);
+  EXPECT_EQ(orbit_histogram(p, t2 + 0.3 * (t3 - t2), 0, 10, 50).first_t2, -1);
+}
+
 TEST(InvariantDensity, CountsTheOrbitThatIteratingTGives) {
   const Parameters p(1.0, 0.01, 0.85);
   const double t2 = *p.t2(), t3 = *p.t3(), theta0 = t2 + 0.6 * (t3 - t2);

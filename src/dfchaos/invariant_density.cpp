@@ -38,8 +38,19 @@ OrbitHistogram orbit_histogram(const Parameters& p, double theta0, long long tra
   h.hi = t3;
   h.counts.assign(static_cast<std::size_t>(bins), 0);
   double theta = theta0;
-  for (long long n = 0; n < transient; ++n) theta = T(p, theta);
+  long long visits = 0;  // of t2, from theta0 on (the transient included)
+  auto note = [&](long long n) {  // theta is the point with index n from theta0
+    if (theta != t2) return;
+    if (visits == 0) h.first_t2 = n;
+    else if (visits == 1) h.t2_return = n - h.first_t2;
+    ++visits;
+  };
+  for (long long n = 0; n < transient; ++n) {
+    note(n);
+    theta = T(p, theta);
+  }
   for (long long n = 0; n < steps; ++n) {
+    note(transient + n);
     if (theta == t2) {
       ++h.at_t2;
     } else if (theta >= t2 && theta < t3) {

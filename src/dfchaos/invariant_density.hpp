@@ -27,6 +27,16 @@ struct OrbitHistogram {
   long long at_t2 = 0;            ///< orbit points exactly equal to \f$t_2\f$ (the atom)
   long long outside = 0;          ///< orbit points outside \f$[t_2, t_3)\f$ (0 when T maps the arc into itself)
   long long steps = 0;            ///< N, the orbit points counted (after the transient)
+  /// Index of the first orbit point equal to \f$t_2\f$, counted from \f$\theta_0\f$ (index 0; the
+  /// transient included), or -1. From there on the computed orbit is the computed orbit of
+  /// \f$t_2\f$ (see t2_return).
+  long long first_t2 = -1;
+  /// Steps from the first visit of \f$t_2\f$ to the second, or 0 (fewer than two visits).
+  /// T is a function, so once the computed orbit returns to \f$t_2\f$ it repeats with this
+  /// period: every later point lies on one computed periodic orbit through \f$t_2\f$. For a
+  /// chaotic T the computed orbit of \f$t_2\f$ follows the exact one only for a few dozen steps, so
+  /// a long period says nothing about whether the exact orbit of \f$t_2\f$ is periodic.
+  long long t2_return = 0;
 
   double bin_width() const;        ///< \f$h = (t_3 - t_2)/K\f$
   double bin_lo(int k) const;      ///< left end of bin k
@@ -38,7 +48,8 @@ struct OrbitHistogram {
 
 /// Iterates \f$T\f$ from \f$\theta_0\f$: `transient` steps discarded, then the next `steps` points
 /// \f$\theta_n\f$ (starting with the point reached after the transient) binned into `bins` equal
-/// bins of \f$[t_2, t_3)\f$. Exactly transient + steps evaluations of T.
+/// bins of \f$[t_2, t_3)\f$, with the first two visits of \f$t_2\f$ recorded (first_t2, t2_return).
+/// Exactly transient + steps evaluations of T.
 /// @throws InvalidParameter unless the return map is defined, \f$\theta_0\in[t_2,t_3)\f$,
 ///         0 <= transient <= 10^9, 1 <= steps <= 10^9 and 1 <= bins <= 10^6;
 ///         GaveUp as return_map_step.
