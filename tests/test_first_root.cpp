@@ -121,6 +121,19 @@ TEST(FirstRoot, RegressionStartAtRestExactlyAtT2IsNotARoot) {
   }
 }
 
+TEST(FirstRoot, RegressionGrazingContactJustAfterTheSkipWindowIsFound) {
+  // Bug caught before it landed: a flight from rest in Case A of the start at rest falls on the
+  // piece next to the origin, which the scan may skip unevaluated. Here (theta just below 3 pi/2,
+  // b/a = 1e-10) the envelope's skip window jumped the cursor first, and the piece after the window
+  // was skipped as if it were the falling one: the grazing contact one period later (relative
+  // distance 1e-11 from a tangency) was missed, and T1 came out a period late. The reference
+  // value is that of tests/precision_reference.py (40 digits, written from Eq. (11) alone):
+  // T1 = 10.99554995361687790982548.
+  const Parameters p(1.0, 1e-10, 0.85);
+  const NextHit h = next_hit(p, 4.712388979803495);
+  EXPECT_NEAR(h.theta1, 10.99554995361687790982548, 1e-9);
+}
+
 TEST(SolveIncreasing, RegressionConvergedNewtonStopsWithoutBisecting) {
   // Bug fixed: once converged, the last Newton correction (a few ulp) landed on the bracket end
   // that the same iteration had just moved to x, was rejected as leaving the bracket, and the

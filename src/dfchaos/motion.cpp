@@ -67,6 +67,9 @@ QuadraticPlusHarmonic FreeMotion::gap(double y) const {
   f.B = 0;
   f.starts_at_rest = (x_start == y && v_start == 0);
   f.origin_at_inflection = f.starts_at_rest && starts_at_t2;  // F(t2) = 0 by definition
+  f.origin_trig = true;
+  f.origin_sin = sn;
+  f.origin_cos = cs;
   return f;
 }
 
@@ -78,10 +81,15 @@ QuadraticPlusHarmonic ProgressionMotion::minus_velocity() const {
   f.origin = start;
   f.alpha = 0;
   f.beta = -2.0L * k;
-  f.gamma = -static_cast<long double>(v_start) - a * std::cos(start.phase);
+  double sn, cs;
+  ::sincos(start.phase, &sn, &cs);  // (glibc: one call for both)
+  f.gamma = -static_cast<long double>(v_start) - a * cs;
   f.A = 0;
   f.B = a;
   f.starts_at_rest = (v_start == 0);
+  f.origin_trig = true;
+  f.origin_sin = sn;
+  f.origin_cos = cs;
   return f;
 }
 

@@ -63,7 +63,8 @@ MapStep return_map_step(const Parameters& p, double theta) {
     if (tr->from == Regime::Stop && tr->to == Regime::Progression && ++restarts_from_t0 >= 2)
       throw GaveUp("return map at theta=" + format_double(theta) + ": no return to free flight (" + p.describe() +
                    "): the progression from rest at t0 stops again before t2, so it repeats every period");
-    step.chain += std::string(">") + regime_code(tr->to);
+    step.chain += '>';
+    step.chain += regime_code(tr->to);
     if (tr->to == Regime::Progression) ++step.progressions;
     s = tr->after();
     if (s.regime == Regime::Free) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cfloat>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -103,6 +104,10 @@ struct RestStart {
   enum Kind { Root, NoRoot, Resume } kind;  ///< a root found; no root within the limit; scan on from kRestOffset
   UpCrossing root;                          ///< (Root) the root, possibly the origin itself
   long double left_value;                   ///< (Resume) f at kRestOffset, or -1 for "negative"
+  /// (Resume) Case A below: f'' < 0 at the origin beyond rounding and f' <= 0 there. Since f'' keeps
+  /// its sign on a piece, f' < 0 and f falls on the whole first piece of the scan, which therefore
+  /// holds no up-crossing and needs no evaluation.
+  bool falling = false;
 };
 
 /// Distance from the origin at which the scan of a start at rest resumes (where it always started).
@@ -132,8 +137,8 @@ constexpr long double kRestOffset = 1e-7L;
   // Double trigonometry resolves c2 unless it is small (the origin near an inflection, e.g. a
   // flight from near t2 or t3); then long double, whose error 1e-19 R fixes the sign of c2 for
   // every double phase in [t2, t3) (there |F| >= a cos(t3) ulp/2).
-  double sd, cd;
-  ::sincos(phi, &sd, &cd);  // (glibc; std::sin and std::cos here would be two calls)
+  double sd = f.origin_sin, cd = f.origin_cos;
+  if (!f.origin_trig) ::sincos(phi, &sd, &cd);  // (glibc; std::sin and std::cos here would be two calls)
   {
     // Fast path, in double, for the common Case A below (f'' < 0 well beyond rounding on the
     // whole rest region, f' not rising): the decision is the same as in long double.
@@ -143,7 +148,7 @@ constexpr long double kRestOffset = 1e-7L;
     const double scale = Rd + 2 * al;
     if (!f.origin_at_inflection && c1d <= static_cast<double>(tiny1) &&
         -c2d > std::fabs(Qd) * 1e-3 + 0.5e-6 * Rd + 1e-12 * scale && limit >= 1e-3L)
-      return {RestStart::Resume, {}, -1.0L};
+      return {RestStart::Resume, {}, -1.0L, true};
   }
   taylor(sd, cd);
   if (std::fabs(c2) < 1e-9L * (R + 2 * std::fabs(f.alpha)))
@@ -168,7 +173,7 @@ constexpr long double kRestOffset = 1e-7L;
     // Case A (by far the most common): f'' < 0 on [0, U], so f' < c1 <= 0 and f < 0 on (0, U];
     // the first piece of the scan is concave and falling, and is skipped whatever f is there.
     if (limit < kRestOffset) return {RestStart::NoRoot, {}, 0};
-    return {RestStart::Resume, {}, -1.0L};
+    return {RestStart::Resume, {}, -1.0L, true};
   } else {
     // Cases B, C: the cancellation-free form, accurate to a few ulp relative to its terms.
     auto half_minus_h1 = [](long double u) {  // 1/2 - (1 - cos u)/u^2
@@ -246,6 +251,46 @@ constexpr long double kRestOffset = 1e-7L;
   }
 }
 
+/// \f$R = \sqrt{A^2 + B^2}\f$: hypot, exact and cheaper when one of the two is 0, as in both event
+/// functions of the model.
+long double amplitude(double A, double B) {
+  if (B == 0) return std::fabs(A);
+  if (A == 0) return std::fabs(B);
+  return std::hypot(A, B);
+}
+
+/// inflection_phases_into, remembered per thread for the last two coefficient sets
+/// \f$(A, B, \alpha)\f$: an evaluation of T searches two kinds of function (the gap, the progression
+/// velocity), whose coefficients repeat from one search to the next. A pure function of its key,
+/// so the results do not depend on what was computed before.
+int inflection_phases_cached(const QuadraticPlusHarmonic& f, double out[2]) {
+  struct Entry {
+    bool valid = false;
+    double A = 0, B = 0;
+    long double alpha = 0;
+    int n = 0;
+    double at[2] = {0, 0};
+  };
+  thread_local Entry cache[2];
+  thread_local int next = 0;
+  for (const Entry& e : cache)
+    if (e.valid && e.A == f.A && e.B == f.B && e.alpha == f.alpha) {
+      out[0] = e.at[0];
+      out[1] = e.at[1];
+      return e.n;
+    }
+  Entry& e = cache[next];
+  next ^= 1;
+  e.n = inflection_phases_into(f, e.at);
+  e.A = f.A;
+  e.B = f.B;
+  e.alpha = f.alpha;
+  e.valid = true;
+  out[0] = e.at[0];
+  out[1] = e.at[1];
+  return e.n;
+}
+
 /// Where the search looks, from the quadratic envelope \f$\alpha s^2 + \beta s + \gamma \pm R\f$ of f
 /// (\f$R = \sqrt{A^2 + B^2}\f$).
 struct SearchBounds {
@@ -319,7 +364,7 @@ struct PieceBreaks {
 PieceBreaks piece_breaks(const QuadraticPlusHarmonic& f) {
   PieceBreaks b;
   double* buf = b.at.data();
-  const int n_inflections = inflection_phases_into(f, buf);
+  const int n_inflections = inflection_phases_cached(f, buf);
   for (int i = 0; i < n_inflections; ++i) {
     const double d = std::fabs(buf[i] - f.origin.phase);
     if (std::min(d, two_pi - d) < 1e-12) buf[i] = f.origin.phase;
@@ -376,46 +421,174 @@ struct Recentring {
   }
 };
 
+/// Steps up to this size (in phase) are taken from a known sine-cosine pair by the addition
+/// theorem with the short series of small_sincos(), not by a call of sincos (see PieceFunction).
+constexpr double kRotate = 0.25;
+
+/// \f$\sin h\f$ and \f$\cos h - 1\f$ for \f$|h| \le\f$ kRotate, by their Taylor series (to
+/// \f$h^{15}\f$ and \f$h^{16}\f$: the first omitted term is below \f$10^{-24}\f$ of the result).
+inline void small_sincos(double h, double& sn, double& cm1) {
+  const double h2 = h * h;
+  sn = h + h * h2 *
+               (-1.0 / 6 + h2 * (1.0 / 120 + h2 * (-1.0 / 5040 + h2 * (1.0 / 362880 + h2 * (-1.0 / 39916800 +
+                h2 * (1.0 / 6227020800 + h2 * (-1.0 / 1307674368000)))))));
+  cm1 = h2 * (-0.5 + h2 * (1.0 / 24 + h2 * (-1.0 / 720 + h2 * (1.0 / 40320 + h2 * (-1.0 / 3628800 +
+              h2 * (1.0 / 479001600 + h2 * (-1.0 / 87178291200 + h2 * (1.0 / 20922789888000))))))));
+}
+
+/// The harmonic part \f$H = A\sin\varphi + B\cos\varphi\f$ and its derivative
+/// \f$D = A\cos\varphi - B\sin\varphi\f$ at the piece time u.
+struct HarmonicAt {
+  double u = 0;
+  double H = 0;
+  double D = 0;
+};
+
 /// f on one piece, as a function of the time u elapsed since the piece's start (phase phi0): the
 /// polynomial part \f$(\alpha s + c_1) s + c_0\f$, \f$s = \mathrm{base} + u\f$ (Recentring::coefficients),
-/// plus the harmonic part. One formula, no branch in the evaluations.
-struct PieceFunction {
-  const QuadraticPlusHarmonic& f;
-  double phi0;       ///< phase of the piece's start
-  long double base;  ///< s at the piece's start, or 0 when re-centred
-  long double c1;    ///< linear coefficient (beta, or P1)
-  long double c0;    ///< constant (gamma, or P0)
+/// plus the harmonic part.
+///
+/// **The harmonic part without a sincos call per evaluation.** It is computed exactly (one sincos
+/// call) at a few anchors: the piece's ends and the points where an evaluation is more than
+/// kRotate from every anchor. Elsewhere, at \f$u = u_a + h\f$ with \f$|h| \le\f$ kRotate, it follows
+/// from the anchor's \f$(H, D)\f$ by the addition theorem,
+/// \f$H(u) = H + (H(\cos h - 1) + D\sin h)\f$, \f$D(u) = D + (D(\cos h - 1) - H\sin h)\f$, with the
+/// series of small_sincos(): a few multiplications instead of a sincos call, with an error of
+/// about one ulp of \f$R = \sqrt{A^2+B^2}\f$, as that of the direct evaluation. (The Newton steps of
+/// a root search are small: most of its evaluations rotate.)
+class PieceFunction {
+ public:
+  PieceFunction(const QuadraticPlusHarmonic& f, double phi0) : f_(f), phi0_(phi0) {}
+
+  const QuadraticPlusHarmonic& f_;
+  double phi0_;           ///< phase of the piece's start
+  long double base = 0;   ///< s at the piece's start, or 0 when re-centred
+  long double c1 = 0;     ///< linear coefficient (beta, or P1)
+  long double c0 = 0;     ///< constant (gamma, or P0)
 
   long double poly(double u) const {
     const long double s = base + u;
-    return (f.alpha * s + c1) * s + c0;
+    return (f_.alpha * s + c1) * s + c0;
   }
-  long double dpoly(double u) const { return 2 * f.alpha * (base + u) + c1; }
+  long double dpoly(double u) const { return 2 * f_.alpha * (base + u) + c1; }
+  /// The harmonic part and its derivative at u (exact at an anchor, else rotated from the nearest).
+  HarmonicAt harmonic(double u) {
+    const HarmonicAt* best = nullptr;
+    double best_d = kRotate;
+    for (int i = 0; i < n_anchors_; ++i) {
+      const double d = std::fabs(u - anchors_[i].u);
+      if (d <= best_d) {
+        best_d = d;
+        best = &anchors_[i];
+      }
+    }
+    if (best == nullptr) return exact(u);
+    if (best->u == u) return *best;
+    double sh, cm1;
+    small_sincos(u - best->u, sh, cm1);
+    return {u, best->H + (best->H * cm1 + best->D * sh), best->D + (best->D * cm1 - best->H * sh)};
+  }
   /// \f$f(u)\f$.
-  long double value(double u) const {
-    return poly(u) + static_cast<long double>(f.A * std::sin(phi0 + u) + f.B * std::cos(phi0 + u));
-  }
+  long double value(double u) { return poly(u) + static_cast<long double>(harmonic(u).H); }
   /// \f$f'(u)\f$.
-  long double slope(double u) const {
-    return dpoly(u) + static_cast<long double>(f.A * std::cos(phi0 + u) - f.B * std::sin(phi0 + u));
+  long double slope(double u) { return dpoly(u) + static_cast<long double>(harmonic(u).D); }
+  /// \f$(f, f')\f$.
+  std::pair<long double, long double> value_slope(double u) {
+    const HarmonicAt h = harmonic(u);
+    return {poly(u) + static_cast<long double>(h.H), dpoly(u) + static_cast<long double>(h.D)};
   }
-  /// \f$(f, f')\f$ from one sine-cosine evaluation.
-  std::pair<long double, long double> value_slope(double u) const {
-    const double sn = std::sin(phi0 + u), cs = std::cos(phi0 + u);
-    return {poly(u) + static_cast<long double>(f.A * sn + f.B * cs), dpoly(u) + static_cast<long double>(f.A * cs - f.B * sn)};
+  /// \f$(f', f'')\f$.
+  std::pair<long double, long double> slope_curvature(double u) {
+    const HarmonicAt h = harmonic(u);
+    return {dpoly(u) + static_cast<long double>(h.D), 2 * f_.alpha - static_cast<long double>(h.H)};
   }
-  /// \f$(f', f'')\f$ from one sine-cosine evaluation.
-  std::pair<long double, long double> slope_curvature(double u) const {
-    const double sn = std::sin(phi0 + u), cs = std::cos(phi0 + u);
-    return {dpoly(u) + static_cast<long double>(f.A * cs - f.B * sn), 2 * f.alpha - static_cast<long double>(f.A * sn + f.B * cs)};
+  /// \f$(f, f', f'')\f$.
+  std::tuple<long double, long double, long double> value_slope_curvature(double u) {
+    const HarmonicAt h = harmonic(u);
+    return {poly(u) + static_cast<long double>(h.H), dpoly(u) + static_cast<long double>(h.D), 2 * f_.alpha - static_cast<long double>(h.H)};
   }
+  /// \f$(f', f'', f''')\f$.
+  std::tuple<long double, long double, long double> slope_curvature_jerk(double u) {
+    const HarmonicAt h = harmonic(u);
+    return {dpoly(u) + static_cast<long double>(h.D), 2 * f_.alpha - static_cast<long double>(h.H), -static_cast<long double>(h.D)};
+  }
+
+ /// Makes a known harmonic part an anchor (the end of the previous piece, at u = 0).
+  void add_anchor(const HarmonicAt& h) { anchors_[n_anchors_ < 3 ? n_anchors_++ : 2] = h; }
+
+ private:
+  /// One sincos call at u; the result becomes an anchor (the two ends stay, a third slot is reused).
+  HarmonicAt exact(double u) {
+    double sn, cs;
+    ::sincos(phi0_ + u, &sn, &cs);  // (glibc: one call for both)
+    const HarmonicAt h{u, f_.A * sn + f_.B * cs, f_.A * cs - f_.B * sn};
+    add_anchor(h);
+    return h;
+  }
+  HarmonicAt anchors_[3];
+  int n_anchors_ = 0;
+};
+
+/// solve_increasing (roots_impl.hpp) with Halley's correction: `gd(x)` returns
+/// \f$(g, g', g'')\f$, all from one evaluation of the harmonic part (on a piece \f$f'' = 2\alpha - H\f$
+/// and \f$f''' = -D\f$ come with \f$f\f$ and \f$f'\f$). The step is the Newton step \f$g/g'\f$ divided by
+/// \f$1 - gg''/(2g'^2)\f$ when that ratio is below 1/2, else the Newton step; the bracket, the
+/// safeguards and the stopping rules are those of solve_increasing. Convergence is cubic, so a
+/// root usually takes three evaluations instead of five.
+template <class GD3>
+double solve_increasing_halley(GD3&& gd, double lo, double hi, double scale, long double g_lo, long double g_hi) {
+  const double tol = 4 * DBL_EPSILON * (std::fabs(scale) + std::fabs(hi) + 1.0);
+  double x = 0.5 * (lo + hi);
+  if (g_lo < 0 && g_hi > 0) {
+    const double sec = static_cast<double>(lo - g_lo * (hi - lo) / (g_hi - g_lo));
+    if (sec > lo && sec < hi) x = sec;
+  }
+  double dx_old = hi - lo, dx = dx_old;
+  for (int it = 0; it < 400; ++it) {
+    const auto [g, d, c] = gd(x);
+    if (g == 0) return x;
+    if (g < 0) lo = x; else hi = x;
+    if (hi - lo <= tol) return hi;
+    const bool newton_ok = d > 0 && std::fabs(2 * g) <= std::fabs(dx_old * d);
+    // The correction in double: its relative error 1e-16 moves the next iterate by far less
+    // than the tolerance.
+    double step = 0;
+    if (newton_ok) {
+      const double gd_ = static_cast<double>(g), dd_ = static_cast<double>(d);
+      step = gd_ / dd_;
+      const double r = step * static_cast<double>(c) / (2 * dd_);
+      if (std::fabs(r) < 0.5) step /= 1 - r;
+    }
+    if (newton_ok && std::fabs(step) <= 0.5 * tol) return x;
+    const double next = newton_ok ? x - step : 0.0;
+    dx_old = dx;
+    if (newton_ok && next > lo && next < hi) {
+      dx = x - next;
+      x = next;
+      if (std::fabs(dx) <= 0.5 * tol) return x;
+    } else {
+      dx = 0.5 * (hi - lo);
+      x = lo + dx;
+    }
+  }
+  throw std::logic_error("solve_increasing_halley: no convergence in 400 iterations");
+}
+
+/// f, f' and the harmonic part at the end of a piece: the start of the next one.
+struct PieceEnd {
+  bool valid = false;
+  long double value = 0;
+  long double slope = 0;
+  double H = 0;
+  double D = 0;
 };
 
 /// The first up-crossing of f on one piece [0, L] (f' monotone there), or nothing. `f_start` is f at
 /// u = 0 when known better than by a direct evaluation (after the rest region), else that
 /// evaluation; `pieces` is the work count to report with a crossing.
-std::optional<UpCrossing> search_piece(const QuadraticPlusHarmonic& f, const PieceFunction& pf, const Instant& cursor, long double s0,
-                                       double L, std::optional<long double> left_value, long double R, long pieces) {
+std::optional<UpCrossing> search_piece(const QuadraticPlusHarmonic& f, PieceFunction& pf, const Instant& cursor, long double s0,
+                                       double L, std::optional<long double> left_value, long double R, long pieces,
+                                       const PieceEnd& start, PieceEnd& end) {
   auto val_der = [&pf](double u) { return pf.value_slope(u); };
   auto crossing_at = [&](double u) {
     UpCrossing r;
@@ -425,17 +598,28 @@ std::optional<UpCrossing> search_piece(const QuadraticPlusHarmonic& f, const Pie
     r.pieces = pieces;
     return r;
   };
-  const double phi0 = pf.phi0;
-  // Value and slope at both ends (one sine-cosine evaluation each).
-  const auto [f_end, d1] = val_der(L);
-  const auto [f_start_computed, d0] = val_der(0);
+  const double phi0 = pf.phi0_;
+  // Value and slope at both ends (one sine-cosine evaluation each; the start's is the end of the
+  // previous piece when the scan continues from there).
+  const HarmonicAt h1 = pf.harmonic(L);
+  const long double f_end = pf.poly(L) + static_cast<long double>(h1.H), d1 = pf.dpoly(L) + static_cast<long double>(h1.D);
+  end = PieceEnd{true, f_end, d1, h1.H, h1.D};
+  long double f_start_computed, d0;
+  if (start.valid) {
+    pf.add_anchor(HarmonicAt{0, start.H, start.D});
+    f_start_computed = start.value;
+    d0 = start.slope;
+  } else {
+    std::tie(f_start_computed, d0) = val_der(0);
+  }
   const long double f_start = left_value ? *left_value : f_start_computed;
   // On a piece f' is monotone, so f is increasing, decreasing, convex with one minimum or
   // concave with one maximum. Two shortcuts avoid the split point m below:
   // (1) f(0) < 0 <= f(L): in every one of these shapes there is exactly one up-crossing in
   //     (0, L], with f < 0 before it and f >= 0 after it, so the sign bracket [0, L] is valid
   //     (the solver bisects where f' < 0).
-  if (f_start < 0 && f_end >= 0) return crossing_at(solve_increasing(val_der, 0, L, phi0, f_start, f_end));
+  auto val_der_curv = [&pf](double u) { return pf.value_slope_curvature(u); };
+  if (f_start < 0 && f_end >= 0) return crossing_at(solve_increasing_halley(val_der_curv, 0, L, phi0, f_start, f_end));
   // (2) f < 0 at both ends: only a concave piece can rise above 0 in between. Its graph lies
   //     below the tangent lines at both ends, so its maximum is at most where the tangents
   //     cross; the piece is skipped when that bound is negative beyond a rounding margin (the
@@ -452,14 +636,14 @@ std::optional<UpCrossing> search_piece(const QuadraticPlusHarmonic& f, const Pie
   double sub[3] = {0, L, L};
   int nsub = 1;
   if ((d0 > 0 && d1 < 0) || (d0 < 0 && d1 > 0)) {
-    auto der_curv = [&pf](double u) { return pf.slope_curvature(u); };
-    const double m = d0 > 0 ? solve_increasing(
+    auto der_curv = [&pf](double u) { return pf.slope_curvature_jerk(u); };
+    const double m = d0 > 0 ? solve_increasing_halley(
                                   [&](double u) {
-                                    const auto [d, c] = der_curv(u);
-                                    return std::pair<long double, long double>{-d, -c};
+                                    const auto [d, c, j] = der_curv(u);
+                                    return std::tuple<long double, long double, long double>{-d, -c, -j};
                                   },
                                   0, L, phi0, -d0, -d1)
-                            : solve_increasing(der_curv, 0, L, phi0, d0, d1);
+                            : solve_increasing_halley(der_curv, 0, L, phi0, d0, d1);
     sub[1] = m;
     nsub = 2;
   }
@@ -471,7 +655,7 @@ std::optional<UpCrossing> search_piece(const QuadraticPlusHarmonic& f, const Pie
     if (f1 < 0) continue;
     const long double f0 = u0 == 0 ? f_start : pf.value(u0);
     if (f0 >= 0) return crossing_at(u0);  // a start not strictly below zero
-    return crossing_at(solve_increasing(val_der, u0, u1, phi0, f0, f1));
+    return crossing_at(solve_increasing_halley(val_der_curv, u0, u1, phi0, f0, f1));
   }
   return std::nullopt;
 }
@@ -480,7 +664,7 @@ std::optional<UpCrossing> search_piece(const QuadraticPlusHarmonic& f, const Pie
 
 std::optional<UpCrossing> first_upcrossing(const QuadraticPlusHarmonic& f, const SearchLimits& limits) {
   if (f.alpha < 0) throw std::logic_error("first_upcrossing: alpha must be >= 0");
-  const long double R = std::hypot(f.A, f.B);
+  const long double R = amplitude(f.A, f.B);
   const SearchBounds bounds = search_bounds(f, R, limits.horizon);
   if (bounds.no_root) return std::nullopt;
   if (!std::isfinite(static_cast<double>(bounds.limit)))
@@ -495,6 +679,8 @@ std::optional<UpCrossing> first_upcrossing(const QuadraticPlusHarmonic& f, const
   std::optional<long double> left_value;
   long pieces = 0;
   Recentring recentring;
+  PieceEnd carried;  // f at the cursor from the end of the previous piece, when the scan goes on from there
+  bool falling_first_piece = false;  // the first piece falls (RestStart::falling): skipped unevaluated
   if (f.starts_at_rest) {
     const RestStart rs = rest_start(f, R, limit);
     if (rs.kind == RestStart::Root) return rs.root;
@@ -502,12 +688,15 @@ std::optional<UpCrossing> first_upcrossing(const QuadraticPlusHarmonic& f, const
     cursor = advance(f.origin, kRestOffset);
     s_cursor = elapsed(f.origin, cursor);
     left_value = rs.left_value;
+    falling_first_piece = rs.falling;
   }
   while (true) {
     if (bounds.in_window(s_cursor)) {
       cursor = advance(f.origin, std::min(bounds.we, limit));  // (a window may reach far beyond a horizon)
       s_cursor = elapsed(f.origin, cursor);
       left_value.reset();
+      carried = PieceEnd{};
+      falling_first_piece = false;  // (the piece after the window is not the one next to the origin)
     }
     if (s_cursor >= limit) break;
     if (++pieces > limits.max_pieces)
@@ -523,10 +712,13 @@ std::optional<UpCrossing> first_upcrossing(const QuadraticPlusHarmonic& f, const
       s_end = cut;
     }
     const double L = static_cast<double>(elapsed(cursor, end));
-    PieceFunction pf{f, cursor.phase, 0, 0, 0};
+    PieceFunction pf(f, cursor.phase);
     recentring.coefficients(f, cursor, s_cursor, pf.base, pf.c1, pf.c0);
-    if (L > 0)
-      if (auto root = search_piece(f, pf, cursor, s_cursor, L, left_value, R, pieces)) return root;
+    PieceEnd piece_end;
+    if (falling_first_piece) falling_first_piece = false;
+    else if (L > 0)
+      if (auto root = search_piece(f, pf, cursor, s_cursor, L, left_value, R, pieces, carried, piece_end)) return root;
+    carried = piece_end;
     if (pf.base == 0) recentring.carry(f, cursor, end, pf.c0, pf.c1);  // re-centred: carry P0, P1 over
     cursor = end;
     s_cursor = s_end;

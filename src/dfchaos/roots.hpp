@@ -67,6 +67,12 @@ struct QuadraticPlusHarmonic {
   /// \f$t_2\f$, where \f$F = 0\f$, although the rounded \f$t_2\f$ may give \f$F\f$ either sign in the
   /// last bit). The direction of departure is then that of \f$f'''\f$.
   bool origin_at_inflection = false;
+  /// Whether origin_sin and origin_cos hold \f$\sin\f$ and \f$\cos\f$ of the origin's phase, as
+  /// glibc's sincos gives them (the callers compute them anyway to form beta and gamma). The search
+  /// then uses them instead of calling sincos again; the values, hence the results, are the same.
+  bool origin_trig = false;
+  double origin_sin = 0;  ///< \f$\sin\f$ of the origin's phase (with origin_trig)
+  double origin_cos = 0;  ///< \f$\cos\f$ of the origin's phase (with origin_trig)
 
   /// \f$f\f$ at elapsed time \f$s\f$ whose phase is \f$\varphi\f$ (direct long-double evaluation).
   long double value_at(long double s, double phi) const;
