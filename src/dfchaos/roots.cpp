@@ -513,7 +513,7 @@ class PieceFunction {
     return {dpoly(u) + static_cast<long double>(h.D), 2 * f_.alpha - static_cast<long double>(h.H), -static_cast<long double>(h.D)};
   }
 
- /// Makes a known harmonic part an anchor (the end of the previous piece, at u = 0).
+  /// Makes a known harmonic part an anchor (the end of the previous piece, at u = 0).
   void add_anchor(const HarmonicAt& h) { anchors_[n_anchors_ < 3 ? n_anchors_++ : 2] = h; }
 
  private:
@@ -533,8 +533,8 @@ class PieceFunction {
 /// \f$(g, g', g'')\f$, all from one evaluation of the harmonic part (on a piece \f$f'' = 2\alpha - H\f$
 /// and \f$f''' = -D\f$ come with \f$f\f$ and \f$f'\f$). The step is the Newton step \f$g/g'\f$ divided by
 /// \f$1 - gg''/(2g'^2)\f$ when that ratio is below 1/2, else the Newton step; the bracket, the
-/// safeguards and the stopping rules are those of solve_increasing. Convergence is cubic, so a
-/// root usually takes three evaluations instead of five.
+/// safeguards and the stopping rules are those of solve_increasing. Convergence is cubic: at the
+/// bench's phases a root took about 4.2 evaluations, against 5.4 with Newton's steps.
 template <class GD3>
 double solve_increasing_halley(GD3&& gd, double lo, double hi, double scale, long double g_lo, long double g_hi) {
   const double tol = 4 * DBL_EPSILON * (std::fabs(scale) + std::fabs(hi) + 1.0);
