@@ -274,7 +274,9 @@ int inflection_phases_cached(const QuadraticPlusHarmonic& f, double out[2]) {
   thread_local Entry cache[2];
   thread_local int next = 0;
   for (const Entry& e : cache)
-    if (e.valid && e.A == f.A && e.B == f.B && e.alpha == f.alpha) {
+    // (signbit too: atan2 tells -0 from +0, so the inflections of B = -0 and B = +0 may differ)
+    if (e.valid && e.A == f.A && e.B == f.B && e.alpha == f.alpha && std::signbit(e.A) == std::signbit(f.A) &&
+        std::signbit(e.B) == std::signbit(f.B)) {
       out[0] = e.at[0];
       out[1] = e.at[1];
       return e.n;
@@ -449,8 +451,10 @@ struct HarmonicAt {
 /// plus the harmonic part.
 ///
 /// **The harmonic part without a sincos call per evaluation.** It is computed exactly (one sincos
-/// call) at a few anchors: the piece's ends and the points where an evaluation is more than
-/// kRotate from every anchor. Elsewhere, at \f$u = u_a + h\f$ with \f$|h| \le\f$ kRotate, it follows
+/// call) at a few anchors: the piece's end, its start (or, when the scan goes on from the previous
+/// piece, that piece's end, computed at its own start phase plus its length), and the points where
+/// an evaluation is more than kRotate from every anchor; on a piece shorter than kRotate with no
+/// carried start, the start is rotated from the end. Elsewhere, at \f$u = u_a + h\f$ with \f$|h| \le\f$ kRotate, it follows
 /// from the anchor's \f$(H, D)\f$ by the addition theorem,
 /// \f$H(u) = H + (H(\cos h - 1) + D\sin h)\f$, \f$D(u) = D + (D(\cos h - 1) - H\sin h)\f$, with the
 /// series of small_sincos(): a few multiplications instead of a sincos call, with an error of
@@ -549,16 +553,17 @@ double solve_increasing_halley(GD3&& gd, double lo, double hi, double scale, lon
     if (g == 0) return x;
     if (g < 0) lo = x; else hi = x;
     if (hi - lo <= tol) return hi;
-    const bool newton_ok = d > 0 && std::fabs(2 * g) <= std::fabs(dx_old * d);
     // The correction in double: its relative error 1e-16 moves the next iterate by far less
-    // than the tolerance.
+    // than the tolerance. It is accepted (as in solve_increasing) only if it is at most half the
+    // step before the last one, so that the steps taken keep halving.
     double step = 0;
-    if (newton_ok) {
+    if (d > 0) {
       const double gd_ = static_cast<double>(g), dd_ = static_cast<double>(d);
       step = gd_ / dd_;
       const double r = step * static_cast<double>(c) / (2 * dd_);
       if (std::fabs(r) < 0.5) step /= 1 - r;
     }
+    const bool newton_ok = d > 0 && std::fabs(2 * step) <= std::fabs(dx_old);
     if (newton_ok && std::fabs(step) <= 0.5 * tol) return x;
     const double next = newton_ok ? x - step : 0.0;
     dx_old = dx;

@@ -69,7 +69,7 @@ struct QuadraticPlusHarmonic {
   bool origin_at_inflection = false;
   /// Whether origin_sin and origin_cos hold \f$\sin\f$ and \f$\cos\f$ of the origin's phase, as
   /// glibc's sincos gives them (the callers compute them anyway to form beta and gamma). The search
-  /// then uses them instead of calling sincos again; the values, hence the results, are the same.
+  /// then uses them instead of calling sincos again (the values are those sincos gives there).
   bool origin_trig = false;
   double origin_sin = 0;  ///< \f$\sin\f$ of the origin's phase (with origin_trig)
   double origin_cos = 0;  ///< \f$\cos\f$ of the origin's phase (with origin_trig)
