@@ -501,11 +501,6 @@ class PieceFunction {
     const HarmonicAt h = harmonic(u);
     return {poly(u) + static_cast<long double>(h.H), dpoly(u) + static_cast<long double>(h.D)};
   }
-  /// \f$(f', f'')\f$.
-  std::pair<long double, long double> slope_curvature(double u) {
-    const HarmonicAt h = harmonic(u);
-    return {dpoly(u) + static_cast<long double>(h.D), 2 * f_.alpha - static_cast<long double>(h.H)};
-  }
   /// \f$(f, f', f'')\f$.
   std::tuple<long double, long double, long double> value_slope_curvature(double u) {
     const HarmonicAt h = harmonic(u);
@@ -532,52 +527,6 @@ class PieceFunction {
   HarmonicAt anchors_[3];
   int n_anchors_ = 0;
 };
-
-/// solve_increasing (roots_impl.hpp) with Halley's correction: `gd(x)` returns
-/// \f$(g, g', g'')\f$, all from one evaluation of the harmonic part (on a piece \f$f'' = 2\alpha - H\f$
-/// and \f$f''' = -D\f$ come with \f$f\f$ and \f$f'\f$). The step is the Newton step \f$g/g'\f$ divided by
-/// \f$1 - gg''/(2g'^2)\f$ when that ratio is below 1/2, else the Newton step; the bracket, the
-/// safeguards and the stopping rules are those of solve_increasing. Convergence is cubic: at the
-/// bench's phases a root took about 4.2 evaluations, against 5.4 with Newton's steps.
-template <class GD3>
-double solve_increasing_halley(GD3&& gd, double lo, double hi, double scale, long double g_lo, long double g_hi) {
-  const double tol = 4 * DBL_EPSILON * (std::fabs(scale) + std::fabs(hi) + 1.0);
-  double x = 0.5 * (lo + hi);
-  if (g_lo < 0 && g_hi > 0) {
-    const double sec = static_cast<double>(lo - g_lo * (hi - lo) / (g_hi - g_lo));
-    if (sec > lo && sec < hi) x = sec;
-  }
-  double dx_old = hi - lo, dx = dx_old;
-  for (int it = 0; it < 400; ++it) {
-    const auto [g, d, c] = gd(x);
-    if (g == 0) return x;
-    if (g < 0) lo = x; else hi = x;
-    if (hi - lo <= tol) return hi;
-    // The correction in double: its relative error 1e-16 moves the next iterate by far less
-    // than the tolerance. It is accepted (as in solve_increasing) only if it is at most half the
-    // step before the last one, so that the steps taken keep halving.
-    double step = 0;
-    if (d > 0) {
-      const double gd_ = static_cast<double>(g), dd_ = static_cast<double>(d);
-      step = gd_ / dd_;
-      const double r = step * static_cast<double>(c) / (2 * dd_);
-      if (std::fabs(r) < 0.5) step /= 1 - r;
-    }
-    const bool newton_ok = d > 0 && std::fabs(2 * step) <= std::fabs(dx_old);
-    if (newton_ok && std::fabs(step) <= 0.5 * tol) return x;
-    const double next = newton_ok ? x - step : 0.0;
-    dx_old = dx;
-    if (newton_ok && next > lo && next < hi) {
-      dx = x - next;
-      x = next;
-      if (std::fabs(dx) <= 0.5 * tol) return x;
-    } else {
-      dx = 0.5 * (hi - lo);
-      x = lo + dx;
-    }
-  }
-  throw std::logic_error("solve_increasing_halley: no convergence in 400 iterations");
-}
 
 /// f, f' and the harmonic part at the end of a piece: the start of the next one.
 struct PieceEnd {
@@ -624,7 +573,7 @@ std::optional<UpCrossing> search_piece(const QuadraticPlusHarmonic& f, PieceFunc
   //     (0, L], with f < 0 before it and f >= 0 after it, so the sign bracket [0, L] is valid
   //     (the solver bisects where f' < 0).
   auto val_der_curv = [&pf](double u) { return pf.value_slope_curvature(u); };
-  if (f_start < 0 && f_end >= 0) return crossing_at(solve_increasing_halley(val_der_curv, 0, L, phi0, f_start, f_end));
+  if (f_start < 0 && f_end >= 0) return crossing_at(solve_increasing(val_der_curv, 0, L, phi0, f_start, f_end));
   // (2) f < 0 at both ends: only a concave piece can rise above 0 in between. Its graph lies
   //     below the tangent lines at both ends, so its maximum is at most where the tangents
   //     cross; the piece is skipped when that bound is negative beyond a rounding margin (the
@@ -642,13 +591,13 @@ std::optional<UpCrossing> search_piece(const QuadraticPlusHarmonic& f, PieceFunc
   int nsub = 1;
   if ((d0 > 0 && d1 < 0) || (d0 < 0 && d1 > 0)) {
     auto der_curv = [&pf](double u) { return pf.slope_curvature_jerk(u); };
-    const double m = d0 > 0 ? solve_increasing_halley(
+    const double m = d0 > 0 ? solve_increasing(
                                   [&](double u) {
                                     const auto [d, c, j] = der_curv(u);
                                     return std::tuple<long double, long double, long double>{-d, -c, -j};
                                   },
                                   0, L, phi0, -d0, -d1)
-                            : solve_increasing_halley(der_curv, 0, L, phi0, d0, d1);
+                            : solve_increasing(der_curv, 0, L, phi0, d0, d1);
     sub[1] = m;
     nsub = 2;
   }
@@ -660,7 +609,7 @@ std::optional<UpCrossing> search_piece(const QuadraticPlusHarmonic& f, PieceFunc
     if (f1 < 0) continue;
     const long double f0 = u0 == 0 ? f_start : pf.value(u0);
     if (f0 >= 0) return crossing_at(u0);  // a start not strictly below zero
-    return crossing_at(solve_increasing_halley(val_der_curv, u0, u1, phi0, f0, f1));
+    return crossing_at(solve_increasing(val_der_curv, u0, u1, phi0, f0, f1));
   }
   return std::nullopt;
 }

@@ -115,7 +115,8 @@ std::optional<UpCrossing> first_upcrossing(const QuadraticPlusHarmonic& f, const
 /// Safeguarded Newton iteration for an increasing function on \f$[lo, hi]\f$ with
 /// \f$g(lo) < 0 \le g(hi)\f$ (end values g_lo, g_hi, used for a secant start); `gd(x)` returns the
 /// pair \f$(g(x), g'(x))\f$. Newton steps inside the bracket, bisection when a step would leave it
-/// or fails to halve the previous one (as in Numerical Recipes' rtsafe). Stops when the Newton
+/// or fails to halve the previous one (as in Numerical Recipes' rtsafe). When `gd(x)` returns a
+/// triple \f$(g, g', g'')\f$ the correction is Halley's (cubic convergence), computed in double. Stops when the Newton
 /// correction or the bracket falls below the tolerance \f$4\epsilon(|x_0| + |hi| + 1)\f$, where
 /// \f$x_0\f$ is the offset scale.
 /// @throws std::logic_error if 400 iterations do not suffice.

@@ -5,6 +5,8 @@
 #include <cfloat>
 #include <cmath>
 #include <stdexcept>
+#include <tuple>
+#include <type_traits>
 
 namespace dfchaos {
 
@@ -20,16 +22,36 @@ double solve_increasing(GD&& gd, double lo, double hi, double scale, long double
   }
   double dx_old = hi - lo, dx = dx_old;
   for (int it = 0; it < 400; ++it) {
-    const auto [g, d] = gd(x);  // value and derivative from one evaluation
+    const auto r = gd(x);  // value and derivative (and second derivative) from one evaluation
+    const long double g = std::get<0>(r), d = std::get<1>(r);
     if (g == 0) return x;
     if (g < 0) lo = x; else hi = x;
     if (hi - lo <= tol) return hi;
-    const bool newton_ok = d > 0 && std::fabs(2 * g) <= std::fabs(dx_old * d);
-    // Converged: the Newton correction is below the tolerance. (Tested before the bracket test:
-    // a correction of a few ulp lands on the bracket end just set to x, and rejecting it would
-    // fall back to bisection for ~50 more evaluations.)
-    if (newton_ok && std::fabs(g / d) <= 0.5L * tol) return x;
-    const double newton = newton_ok ? static_cast<double>(x - g / d) : 0.0;
+    bool newton_ok;
+    double newton;
+    if constexpr (std::tuple_size_v<std::decay_t<decltype(r)>> == 3) {
+      // Halley's correction, in double (its relative error 1e-16 moves the next iterate by far
+      // less than the tolerance): the Newton step divided by 1 - g g''/(2 g'^2) when that ratio is
+      // below 1/2. Accepted only if at most half the step before the last one.
+      double step = 0;
+      if (d > 0) {
+        const double gd_ = static_cast<double>(g), dd_ = static_cast<double>(d);
+        step = gd_ / dd_;
+        const double ratio = step * static_cast<double>(std::get<2>(r)) / (2 * dd_);
+        if (std::fabs(ratio) < 0.5) step /= 1 - ratio;
+      }
+      newton_ok = d > 0 && std::fabs(2 * step) <= std::fabs(dx_old);
+      // Converged: the correction is below the tolerance (see below).
+      if (newton_ok && std::fabs(step) <= 0.5 * tol) return x;
+      newton = newton_ok ? x - step : 0.0;
+    } else {
+      newton_ok = d > 0 && std::fabs(2 * g) <= std::fabs(dx_old * d);
+      // Converged: the Newton correction is below the tolerance. (Tested before the bracket test:
+      // a correction of a few ulp lands on the bracket end just set to x, and rejecting it would
+      // fall back to bisection for ~50 more evaluations.)
+      if (newton_ok && std::fabs(g / d) <= 0.5L * tol) return x;
+      newton = newton_ok ? static_cast<double>(x - g / d) : 0.0;
+    }
     dx_old = dx;
     if (newton_ok && newton > lo && newton < hi) {
       dx = x - newton;
