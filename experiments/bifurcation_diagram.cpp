@@ -5,13 +5,16 @@
 /// same axis. T' is checked against central finite differences on a grid of phases. Since T is
 /// constant (= t2) on the arcs where the motion stops, an orbit that meets such an arc continues as
 /// the orbit of t2: the diagram shows where that orbit is periodic (a superstable cycle through t2)
-/// and its period.
+/// and its period, and whether double precision resolves that cycle (superstable.hpp, t2_cycle: a
+/// computed return to t2 after the derivative has grown past the inverse rounding error is a cycle
+/// of the rounding, not of T).
 #include <algorithm>
 #include <cmath>
 #include <vector>
 
 #include "dfchaos/covering.hpp"
 #include "dfchaos/map_derivative.hpp"
+#include "dfchaos/superstable.hpp"
 #include "kit/experiment.hpp"
 #include "kit/grid.hpp"
 
@@ -22,6 +25,11 @@ namespace {
 constexpr double kDerivativeRelTol = 1e-4;  // T' (implicit function theorem) against central differences
 struct Point {
   double b, q;
+};
+/// One parameter value: the orbit's statistics and, when the orbit returned to t2, that cycle's resolution.
+struct Value {
+  OrbitStatistics orbit;
+  T2Cycle cycle;
 };
 }  // namespace
 
@@ -36,7 +44,9 @@ const Experiment experiment{
                 real("q", 0.85, "q/a of the b/a sweep").range(0.5, 0.999).recorded_as("q_of_b_sweep"),
                 real("b", 0.01, "b/a of the q/a sweep").range(1e-5, 0.2).recorded_as("b_of_q_sweep")},
     .outputs = {data("orbits", "phases of the orbit of T after the transient, per parameter value"),
-                data("lyapunov", "Lyapunov exponent (-inf when a step has T' = 0), steps with a stop, period of the superstable cycle through t2 (0: none seen)"),
+                data("lyapunov", "Lyapunov exponent (-inf when a step has T' = 0), steps with a stop, period of the computed cycle through t2 (0: none seen), "
+                                "whether double precision resolves that cycle (1: a superstable cycle; 0: none, or a cycle of the rounding) and "
+                                "its margin (superstable.hpp, t2_cycle)"),
                 data("derivative-check", "T' by the implicit function theorem against central differences (every 10th compared phase)")},
     .body = [](Run& run) {
       const int nb = run.count_int("nb"), nq = run.count_int("nq"), transient = run.count_int("transient"), keep = run.count_int("keep");
@@ -49,27 +59,40 @@ const Experiment experiment{
       const Axis b_axis = Axis::log_ratio(1e-3, 200.0, nb), q_axis = Axis::linear(0.5, 0.99, nq);
       for (int j = 0; j < nb; ++j) pts.push_back({b_axis[j], q_fixed});
       for (int j = 0; j < nq; ++j) pts.push_back({b_fixed, q_axis[j]});
-      const auto st = sweep_list<OrbitStatistics, Point>(
+      const auto st = sweep_list<Value, Point>(
           pts,
           [&](const Point& pt) {
             const Parameters p(1.0, pt.b, pt.q);
-            return orbit_statistics(p, *p.t2() + 0.377 * (*p.t3() - *p.t2()), transient, averaged, keep);
+            Value v{orbit_statistics(p, *p.t2() + 0.377 * (*p.t3() - *p.t2()), transient, averaged, keep), {}};
+            // The cycle the orbit fell onto is that of t2: followed again from t2, with its error.
+            if (v.orbit.period_of_t2 > 0) v.cycle = t2_cycle(p, v.orbit.period_of_t2);
+            return v;
           },
           "orbit diagram");
       Table diagram({"sweep", "b_over_a", "q_over_a", "theta"});
-      Table lyap({"sweep", "b_over_a", "q_over_a", "lyapunov", "flat_steps", "period_of_t2", "penetration_rate", "failed"});
-      long long superstable = 0, positive = 0, fails = 0;
+      Table lyap({"sweep", "b_over_a", "q_over_a", "lyapunov", "flat_steps", "period_of_t2", "t2_cycle_resolved", "t2_cycle_margin",
+                  "penetration_rate", "failed"});
+      long long superstable = 0, returns = 0, positive = 0, fails = 0;
+      long long shortest_unresolved = 0;  // the shortest computed return to t2 that is not resolved (0: none)
+      double best_unresolved_margin = 0;  // the largest margin among those returns
       for (std::size_t i = 0; i < pts.size(); ++i) {
         const std::string sweep = i < static_cast<std::size_t>(nb) ? "b" : "q";
         if (st[i].failed) {
           ++fails;
-          lyap.row({sweep, pts[i].b, pts[i].q, NAN, 0LL, 0LL, NAN, 1LL});
+          lyap.row({sweep, pts[i].b, pts[i].q, NAN, 0LL, 0LL, 0LL, NAN, NAN, 1LL});
           continue;
         }
-        const OrbitStatistics& s = st[i].value;
+        const OrbitStatistics& s = st[i].value.orbit;
+        const T2Cycle& c = st[i].value.cycle;
         for (double th : s.tail) diagram.row({sweep, pts[i].b, pts[i].q, th});
-        lyap.row({sweep, pts[i].b, pts[i].q, s.lyapunov, s.flat_steps, s.period_of_t2, s.penetration_rate, 0LL});
-        if (s.period_of_t2 > 0) ++superstable;
+        lyap.row({sweep, pts[i].b, pts[i].q, s.lyapunov, s.flat_steps, s.period_of_t2, static_cast<long long>(c.resolved),
+                  s.period_of_t2 > 0 ? c.margin : NAN, s.penetration_rate, 0LL});
+        if (s.period_of_t2 > 0) ++returns;
+        if (c.resolved) ++superstable;
+        if (s.period_of_t2 > 0 && !c.resolved) {
+          shortest_unresolved = shortest_unresolved == 0 ? s.period_of_t2 : std::min(shortest_unresolved, s.period_of_t2);
+          best_unresolved_margin = std::max(best_unresolved_margin, c.margin);
+        }
         if (std::isfinite(s.lyapunov) && s.lyapunov > 0) ++positive;
       }
       run.table("orbits", diagram);
@@ -102,6 +125,12 @@ const Experiment experiment{
       }
       run.table("derivative-check", fd);
       run.out.macro("BifSuperstableValues", std::to_string(superstable));
+      run.out.macro("BifReturnsToTTwo", std::to_string(returns));
+      run.out.macro("BifReturnsUnresolved", std::to_string(returns - superstable));
+      run.out.macro("BifUnresolvedShortestPeriod", std::to_string(shortest_unresolved));
+      run.out.macro("BifUnresolvedBestMargin", best_unresolved_margin, 2);
+      run.out.macro("BifCycleSafety", kT2CycleSafety, 2);
+      run.out.macro("BifCycleStepError", kT2CycleStepError, 1);
       run.out.macro("BifValues", std::to_string(pts.size()));
       run.out.macro("BifPositiveLyapunov", std::to_string(positive));
       run.out.macro("BifDerivativeWorst", worst, 2);
@@ -117,9 +146,13 @@ const Experiment experiment{
       // Not expected: a finding, not an assertion of the paper.
       run.out.claim("bif.collapse_onto_t2", "Lemma 3, Theorem 2 (beyond)", EvidenceKind::Sampled,
                     "After the transient, the orbit of a typical phase has met an arc where T = t2 and continues as the orbit of t2; "
-                    "at most parameter values that orbit is a superstable cycle through t2 (T' = 0 on it: a Lyapunov exponent of minus infinity).")
+                    "at most parameter values that orbit is a superstable cycle through t2 (T' = 0 on it: a Lyapunov exponent of minus infinity), "
+                    "resolved in double precision (the error propagated along it stays " + format_tolerance(kT2CycleSafety) +
+                    " times inside every stop arc it uses).")
           .ours().not_expected()
+          .parameter("safety", kT2CycleSafety)
           .evidence("parameter_values", static_cast<long long>(pts.size())).evidence("superstable_cycle_through_t2", superstable)
+          .evidence("computed_returns_to_t2", returns).evidence("returns_not_resolved", returns - superstable)
           .evidence("positive_lyapunov", positive).evidence("map_undefined", fails)
           .holds(superstable * 2 > static_cast<long long>(pts.size()));
     }};

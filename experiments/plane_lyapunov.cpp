@@ -4,15 +4,19 @@
 /// (sin vartheta0, 1), b/a log-spaced in [1e-4, 0.1]), computed by the sweep engine (the cells of
 /// `dfchaos sweep --observables lyapunov` with its default orbit: from t2 + (t3 - t2)/2, 1000 steps
 /// discarded, 1000 averaged). \f$\lambda = -\infty\f$ marks an orbit that meets a stop (T' = 0 on a
-/// stop arc: the superstable regime of Theorem 2); \f$\lambda > 0\f$ the expanding regime where
+/// stop arc); such an orbit goes on as the orbit of t2, and in those cells t2_cycle (superstable.hpp)
+/// says whether that orbit closes, within kCycleMaxPeriod steps, on a superstable cycle that double
+/// precision resolves (the superstable regime of Theorem 2); \f$\lambda > 0\f$ the expanding regime where
 /// Theorem 1's covering is found. Every cell is independent: the output does not depend on the
 /// number of threads, and equals the sweep tool's (tested by plane_lyapunov_vs_sweep).
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "dfchaos/parameters.hpp"
+#include "dfchaos/superstable.hpp"
 #include "kit/experiment.hpp"
 #include "kit/grid.hpp"
 #include "sweep/cell.hpp"
@@ -22,6 +26,8 @@ using namespace dfchaos;
 using namespace dfchaos::kit;
 
 namespace {
+/// The longest cycle through t2 looked for in a cell whose orbit meets a stop.
+constexpr long long kCycleMaxPeriod = 1000;
 std::string g17(double x) {
   char buf[40];
   std::snprintf(buf, sizeof buf, "%.17g", x);
@@ -32,7 +38,7 @@ std::string g17(double x) {
 const Experiment experiment{
     .title = "The Lyapunov exponent of T over the (q/a, b/a) plane",
     .paper = {"Theorem 1", "Theorem 2", "Section 8"},
-    .tests = {"test_sweep", "plane_lyapunov_vs_sweep"},
+    .tests = {"test_sweep", "plane_lyapunov_vs_sweep", "test_beyond"},
     .options = {count("n", 160, "grid points on each axis (q/a cell centres of (sin vartheta0, 1); b/a log-spaced in [1e-4, 0.1])")
                     .range(2, 2000)
                     .fast_value(8)},
@@ -65,14 +71,33 @@ const Experiment experiment{
         if (v.lyapunov > lmax) { lmax = v.lyapunov; qmax = v.q_over_a; bmax = v.b_over_a; }
       }
       run.table("", t);
+
+      // The cells whose orbit met a stop: does the orbit of t2 close on a resolved superstable cycle?
+      std::vector<std::pair<double, double>> stop_cells;  // (q/a, b/a)
+      for (const auto& c : values)
+        if (!c.failed && c.value.status == sweep::CellStatus::Ok && std::isinf(c.value.lyapunov) && c.value.lyapunov < 0)
+          stop_cells.push_back({c.value.q_over_a, c.value.b_over_a});
+      const auto cycles = sweep_list<T2Cycle, std::pair<double, double>>(
+          stop_cells, [](const std::pair<double, double>& c) { return t2_cycle(Parameters(1.0, c.second, c.first), kCycleMaxPeriod); },
+          "plane_lyapunov t2 cycles");
+      long long n_resolved = 0, n_unresolved_return = 0;
+      for (const auto& c : cycles) {
+        if (c.failed) continue;
+        if (c.value.resolved) ++n_resolved;
+        else if (c.value.period > 0) ++n_unresolved_return;
+      }
       const long long n_cells = spec.cells();
       run.out.claim("plane.lyapunov_both_regimes", "Theorems 1 and 2", EvidenceKind::Sampled,
                     "Over the plane, orbits with a positive Lyapunov exponent (the expanding regime of Theorem 1) and orbits "
-                    "that meet a stop, where lambda is minus infinity (the superstable regime of Theorem 2), both occur.")
+                    "that meet a stop (lambda is then minus infinity) in cells where the orbit of t2 closes, within " +
+                        std::to_string(kCycleMaxPeriod) +
+                        " steps, on a superstable cycle resolved in double precision (the superstable regime of Theorem 2), both occur.")
           .ours()
-          .evidence("cells", n_cells).evidence("positive", n_pos).evidence("stop", n_stop).evidence("finite_nonpositive", n_neg)
+          .evidence("cells", n_cells).evidence("positive", n_pos).evidence("stop", n_stop)
+          .evidence("stop_resolved_cycle", n_resolved).evidence("stop_unresolved_return", n_unresolved_return)
+          .evidence("finite_nonpositive", n_neg)
           .evidence("errors", n_err).evidence("max_lyapunov", lmax).evidence("max_at_q_over_a", qmax).evidence("max_at_b_over_a", bmax)
-          .holds(n_pos > 0 && n_stop > 0);
+          .holds(n_pos > 0 && n_resolved > 0);
       run.out.claim("plane.lyapunov_computed", "Theorem 1", EvidenceKind::Sampled,
                     "Every cell's orbit was followed without error.")
           .ours()
@@ -82,6 +107,9 @@ const Experiment experiment{
       run.out.macro("LyapCells", std::to_string(n_cells));
       run.out.macro("LyapPositive", std::to_string(n_pos));
       run.out.macro("LyapStop", std::to_string(n_stop));
+      run.out.macro("LyapStopResolved", std::to_string(n_resolved));
+      run.out.macro("LyapStopUnresolvedReturn", std::to_string(n_unresolved_return));
+      run.out.macro("LyapCycleMaxPeriod", std::to_string(kCycleMaxPeriod));
       run.out.macro("LyapNonpositive", std::to_string(n_neg));
       run.out.macro("LyapMax", lmax, 3);
     }};

@@ -2,8 +2,9 @@
 # the transient against b/a (q/a = 0.85) and against q/a (b/a = 0.01). Bottom: the Lyapunov
 # exponent lambda (mean of ln|T'|) where it is finite; parameter values whose orbit meets a stop
 # arc (a step with T' = 0, so lambda = -inf) are drawn in a band of their own below the axis
-# break, marked -inf, and those whose orbit then returns to t2 (a superstable cycle through t2)
-# with a second marker. Where q/a < sin(vartheta0) assumption (2) fails: shaded.
+# break, marked -inf, and those whose orbit then returns to t2 on a cycle that double precision
+# resolves (a superstable cycle through t2: column t2_cycle_resolved) with a second marker; a
+# computed return that it does not resolve (a cycle of the rounding) keeps the first marker. Where q/a < sin(vartheta0) assumption (2) fails: shaded.
 load figdir."/style.gp"
 set terminal cairolatex pdf input size 15cm,11.5cm
 set output "fig_bifurcation.tex"
@@ -76,9 +77,9 @@ do for [k=1:2] {
     xcol = "q_over_a"
   }
   plot lya using (strcol("sweep") eq sw && column("flat_steps") == 0 ? column(xcol) : NaN):"lyapunov" w p pt 7 ps 0.3 lc rgb c_prog notitle, \
-       lya using (strcol("sweep") eq sw && column("flat_steps") > 0 && column("period_of_t2") == 0 ? column(xcol) : NaN):(ninf) \
+       lya using (strcol("sweep") eq sw && column("flat_steps") > 0 && column("t2_cycle_resolved") == 0 ? column(xcol) : NaN):(ninf) \
          w p pt 2 ps 0.7 lw 1.5 lc rgb "black" notitle, \
-       lya using (strcol("sweep") eq sw && column("period_of_t2") > 0 ? column(xcol) : NaN):(ninf) \
+       lya using (strcol("sweep") eq sw && column("t2_cycle_resolved") == 1 ? column(xcol) : NaN):(ninf) \
          w p pt 4 ps 0.9 lw 1.5 lc rgb c_stop notitle
   unset object 1; unset object 2; unset object 3; unset label 1; unset arrow 1
 }
@@ -92,7 +93,7 @@ set object 11 circle at screen 0.03, screen ky size screen 0.004 fc rgb c_prog f
 set label 11 '\small finite $\lambda$' at screen 0.045, screen ky left front
 set label 12 '$\times$' at screen 0.165, screen ky center front
 set label 13 '\small $\lambda=-\infty$: a step with $T''=0$ (stop)' at screen 0.18, screen ky left front
-set label 14 '{\color[rgb]{0.17,0.63,0.17}$\square$}' at screen 0.595, screen ky center front
-set label 15 '\small $\lambda=-\infty$, superstable cycle through $t_2$' at screen 0.61, screen ky left front
+set label 14 '{\color[rgb]{0.17,0.63,0.17}$\square$}' at screen 0.56, screen ky center front
+set label 15 '\small $\lambda=-\infty$, superstable cycle through $t_2$ (resolved)' at screen 0.575, screen ky left front
 plot NaN notitle
 unset multiplot

@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "dfchaos/bisect.hpp"
 #include "dfchaos/errors.hpp"
+#include "dfchaos/map_derivative.hpp"
 
 namespace dfchaos {
 
@@ -129,6 +131,54 @@ std::vector<SuperstableWindow> superstable_windows(double a, double q, double b_
   }
   std::sort(out.begin(), out.end(), [](const SuperstableWindow& x, const SuperstableWindow& y) { return x.b_lo < y.b_lo; });
   return out;
+}
+
+namespace {
+
+/// The largest radius r of 1e-14, 1e-13, ..., 1e-2 such that T has a stop at theta +- r for it and
+/// every smaller one (0 if already 1e-14 fails). Probes outside [t2, t3) are skipped: theta = t2 is
+/// the left end of the domain.
+double stop_arc_radius(const Parameters& p, double theta) {
+  const double t2 = p.t2_required(), t3 = p.t3_required();
+  double radius = 0;
+  for (int j = -14; j <= -2; ++j) {
+    const double r = std::pow(10.0, j);
+    for (const double x : {theta - r, theta + r})
+      if (x >= t2 && x < t3 && !map_derivative(p, x).flat) return radius;
+    radius = r;
+  }
+  return radius;
+}
+
+}  // namespace
+
+T2Cycle t2_cycle(const Parameters& p, long long max_period, double step_error) {
+  p.require_return_map();
+  if (max_period < 1 || max_period > 10'000'000) throw InvalidParameter("max_period", "1 <= max_period <= 10^7", static_cast<double>(max_period));
+  if (!(step_error > 0 && step_error < 1e-3)) throw InvalidParameter("step_error", "0 < step_error < 1e-3", step_error);
+  const double t2 = p.t2_required();
+  T2Cycle c;
+  double margin = std::numeric_limits<double>::infinity();
+  double theta = t2, error = step_error;
+  for (long long k = 1; k <= max_period; ++k) {
+    const MapStep s = return_map_step(p, theta);
+    const MapDerivative d = map_derivative(p, s);
+    if (d.flat) {
+      ++c.stops;
+      margin = std::min(margin, std::isfinite(error) ? stop_arc_radius(p, theta) / error : 0.0);
+      error = step_error;  // the image of a stop is a fixed phase
+    } else {
+      error = std::isfinite(d.dT) ? std::fabs(d.dT) * error + step_error : std::numeric_limits<double>::infinity();
+    }
+    theta = s.T;
+    if (theta == t2) {
+      c.period = k;
+      break;
+    }
+  }
+  c.margin = c.stops > 0 ? margin : 0.0;
+  c.resolved = c.period > 0 && c.margin >= kT2CycleSafety;
+  return c;
 }
 
 }  // namespace dfchaos

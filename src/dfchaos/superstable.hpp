@@ -35,6 +35,42 @@ struct SuperstableCheck {
 /// @throws InvalidParameter unless the map is defined.
 SuperstableCheck superstable_check(const Parameters& p, int scan = 20000);
 
+/// The cycle through \f$t_2\f$ that the computed orbit of \f$t_2\f$ closes, judged against the
+/// precision of \f$T\f$ (beyond the paper; Lemma 3, Theorem 2).
+///
+/// An orbit that meets an arc where the motion stops until \f$t_2\f$ continues as the orbit of
+/// \f$t_2\f$, and \f$T\f$ is a function: once the *computed* orbit of \f$t_2\f$ returns to
+/// \f$t_2\f$, it repeats for ever. That return is a superstable cycle of the exact map only if every
+/// step with a stop on the way was taken from a phase that lies inside its stop arc by more than
+/// the error accumulated up to there. The error is propagated along the orbit as
+/// \f$e_{i+1} = |T'(\theta_i)|\,e_i + \delta\f$ (\f$\delta\f$: the error allowed to one evaluation of
+/// \f$T\f$; \f$e = \delta\f$ at \f$t_2\f$ and after every stop, whose image is a fixed phase), and the
+/// stop arc around \f$\theta_i\f$ is probed at \f$\theta_i \pm r\f$ for
+/// \f$r = 10^{-14}, 10^{-13}, \dots, 10^{-2}\f$ (sampled: two phases per radius). Where \f$T'\f$ grows
+/// fast (a chaotic orbit of \f$t_2\f$) the error exceeds every arc after a few dozen steps, and a
+/// return seen afterwards is a cycle of the rounding, not of \f$T\f$: double precision cannot decide.
+struct T2Cycle {
+  long long period = 0;       ///< least k with \f$T^k(t_2) = t_2\f$ as computed (0: none within the bound)
+  long long stops = 0;        ///< steps with a stop on the way (each one resets the error)
+  /// \f$\min_i r_i/e_i\f$ over the steps with a stop: how far inside its stop arc, in units of the
+  /// propagated error, the worst of them was taken (0 when the error overflowed or a step grazed).
+  double margin = 0;
+  bool resolved = false;      ///< period > 0 and margin >= kT2CycleSafety: a superstable cycle (sampled)
+};
+
+/// Margin (arc radius over propagated error) that t2_cycle() requires of every step with a stop.
+inline constexpr double kT2CycleSafety = 10;
+
+/// The default \f$\delta\f$ of t2_cycle(): the accuracy docs/accuracy.md promises for \f$T\f$ near a
+/// discontinuity of \f$T_1\f$, the loosest of its bounds.
+inline constexpr double kT2CycleStepError = 1e-9;
+
+/// Follows the computed orbit of \f$t_2\f$ for at most `max_period` steps (see T2Cycle); `step_error`
+/// is \f$\delta\f$.
+/// @throws InvalidParameter unless the map is defined and \f$1 \le\f$ max_period \f$\le 10^7\f$,
+///         \f$0 < \f$ step_error \f$< 10^{-3}\f$; GaveUp as return_map_step.
+T2Cycle t2_cycle(const Parameters& p, long long max_period, double step_error = kT2CycleStepError);
+
 /// A maximal interval of \f$b\f$ (at fixed \f$a, q\f$) on which (21) or (22) holds.
 struct SuperstableWindow {
   double b_lo = 0;         ///< left end of the window
