@@ -43,7 +43,9 @@ struct OrbitStatistics {
   double elapsed = 0;             ///< total time of the averaged steps
   double penetration = 0;         ///< total advance of the delimiter over them
   double penetration_rate = 0;    ///< penetration / elapsed: mean drilling speed (units of a per unit time)
-  long long period_of_t2 = 0;     ///< if the orbit reaches t2 and returns to it: the period of that superstable orbit; else 0
+  /// If the computed orbit reaches t2 and returns to it: the return time, else 0. A cycle of the
+  /// computed orbit; whether it is a superstable cycle of T: superstable.hpp, t2_cycle.
+  long long period_of_t2 = 0;
   std::vector<double> tail;       ///< the last phases of the orbit (as many as asked)
 };
 

@@ -11,7 +11,11 @@
 /// **The period** of the attracting cycle: with \f$\theta_e = T^{\,transient + steps}(\theta_0)\f$ (the
 /// end of that orbit), the smallest \f$k \le\f$ period_max with \f$|T^k(\theta_e) - \theta_e| \le\f$
 /// period_tol on the circle; 0 when there is none (no cycle of period \f$\le\f$ period_max found: a
-/// chaotic orbit, a longer cycle, or a slower approach).
+/// chaotic orbit, a longer cycle, or a slower approach). This is a cycle of the *computed* orbit. A
+/// cycle through a stop closes exactly in floating point (a stop sends a whole arc to one phase)
+/// even where double precision cannot follow the orbit from that phase back to the stop arc: then
+/// it is a cycle of the rounding, not of T. superstable.hpp's t2_cycle tells the two apart for the
+/// cycle through \f$t_2\f$; the sweep does not (the report's plane_lyapunov does, per cell).
 #pragma once
 
 #include <string>
