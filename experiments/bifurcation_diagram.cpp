@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "dfchaos/covering.hpp"
+#include "dfchaos/errors.hpp"
 #include "dfchaos/map_derivative.hpp"
 #include "dfchaos/superstable.hpp"
 #include "kit/experiment.hpp"
@@ -29,7 +30,7 @@ struct Point {
 /// One parameter value: the orbit's statistics and, when the orbit returned to t2, that cycle's resolution.
 struct Value {
   OrbitStatistics orbit;
-  T2Cycle cycle;
+  StopCycle cycle;
 };
 }  // namespace
 
@@ -65,7 +66,11 @@ const Experiment experiment{
             const Parameters p(1.0, pt.b, pt.q);
             Value v{orbit_statistics(p, *p.t2() + 0.377 * (*p.t3() - *p.t2()), transient, averaged, keep), {}};
             // The cycle the orbit fell onto is that of t2: followed again from t2, with its error.
-            if (v.orbit.period_of_t2 > 0) v.cycle = t2_cycle(p, v.orbit.period_of_t2);
+            try {
+              if (v.orbit.period_of_t2 > 0) v.cycle = t2_cycle(p, v.orbit.period_of_t2);
+            } catch (const GaveUp&) {
+              v.cycle = StopCycle{};  // left unresolved: the orbit itself was followed
+            }
             return v;
           },
           "orbit diagram");
@@ -83,7 +88,7 @@ const Experiment experiment{
           continue;
         }
         const OrbitStatistics& s = st[i].value.orbit;
-        const T2Cycle& c = st[i].value.cycle;
+        const StopCycle& c = st[i].value.cycle;
         for (double th : s.tail) diagram.row({sweep, pts[i].b, pts[i].q, th});
         lyap.row({sweep, pts[i].b, pts[i].q, s.lyapunov, s.flat_steps, s.period_of_t2, static_cast<long long>(c.resolved),
                   s.period_of_t2 > 0 ? c.margin : NAN, s.penetration_rate, 0LL});
@@ -129,8 +134,8 @@ const Experiment experiment{
       run.out.macro("BifReturnsUnresolved", std::to_string(returns - superstable));
       run.out.macro("BifUnresolvedShortestPeriod", std::to_string(shortest_unresolved));
       run.out.macro("BifUnresolvedBestMargin", best_unresolved_margin, 2);
-      run.out.macro("BifCycleSafety", kT2CycleSafety, 2);
-      run.out.macro("BifCycleStepError", kT2CycleStepError, 1);
+      run.out.macro("BifCycleSafety", kStopCycleSafety, 2);
+      run.out.macro("BifCycleStepError", kStopCycleStepError, 1);
       run.out.macro("BifValues", std::to_string(pts.size()));
       run.out.macro("BifPositiveLyapunov", std::to_string(positive));
       run.out.macro("BifDerivativeWorst", worst, 2);
@@ -147,10 +152,10 @@ const Experiment experiment{
       run.out.claim("bif.collapse_onto_t2", "Lemma 3, Theorem 2 (beyond)", EvidenceKind::Sampled,
                     "After the transient, the orbit of a typical phase has met an arc where T = t2 and continues as the orbit of t2; "
                     "at most parameter values that orbit is a superstable cycle through t2 (T' = 0 on it: a Lyapunov exponent of minus infinity), "
-                    "resolved in double precision (the error propagated along it stays " + format_tolerance(kT2CycleSafety) +
+                    "resolved in double precision (the error propagated along it stays " + format_tolerance(kStopCycleSafety) +
                     " times inside every stop arc it uses).")
           .ours().not_expected()
-          .parameter("safety", kT2CycleSafety)
+          .parameter("safety", kStopCycleSafety)
           .evidence("parameter_values", static_cast<long long>(pts.size())).evidence("superstable_cycle_through_t2", superstable)
           .evidence("computed_returns_to_t2", returns).evidence("returns_not_resolved", returns - superstable)
           .evidence("positive_lyapunov", positive).evidence("map_undefined", fails)

@@ -4,9 +4,9 @@
 /// (sin vartheta0, 1), b/a log-spaced in [1e-4, 0.1]), computed by the sweep engine (the cells of
 /// `dfchaos sweep --observables lyapunov` with its default orbit: from t2 + (t3 - t2)/2, 1000 steps
 /// discarded, 1000 averaged). \f$\lambda = -\infty\f$ marks an orbit that meets a stop (T' = 0 on a
-/// stop arc); such an orbit goes on as the orbit of t2, and in those cells t2_cycle (superstable.hpp)
-/// says whether that orbit closes, within kCycleMaxPeriod steps, on a superstable cycle that double
-/// precision resolves (the superstable regime of Theorem 2); \f$\lambda > 0\f$ the expanding regime where
+/// stop arc); such an orbit goes on as the orbit of the stop's image (t2 in scenarios B and C), and
+/// in those cells stop_cycle (superstable.hpp) says whether that orbit closes, within kCycleMaxPeriod
+/// steps, on a superstable cycle that double precision resolves; \f$\lambda > 0\f$ the expanding regime where
 /// Theorem 1's covering is found. Every cell is independent: the output does not depend on the
 /// number of threads, and equals the sweep tool's (tested by plane_lyapunov_vs_sweep).
 #include <cmath>
@@ -28,6 +28,8 @@ using namespace dfchaos::kit;
 namespace {
 /// The longest cycle through t2 looked for in a cell whose orbit meets a stop.
 constexpr long long kCycleMaxPeriod = 1000;
+/// The shift for the second check of a cycle's verdict (1000 times below stop_cycle's error per step).
+constexpr double kNudge = 1e-12;
 std::string g17(double x) {
   char buf[40];
   std::snprintf(buf, sizeof buf, "%.17g", x);
@@ -72,19 +74,43 @@ const Experiment experiment{
       }
       run.table("", t);
 
-      // The cells whose orbit met a stop: does the orbit of t2 close on a resolved superstable cycle?
-      std::vector<std::pair<double, double>> stop_cells;  // (q/a, b/a)
+      // The cells whose orbit met a stop: it goes on as the orbit of that stop's image (t2, or the
+      // image of a stop of scenario D or D'). Does that orbit close on a resolved superstable cycle?
+      std::vector<const sweep::CellValues*> stop_cells;
       for (const auto& c : values)
         if (!c.failed && c.value.status == sweep::CellStatus::Ok && std::isinf(c.value.lyapunov) && c.value.lyapunov < 0)
-          stop_cells.push_back({c.value.q_over_a, c.value.b_over_a});
-      const auto cycles = sweep_list<T2Cycle, std::pair<double, double>>(
-          stop_cells, [](const std::pair<double, double>& c) { return t2_cycle(Parameters(1.0, c.second, c.first), kCycleMaxPeriod); },
-          "plane_lyapunov t2 cycles");
-      long long n_resolved = 0, n_unresolved_return = 0;
+          stop_cells.push_back(&c.value);
+      // With each verdict, the second check (stop_cycle_survives_shift): does the orbit, moved by
+      // kNudge after its first step (far inside the error budget), close at the same step?
+      struct Cycle {
+        StopCycle cycle;
+        bool not_t2 = false;  // the last stop's image is not t2
+        bool nudged_same = false;
+      };
+      const auto cycles = sweep_list<Cycle, const sweep::CellValues*>(
+          stop_cells,
+          [](const sweep::CellValues* const& v) {
+            const Parameters p(1.0, v->b_over_a, v->q_over_a);
+            Cycle r{stop_cycle(p, v->stop_image, kCycleMaxPeriod), v->stop_image != *p.t2(), false};
+            if (r.cycle.period > 0) r.nudged_same = stop_cycle_survives_shift(p, r.cycle, kNudge);
+            return r;
+          },
+          "plane_lyapunov stop cycles");
+      long long n_resolved = 0, n_unresolved_return = 0, n_resolved_nudged_same = 0, n_unresolved_nudged_same = 0;
+      long long n_not_t2 = 0, n_cycle_failed = 0;
       for (const auto& c : cycles) {
-        if (c.failed) continue;
-        if (c.value.resolved) ++n_resolved;
-        else if (c.value.period > 0) ++n_unresolved_return;
+        if (c.failed) {
+          ++n_cycle_failed;
+          continue;
+        }
+        n_not_t2 += c.value.not_t2;
+        if (c.value.cycle.resolved) {
+          ++n_resolved;
+          n_resolved_nudged_same += c.value.nudged_same;
+        } else if (c.value.cycle.period > 0) {
+          ++n_unresolved_return;
+          n_unresolved_nudged_same += c.value.nudged_same;
+        }
       }
       const long long n_cells = spec.cells();
       run.out.claim("plane.lyapunov_both_regimes", "Theorems 1 and 2", EvidenceKind::Sampled,
@@ -95,15 +121,26 @@ const Experiment experiment{
           .evidence("finite_nonpositive", n_neg)
           .evidence("errors", n_err).evidence("max_lyapunov", lmax).evidence("max_at_q_over_a", qmax).evidence("max_at_b_over_a", bmax)
           .holds(n_pos > 0 && n_stop > 0);
-      // Not expected: a finding. An orbit that meets a stop goes on as the orbit of t2, which need not be periodic.
-      run.out.claim("plane.stop_cells_superstable", "Theorem 2 (beyond)", EvidenceKind::Sampled,
-                    "In every cell whose orbit meets a stop, the orbit of t2 closes, within " + std::to_string(kCycleMaxPeriod) +
-                        " steps, on a superstable cycle resolved in double precision (superstable.hpp, t2_cycle): lambda = minus "
-                        "infinity there is the superstable regime of Theorem 2.")
+      // Not expected: a finding. An orbit that meets a stop goes on as the orbit of the stop's image,
+      // which need not be periodic.
+      run.out.claim("plane.stop_cells_superstable", "Section 8, Theorem 2 (beyond)", EvidenceKind::Sampled,
+                    "In every cell whose orbit meets a stop, the orbit of the last stop's image closes, within " +
+                        std::to_string(kCycleMaxPeriod) +
+                        " steps, on a superstable cycle resolved in double precision (superstable.hpp, stop_cycle): there lambda = "
+                        "minus infinity marks an attracting cycle.")
           .ours().not_expected()
-          .evidence("stop", n_stop).evidence("resolved_cycle", n_resolved).evidence("return_not_resolved", n_unresolved_return)
-          .evidence("no_return", n_stop - n_resolved - n_unresolved_return)
-          .holds(n_resolved == n_stop);
+          .parameter("max_steps", kCycleMaxPeriod).parameter("safety", kStopCycleSafety).parameter("step_error", kStopCycleStepError)
+          .evidence("stop", n_stop).evidence("image_not_t2", n_not_t2).evidence("resolved_cycle", n_resolved)
+          .evidence("return_not_resolved", n_unresolved_return)
+          .evidence("no_return", n_stop - n_cycle_failed - n_resolved - n_unresolved_return).evidence("failed", n_cycle_failed)
+          .holds(n_stop > 0 && n_resolved == n_stop);
+      run.out.claim("plane.stop_cycles_nudged", "Section 8 (beyond)", EvidenceKind::Sampled,
+                    "Second check of stop_cycle's verdicts: in every cell where it resolves the cycle, the orbit moved by " +
+                        format_tolerance(kNudge) + " after its first step closes the cycle at the same step (stop_cycle_survives_shift).")
+          .ours()
+          .evidence("resolved", n_resolved).evidence("resolved_nudged_same", n_resolved_nudged_same)
+          .evidence("not_resolved_returns", n_unresolved_return).evidence("not_resolved_nudged_same", n_unresolved_nudged_same)
+          .holds(n_resolved_nudged_same == n_resolved);
       run.out.claim("plane.lyapunov_computed", "Theorem 1", EvidenceKind::Sampled,
                     "Every cell's orbit was followed without error.")
           .ours()
@@ -116,6 +153,9 @@ const Experiment experiment{
       run.out.macro("LyapStopResolved", std::to_string(n_resolved));
       run.out.macro("LyapStopUnresolvedReturn", std::to_string(n_unresolved_return));
       run.out.macro("LyapCycleMaxPeriod", std::to_string(kCycleMaxPeriod));
+      run.out.macro("LyapUnresolvedNudgedSame", std::to_string(n_unresolved_nudged_same));
+      run.out.macro("LyapStopNotTTwo", std::to_string(n_not_t2));
+      run.out.macro("LyapNudge", kNudge, 1);
       run.out.macro("LyapNonpositive", std::to_string(n_neg));
       run.out.macro("LyapMax", lmax, 3);
     }};

@@ -139,20 +139,10 @@ TEST(EventualRegime, RejectsBadCounts) {
 
 // ---- t2_cycle: is a computed return of t2 a superstable cycle of T? --------------------------
 
-namespace {
-/// The first n in 1..max with T^n(theta) == t2 exactly, as computed; 0 if none.
-long long first_visit_of_t2(const Parameters& p, double theta, long long max) {
-  const double t2 = *p.t2();
-  for (long long n = 1; n <= max; ++n)
-    if ((theta = T(p, theta)) == t2) return n;
-  return 0;
-}
-}  // namespace
-
-TEST(T2Cycle, TheoremTwoFixedPointIsResolved) {
+TEST(StopCycle, TheoremTwoFixedPointIsResolved) {
   // b/a where Theorem 2's conditions hold at q/a = 0.85 (a value of the drilling-rate basins).
   const Parameters p(1.0, 0.01515540569613256, 0.85);
-  const T2Cycle c = t2_cycle(p, 100);
+  const StopCycle c = t2_cycle(p, 100);
   EXPECT_EQ(c.period, 1);
   EXPECT_EQ(c.stops, 1);
   EXPECT_TRUE(c.resolved);
@@ -161,37 +151,59 @@ TEST(T2Cycle, TheoremTwoFixedPointIsResolved) {
   const SuperstableCheck s = superstable_check(p, 2000);
   EXPECT_TRUE(s.fixed);
   EXPECT_GT(s.epsilon, 0);
-  EXPECT_LE(c.margin * kT2CycleStepError, s.epsilon * (1 + 1e-9));
-  // A start moved by far less than the error budget closes the same cycle.
-  EXPECT_EQ(first_visit_of_t2(p, *p.t2() + 1e-12, 10), 1);
+  EXPECT_LE(c.margin * kStopCycleStepError, s.epsilon * (1 + 1e-9));
+  // The orbit moved by 1e-8 after its first step (here: t2 + 1e-8, in the stop arc) closes the same cycle.
+  EXPECT_TRUE(stop_cycle_survives_shift(p, c, 1e-8));
 }
 
-TEST(T2Cycle, PeriodTwoCycleIsResolvedAndSurvivesAPerturbedStart) {
+TEST(StopCycle, PeriodTwoCycleIsResolvedAndSurvivesAPerturbedStart) {
   const Parameters p(1.0, 0.0008768960966052783, 0.85);
-  const T2Cycle c = t2_cycle(p, 100);
+  const StopCycle c = t2_cycle(p, 100);
   EXPECT_EQ(c.period, 2);
   EXPECT_TRUE(c.resolved);
-  EXPECT_GE(c.margin, kT2CycleSafety);
-  EXPECT_EQ(first_visit_of_t2(p, *p.t2(), 10), 2);
-  EXPECT_EQ(first_visit_of_t2(p, *p.t2() + 1e-12, 10), 2);
+  EXPECT_GE(c.margin, kStopCycleSafety);
+  EXPECT_EQ(first_visit(p, *p.t2(), *p.t2(), 10), 2);
+  EXPECT_TRUE(stop_cycle_survives_shift(p, c, 1e-8));
 }
 
-TEST(T2Cycle, AReturnAfterTheDerivativeHasExplodedIsNotResolved) {
+TEST(StopCycle, AReturnAfterTheDerivativeHasExplodedIsNotResolved) {
   // At the gallery's parameters the computed orbit of t2 returns to t2 (943 steps today), but
   // |(T^k)'(t2)| passes 2^52 after a few dozen steps: the return is a cycle of the rounding.
   const Parameters p(1.0, 0.01, 0.85);
-  const T2Cycle c = t2_cycle(p, 40000);
+  const StopCycle c = t2_cycle(p, 40000);
   ASSERT_GT(c.period, 0) << "the computed orbit of t2 no longer returns within 40000 steps: pick other parameters";
   EXPECT_FALSE(c.resolved);
   EXPECT_LT(c.margin, 1);
-  EXPECT_EQ(first_visit_of_t2(p, *p.t2(), c.period), c.period);
-  // Independently: a start 1e-12 away (far inside the error budget) does not close the same cycle.
-  EXPECT_NE(first_visit_of_t2(p, *p.t2() + 1e-12, c.period), c.period);
+  EXPECT_EQ(first_visit(p, *p.t2(), *p.t2(), c.period), c.period);
+  // Independently: an orbit moved by 1e-12 after its first step (far inside the error budget) does
+  // not close the same cycle. (Moved at t2 itself, the shift would be lost: T'(t2) = 0.)
+  EXPECT_LT(std::fabs(map_derivative(p, *p.t2()).dT), 1e-10);
+  EXPECT_FALSE(stop_cycle_survives_shift(p, c, 1e-12));
 }
 
-TEST(T2Cycle, RejectsBadBounds) {
+TEST(StopCycle, RejectsBadBounds) {
   const Parameters p(1.0, 0.01, 0.85);
   EXPECT_THROW(t2_cycle(p, 0), InvalidParameter);
   EXPECT_THROW(t2_cycle(p, 10, 0.0), InvalidParameter);
   EXPECT_THROW(t2_cycle(p, 10, 1.0), InvalidParameter);
+  EXPECT_THROW(first_visit(p, *p.t2(), *p.t2(), 0), InvalidParameter);
+  EXPECT_THROW(first_visit(p, *p.t3(), *p.t2(), 5), InvalidParameter);  // theta outside [t2, t3)
+  EXPECT_THROW(stop_cycle_survives_shift(p, StopCycle{}, 1e-12), InvalidParameter);  // period 0
+  StopCycle five;
+  five.image = *p.t2();
+  five.period = 5;
+  EXPECT_THROW(stop_cycle_survives_shift(p, five, 0.0), InvalidParameter);
+  EXPECT_THROW(t2_cycle(p, 10'000'001), InvalidParameter);
+  EXPECT_THROW(t2_cycle(p, 10, NAN), InvalidParameter);
+  EXPECT_THROW(stop_cycle(p, *p.t3(), 10), InvalidParameter);  // an image outside [t2, t3)
+}
+
+TEST(StopCycle, NoRepeatWithinTheBoundIsNotACycle) {
+  // The computed orbit of t2 at the gallery's parameters returns only after hundreds of steps.
+  const Parameters p(1.0, 0.01, 0.85);
+  const StopCycle c = t2_cycle(p, 5);
+  EXPECT_EQ(c.period, 0);
+  EXPECT_FALSE(c.resolved);
+  EXPECT_EQ(c.margin, 0);
+  EXPECT_EQ(first_visit(p, *p.t2(), *p.t2(), 5), 0);
 }

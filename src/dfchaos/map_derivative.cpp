@@ -46,7 +46,10 @@ OrbitStatistics orbit_statistics(const Parameters& p, double theta0, long long t
     }
     const MapStep s = return_map_step(p, theta);
     const MapDerivative d = map_derivative(p, s);
-    if (d.flat) ++st.flat_steps;
+    if (d.flat) {
+      ++st.flat_steps;
+      st.last_stop_image = s.T;
+    }
     else if (std::isfinite(d.dT)) log_sum += std::log(std::fabs(d.dT));
     st.elapsed += s.elapsed;
     st.penetration += s.penetration;

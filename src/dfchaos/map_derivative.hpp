@@ -14,6 +14,7 @@
 /// so \f$T' = 0\f$: those steps are superstable.
 #pragma once
 
+#include <limits>
 #include <vector>
 
 #include "dfchaos/parameters.hpp"
@@ -46,6 +47,9 @@ struct OrbitStatistics {
   /// If the computed orbit reaches t2 and returns to it: the return time, else 0. A cycle of the
   /// computed orbit; whether it is a superstable cycle of T: superstable.hpp, t2_cycle.
   long long period_of_t2 = 0;
+  /// T of the last averaged step with a stop (the fixed phase it sends its arc to: t2 in scenarios
+  /// B and C), NaN if none: the orbit goes on as the orbit of this phase.
+  double last_stop_image = std::numeric_limits<double>::quiet_NaN();
   std::vector<double> tail;       ///< the last phases of the orbit (as many as asked)
 };
 

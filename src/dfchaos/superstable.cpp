@@ -3,8 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
+#include <vector>
+#include <utility>
 
 #include "dfchaos/bisect.hpp"
+#include "dfchaos/covering.hpp"
 #include "dfchaos/errors.hpp"
 #include "dfchaos/map_derivative.hpp"
 
@@ -135,50 +139,109 @@ std::vector<SuperstableWindow> superstable_windows(double a, double q, double b_
 
 namespace {
 
-/// The largest radius r of 1e-14, 1e-13, ..., 1e-2 such that T has a stop at theta +- r for it and
-/// every smaller one (0 if already 1e-14 fails). Probes outside [t2, t3) are skipped: theta = t2 is
-/// the left end of the domain.
-double stop_arc_radius(const Parameters& p, double theta) {
+/// The largest radius r of 1e-14, 1e-13, ..., 1e-2 such that T stops with image `image` at
+/// theta +- r for it and every smaller one (0 if already 1e-14 fails). Probes outside [t2, t3) are
+/// skipped (theta = t2 is the left end of the domain); a probe that throws ends the arc.
+double stop_arc_radius(const Parameters& p, double theta, double image) {
   const double t2 = p.t2_required(), t3 = p.t3_required();
   double radius = 0;
   for (int j = -14; j <= -2; ++j) {
     const double r = std::pow(10.0, j);
-    for (const double x : {theta - r, theta + r})
-      if (x >= t2 && x < t3 && !map_derivative(p, x).flat) return radius;
+    for (const double x : {theta - r, theta + r}) {
+      if (!(x >= t2 && x < t3)) continue;
+      try {
+        const MapStep s = return_map_step(p, x);
+        if (!map_derivative(p, s).flat || s.T != image) return radius;
+      } catch (const std::exception&) {
+        return radius;
+      }
+    }
     radius = r;
   }
   return radius;
 }
 
+/// Whether T keeps the continuity label and the scenario of theta at theta +- r (points outside
+/// [t2, t3) skipped; a throw counts as a change).
+bool same_branch_around(const Parameters& p, double theta, double r) {
+  const double t2 = p.t2_required(), t3 = p.t3_required();
+  try {
+    const LabelledStep at = continuity_label(p, theta);
+    for (const double x : {theta - r, theta + r}) {
+      if (!(x >= t2 && x < t3)) continue;
+      const LabelledStep there = continuity_label(p, x);
+      if (!(there.label == at.label) || there.step.scenario != at.step.scenario) return false;
+    }
+  } catch (const std::exception&) {
+    return false;
+  }
+  return true;
+}
+
+/// Errors below this are checked against the continuity label (above it the verdict is lost anyway).
+constexpr double kLabelCheckBelow = 1e-3;
+
 }  // namespace
 
-T2Cycle t2_cycle(const Parameters& p, long long max_period, double step_error) {
+long long first_visit(const Parameters& p, double theta, double target, long long max_steps) {
   p.require_return_map();
-  if (max_period < 1 || max_period > 10'000'000) throw InvalidParameter("max_period", "1 <= max_period <= 10^7", static_cast<double>(max_period));
+  if (max_steps < 1 || max_steps > 10'000'000) throw InvalidParameter("max_steps", "1 <= max_steps <= 10^7", static_cast<double>(max_steps));
+  for (long long n = 1; n <= max_steps; ++n)
+    if ((theta = T(p, theta)) == target) return n;
+  return 0;
+}
+
+bool stop_cycle_survives_shift(const Parameters& p, const StopCycle& c, double h) {
+  p.require_return_map();
+  if (c.period < 1 || c.period > 10'000'000) throw InvalidParameter("period", "1 <= period <= 10^7", static_cast<double>(c.period));
+  if (!(h > 0 && h < 1e-3)) throw InvalidParameter("h", "0 < h < 1e-3", h);
+  const double t3 = p.t3_required();
+  const double start = c.period == 1 ? c.image + h : T(p, c.image) + h;
+  if (start >= t3) return false;  // shifted out of the domain: counted as not passed
+  const long long rest = c.period == 1 ? 1 : c.period - 1;
+  return first_visit(p, start, c.image, rest) == rest;
+}
+
+StopCycle stop_cycle(const Parameters& p, double image, long long max_steps, double step_error) {
+  p.require_return_map();
+  const double t2 = p.t2_required(), t3 = p.t3_required();
+  if (!(image >= t2 && image < t3)) throw InvalidParameter("image", "t2 <= image < t3", image);
+  if (max_steps < 1 || max_steps > 10'000'000) throw InvalidParameter("max_steps", "1 <= max_steps <= 10^7", static_cast<double>(max_steps));
   if (!(step_error > 0 && step_error < 1e-3)) throw InvalidParameter("step_error", "0 < step_error < 1e-3", step_error);
-  const double t2 = p.t2_required();
-  T2Cycle c;
-  double margin = std::numeric_limits<double>::infinity();
-  double theta = t2, error = step_error;
-  for (long long k = 1; k <= max_period; ++k) {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  // The stop images met so far (a handful: t2 and the images of D, D'), with the step of their visit.
+  std::vector<std::pair<double, long long>> images{{image, 0}};
+  StopCycle c;
+  double margin = inf;
+  double theta = image, error = step_error;
+  for (long long k = 1; k <= max_steps; ++k) {
     const MapStep s = return_map_step(p, theta);
     const MapDerivative d = map_derivative(p, s);
     if (d.flat) {
       ++c.stops;
-      margin = std::min(margin, std::isfinite(error) ? stop_arc_radius(p, theta) / error : 0.0);
+      margin = std::min(margin, std::isfinite(error) ? stop_arc_radius(p, theta, s.T) / error : 0.0);
       error = step_error;  // the image of a stop is a fixed phase
+      const auto seen = std::find_if(images.begin(), images.end(), [&](const auto& e) { return e.first == s.T; });
+      if (seen != images.end()) {
+        c.image = seen->first;
+        c.entry = seen->second;
+        c.period = k - seen->second;
+        break;
+      }
+      images.push_back({s.T, k});
     } else {
-      error = std::isfinite(d.dT) ? std::fabs(d.dT) * error + step_error : std::numeric_limits<double>::infinity();
+      if (error < kLabelCheckBelow && !same_branch_around(p, theta, kStopCycleSafety * error)) margin = 0;
+      error = std::isfinite(d.dT) ? std::fabs(d.dT) * error + step_error : inf;
     }
     theta = s.T;
-    if (theta == t2) {
-      c.period = k;
-      break;
-    }
   }
-  c.margin = c.stops > 0 ? margin : 0.0;
-  c.resolved = c.period > 0 && c.margin >= kT2CycleSafety;
+  c.margin = c.period > 0 ? margin : 0.0;
+  c.resolved = c.period > 0 && c.margin >= kStopCycleSafety;
   return c;
+}
+
+StopCycle t2_cycle(const Parameters& p, long long max_steps, double step_error) {
+  return stop_cycle(p, p.t2_required(), max_steps, step_error);
 }
 
 }  // namespace dfchaos

@@ -35,41 +35,71 @@ struct SuperstableCheck {
 /// @throws InvalidParameter unless the map is defined.
 SuperstableCheck superstable_check(const Parameters& p, int scan = 20000);
 
-/// The cycle through \f$t_2\f$ that the computed orbit of \f$t_2\f$ closes, judged against the
-/// precision of \f$T\f$ (beyond the paper; Lemma 3, Theorem 2).
+/// The cycle that a computed orbit falls onto after a stop, judged against the precision of \f$T\f$
+/// (beyond the paper; Lemma 3, Section 8; Theorem 2 is the case of the fixed point \f$t_2\f$).
 ///
-/// An orbit that meets an arc where the motion stops until \f$t_2\f$ continues as the orbit of
-/// \f$t_2\f$, and \f$T\f$ is a function: once the *computed* orbit of \f$t_2\f$ returns to
-/// \f$t_2\f$, it repeats for ever. That return is a superstable cycle of the exact map only if every
-/// step with a stop on the way was taken from a phase that lies inside its stop arc by more than
-/// the error accumulated up to there. The error is propagated along the orbit as
-/// \f$e_{i+1} = |T'(\theta_i)|\,e_i + \delta\f$ (\f$\delta\f$: the error allowed to one evaluation of
-/// \f$T\f$; \f$e = \delta\f$ at \f$t_2\f$ and after every stop, whose image is a fixed phase), and the
-/// stop arc around \f$\theta_i\f$ is probed at \f$\theta_i \pm r\f$ for
-/// \f$r = 10^{-14}, 10^{-13}, \dots, 10^{-2}\f$ (sampled: two phases per radius). Where \f$T'\f$ grows
-/// fast (a chaotic orbit of \f$t_2\f$) the error exceeds every arc after a few dozen steps, and a
-/// return seen afterwards is a cycle of the rounding, not of \f$T\f$: double precision cannot decide.
-struct T2Cycle {
-  long long period = 0;       ///< least k with \f$T^k(t_2) = t_2\f$ as computed (0: none within the bound)
-  long long stops = 0;        ///< steps with a stop on the way (each one resets the error)
-  /// \f$\min_i r_i/e_i\f$ over the steps with a stop: how far inside its stop arc, in units of the
-  /// propagated error, the worst of them was taken (0 when the error overflowed or a step grazed).
+/// A step with a stop sends a whole arc of phases to one phase, its *image*: \f$t_2\f$ in scenarios B
+/// and C (the flight starts at \f$t_2\f$), another fixed phase in D and D′ (the phase where the
+/// progression from \f$t_0\f$ ends). An orbit that meets such an arc goes on as the orbit of the
+/// image, and \f$T\f$ is a function: once the *computed* orbit of an image meets a stop arc with an
+/// image it has visited, it repeats for ever. That is a superstable cycle of the exact map only if
+/// every step on the way was taken far enough from where \f$T\f$ changes:
+///  - the error is propagated as \f$e_{i+1} = |T'(\theta_i)|\,e_i + \delta\f$ (\f$\delta\f$: the error
+///    allowed to one evaluation of \f$T\f$; \f$e = \delta\f$ at the start and after every stop, whose
+///    image is a fixed phase);
+///  - a step with a stop must lie in its stop arc by at least kStopCycleSafety times \f$e\f$: the arc is
+///    probed at \f$\theta_i \pm r\f$, \f$r = 10^{-14}, 10^{-13}, \dots, 10^{-2}\f$, where the step must
+///    stop with the same image (probes outside \f$[t_2, t_3)\f$ are skipped; a probe that throws ends
+///    the arc);
+///  - a step without a stop, while \f$e < 10^{-3}\f$, must keep its continuity label (covering.hpp:
+///    scenario and branch of \f$T_1\f$) at \f$\theta_i \pm\f$ kStopCycleSafety \f$e\f$, so that \f$T\f$ is smooth
+///    between (a grazing, where \f$T'\f$ is undefined, sets \f$e = \infty\f$).
+/// All three are sampled, not proved. Where \f$T'\f$ grows fast (a chaotic orbit) the error exceeds
+/// every arc after a few dozen steps, and a return seen afterwards rests on the last bits of the
+/// computation: a cycle of the rounding, about which double precision cannot decide.
+struct StopCycle {
+  double image = 0;           ///< the phase the cycle passes through: the first stop image it repeats
+  long long entry = 0;        ///< steps from the start before the cycle's first visit of `image`
+  long long period = 0;       ///< steps of the cycle (0: no stop image repeated within the bound)
+  long long stops = 0;        ///< steps with a stop followed (each one resets the error)
+  /// The smallest ratio, over the steps with a stop, of the stop arc's sampled radius to the
+  /// propagated error; 0 when the error overflowed, a step grazed, or a step without a stop changed
+  /// branch within kStopCycleSafety times its error.
   double margin = 0;
-  bool resolved = false;      ///< period > 0 and margin >= kT2CycleSafety: a superstable cycle (sampled)
+  bool resolved = false;      ///< period > 0 and margin >= kStopCycleSafety: a superstable cycle (sampled)
 };
 
-/// Margin (arc radius over propagated error) that t2_cycle() requires of every step with a stop.
-inline constexpr double kT2CycleSafety = 10;
+/// Margin (distance over propagated error) that stop_cycle() requires of every step it follows.
+inline constexpr double kStopCycleSafety = 10;
 
-/// The default \f$\delta\f$ of t2_cycle(): the accuracy docs/accuracy.md promises for \f$T\f$ near a
+/// The default \f$\delta\f$ of stop_cycle(): the accuracy docs/accuracy.md promises for \f$T\f$ near a
 /// discontinuity of \f$T_1\f$, the loosest of its bounds.
-inline constexpr double kT2CycleStepError = 1e-9;
+inline constexpr double kStopCycleStepError = 1e-9;
 
-/// Follows the computed orbit of \f$t_2\f$ for at most `max_period` steps (see T2Cycle); `step_error`
-/// is \f$\delta\f$.
-/// @throws InvalidParameter unless the map is defined and \f$1 \le\f$ max_period \f$\le 10^7\f$,
-///         \f$0 < \f$ step_error \f$< 10^{-3}\f$; GaveUp as return_map_step.
-T2Cycle t2_cycle(const Parameters& p, long long max_period, double step_error = kT2CycleStepError);
+/// Follows the computed orbit of `image` (a phase in \f$[t_2, t_3)\f$, normally the image of a stop)
+/// for at most `max_steps` steps (see StopCycle); `step_error` is \f$\delta\f$.
+/// @throws InvalidParameter unless the map is defined, image \f$\in [t_2, t_3)\f$,
+///         \f$1 \le\f$ max_steps \f$\le 10^7\f$ and \f$0 < \f$ step_error \f$< 10^{-3}\f$; GaveUp as
+///         return_map_step on the orbit itself.
+StopCycle stop_cycle(const Parameters& p, double image, long long max_steps, double step_error = kStopCycleStepError);
+
+/// stop_cycle() from \f$t_2\f$: the cycle that an orbit falls onto after a stop of scenario B or C.
+StopCycle t2_cycle(const Parameters& p, long long max_steps, double step_error = kStopCycleStepError);
+
+/// The least \f$n \in [1, \mathrm{max\_steps}]\f$ with \f$T^n(\theta) = \mathrm{target}\f$ exactly as
+/// computed, 0 if none (\f$\theta = \mathrm{target} = t_2\f$: the return time of \f$t_2\f$).
+/// @throws InvalidParameter unless \f$\theta \in [t_2, t_3)\f$ and \f$1 \le\f$ max_steps \f$\le 10^7\f$.
+long long first_visit(const Parameters& p, double theta, double target, long long max_steps);
+
+/// A second check of stop_cycle()'s verdict, independent of its error model: whether the cycle `c`
+/// (period > 0) is closed at the same step when the orbit is moved by `h` where it first can be.
+/// That is after the first step from the image: \f$T'(t_2) = 0\f$ (the flight from rest at \f$t_2\f$
+/// starts with \f$F = 0\f$, Eq. 11), so a shift of \f$t_2\f$ itself would be lost at once. For period 1
+/// the shifted point is image \f$+\,h\f$ (is it in the stop arc?); otherwise \f$T(\mathrm{image}) + h\f$
+/// must reach the image first after period \f$-\,1\f$ steps. A resolved cycle passes; a cycle of the
+/// rounding (almost always) does not.
+/// @throws InvalidParameter unless c.period \f$\in [1, 10^7]\f$ and \f$0 < h < 10^{-3}\f$.
+bool stop_cycle_survives_shift(const Parameters& p, const StopCycle& c, double h);
 
 /// A maximal interval of \f$b\f$ (at fixed \f$a, q\f$) on which (21) or (22) holds.
 struct SuperstableWindow {

@@ -85,6 +85,7 @@ CellValues evaluate_cell(const Spec& spec, long long index) {
         const OrbitStatistics st = orbit_statistics(p, theta0, spec.orbit.transient, spec.orbit.steps, 1);
         v.lyapunov = st.lyapunov;
         v.rate = st.penetration_rate;
+        v.stop_image = st.last_stop_image;
         if (obs.has(Observable::Period)) end = T(p, st.tail.back());  // the tail holds T^(total - 1)(theta0)
       } else {
         for (long long n = 0; n < total; ++n) end = T(p, end);

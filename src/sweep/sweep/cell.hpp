@@ -28,6 +28,9 @@ struct CellValues {
   double lyapunov = NAN;    ///< orbit_statistics: Lyapunov exponent (-inf when a step stops)
   double rate = NAN;        ///< orbit_statistics: penetration rate
   double period = NAN;      ///< the period of the cycle at the orbit's end, 0 if none (see Spec)
+  /// With lyapunov or rate: the image of the orbit's last step with a stop (orbit_statistics'
+  /// last_stop_image), NaN if none. Not a column of the output.
+  double stop_image = NAN;
   std::string error;        ///< "observable: message" of each observable that threw, joined by "; "
 };
 

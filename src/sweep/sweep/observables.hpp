@@ -7,7 +7,7 @@
 ///    superstable width \f$\varepsilon > 0\f$ (0 or 1), and that width `epsilon`;
 ///  - `lyapunov`: \f$\frac1N\sum\ln|T'(\theta_n)|\f$ over the orbit's averaged steps (orbit_statistics;
 ///    -inf when a step stops; whether the orbit then lies on a superstable cycle is a further question:
-///    superstable.hpp, t2_cycle);
+///    superstable.hpp, stop_cycle);
 ///  - `rate`: the mean drilling speed, the delimiter's advance over the elapsed time of those steps;
 ///  - `period`: the period of the cycle the computed orbit closes at its end (see Spec: through a stop,
 ///    it may be a cycle of the rounding).

@@ -14,8 +14,8 @@
 /// chaotic orbit, a longer cycle, or a slower approach). This is a cycle of the *computed* orbit. A
 /// cycle through a stop closes exactly in floating point (a stop sends a whole arc to one phase)
 /// even where double precision cannot follow the orbit from that phase back to the stop arc: then
-/// it is a cycle of the rounding, not of T. superstable.hpp's t2_cycle tells the two apart for the
-/// cycle through \f$t_2\f$; the sweep does not (the report's plane_lyapunov does, per cell).
+/// it is a cycle of the rounding, not of T. superstable.hpp's stop_cycle tells the two apart for a
+/// cycle through a stop; the sweep does not (the report's plane_lyapunov does, per cell).
 #pragma once
 
 #include <string>
