@@ -5,9 +5,9 @@
 /// same axis. T' is checked against central finite differences on a grid of phases. Since T is
 /// constant (= t2) on the arcs where the motion stops, an orbit that meets such an arc continues as
 /// the orbit of t2: the diagram shows where that orbit is periodic (a superstable cycle through t2)
-/// and its period, and whether double precision resolves that cycle (superstable.hpp, t2_cycle: a
-/// computed return to t2 after the derivative has grown past the inverse rounding error is a cycle
-/// of the rounding, not of T).
+/// and its period, and whether double precision resolves that cycle (superstable.hpp, t2_cycle: the
+/// error allowed to T, propagated with |T'|, must stay well inside every stop arc on the way).
+/// (Stops of scenarios D and D' send their arcs to another phase; period_of_t2 counts returns to t2.)
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -70,6 +70,8 @@ const Experiment experiment{
               if (v.orbit.period_of_t2 > 0) v.cycle = t2_cycle(p, v.orbit.period_of_t2);
             } catch (const GaveUp&) {
               v.cycle = StopCycle{};  // left unresolved: the orbit itself was followed
+            } catch (const InvalidParameter&) {
+              v.cycle = StopCycle{};
             }
             return v;
           },

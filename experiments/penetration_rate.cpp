@@ -143,6 +143,8 @@ const Experiment experiment{
             worst_margin = std::min(worst_margin, c.margin);
           } catch (const GaveUp&) {
             ++cycle_failed;  // counted as a cycle, not as resolved
+          } catch (const InvalidParameter&) {
+            ++cycle_failed;
           }
         }
         run.out.macro("RateBasinValues", std::to_string(by_spread.size()));

@@ -162,8 +162,10 @@ TEST(StopCycle, PeriodTwoCycleIsResolvedAndSurvivesAPerturbedStart) {
   EXPECT_EQ(c.period, 2);
   EXPECT_TRUE(c.resolved);
   EXPECT_GE(c.margin, kStopCycleSafety);
+  EXPECT_FALSE(c.lost);
   EXPECT_EQ(first_visit(p, *p.t2(), *p.t2(), 10), 2);
   EXPECT_TRUE(stop_cycle_survives_shift(p, c, 1e-8));
+  EXPECT_EQ(t2_cycle(p, c.period).period, c.period);  // a bound equal to the period closes it
 }
 
 TEST(StopCycle, AReturnAfterTheDerivativeHasExplodedIsNotResolved) {
@@ -173,8 +175,10 @@ TEST(StopCycle, AReturnAfterTheDerivativeHasExplodedIsNotResolved) {
   const StopCycle c = t2_cycle(p, 40000);
   ASSERT_GT(c.period, 0) << "the computed orbit of t2 no longer returns within 40000 steps: pick other parameters";
   EXPECT_FALSE(c.resolved);
-  EXPECT_LT(c.margin, 1);
+  EXPECT_TRUE(c.lost);  // the error reached 1e-3 long before the stop
+  EXPECT_EQ(c.margin, 0);
   EXPECT_EQ(first_visit(p, *p.t2(), *p.t2(), c.period), c.period);
+  EXPECT_EQ(t2_cycle(p, c.period).period, c.period);
   // Independently: an orbit moved by 1e-12 after its first step (far inside the error budget) does
   // not close the same cycle. (Moved at t2 itself, the shift would be lost: T'(t2) = 0.)
   EXPECT_LT(std::fabs(map_derivative(p, *p.t2()).dT), 1e-10);

@@ -178,8 +178,10 @@ bool same_branch_around(const Parameters& p, double theta, double r) {
   return true;
 }
 
-/// Errors below this are checked against the continuity label (above it the verdict is lost anyway).
-constexpr double kLabelCheckBelow = 1e-3;
+/// Largest error a step without a stop may carry: below it the step's branch is checked; at or above
+/// it the error counts as infinite until the next stop (a later contraction, e.g. near t2 where
+/// T' = 0, must not bring back a verdict that was lost).
+constexpr double kLostAt = 1e-3;
 
 }  // namespace
 
@@ -195,9 +197,10 @@ bool stop_cycle_survives_shift(const Parameters& p, const StopCycle& c, double h
   p.require_return_map();
   if (c.period < 1 || c.period > 10'000'000) throw InvalidParameter("period", "1 <= period <= 10^7", static_cast<double>(c.period));
   if (!(h > 0 && h < 1e-3)) throw InvalidParameter("h", "0 < h < 1e-3", h);
-  const double t3 = p.t3_required();
-  const double start = c.period == 1 ? c.image + h : T(p, c.image) + h;
-  if (start >= t3) return false;  // shifted out of the domain: counted as not passed
+  const double t2 = p.t2_required(), t3 = p.t3_required();
+  const double base = c.period == 1 ? c.image : T(p, c.image);
+  const double start = base + h < t3 ? base + h : base - h;  // shifted to the side inside [t2, t3)
+  if (!(start >= t2 && start < t3)) return false;             // no room on either side: not passed
   const long long rest = c.period == 1 ? 1 : c.period - 1;
   return first_visit(p, start, c.image, rest) == rest;
 }
@@ -219,7 +222,12 @@ StopCycle stop_cycle(const Parameters& p, double image, long long max_steps, dou
     const MapDerivative d = map_derivative(p, s);
     if (d.flat) {
       ++c.stops;
-      margin = std::min(margin, std::isfinite(error) ? stop_arc_radius(p, theta, s.T) / error : 0.0);
+      if (error < kLostAt) {
+        margin = std::min(margin, stop_arc_radius(p, theta, s.T) / error);
+      } else {
+        margin = 0;
+        c.lost = true;
+      }
       error = step_error;  // the image of a stop is a fixed phase
       const auto seen = std::find_if(images.begin(), images.end(), [&](const auto& e) { return e.first == s.T; });
       if (seen != images.end()) {
@@ -230,8 +238,11 @@ StopCycle stop_cycle(const Parameters& p, double image, long long max_steps, dou
       }
       images.push_back({s.T, k});
     } else {
-      if (error < kLabelCheckBelow && !same_branch_around(p, theta, kStopCycleSafety * error)) margin = 0;
-      error = std::isfinite(d.dT) ? std::fabs(d.dT) * error + step_error : inf;
+      if (error < kLostAt && !same_branch_around(p, theta, kStopCycleSafety * error)) {
+        margin = 0;
+        c.lost = true;
+      }
+      error = std::isfinite(d.dT) && error < kLostAt ? std::fabs(d.dT) * error + step_error : inf;
     }
     theta = s.T;
   }

@@ -51,9 +51,10 @@ SuperstableCheck superstable_check(const Parameters& p, int scan = 20000);
 ///    probed at \f$\theta_i \pm r\f$, \f$r = 10^{-14}, 10^{-13}, \dots, 10^{-2}\f$, where the step must
 ///    stop with the same image (probes outside \f$[t_2, t_3)\f$ are skipped; a probe that throws ends
 ///    the arc);
-///  - a step without a stop, while \f$e < 10^{-3}\f$, must keep its continuity label (covering.hpp:
-///    scenario and branch of \f$T_1\f$) at \f$\theta_i \pm\f$ kStopCycleSafety \f$e\f$, so that \f$T\f$ is smooth
-///    between (a grazing, where \f$T'\f$ is undefined, sets \f$e = \infty\f$).
+///  - a step without a stop must carry \f$e < 10^{-3}\f$ and keep its continuity label (covering.hpp) and
+///    scenario at \f$\theta_i \pm\f$ kStopCycleSafety \f$e\f$, so that \f$T\f$ is smooth between; an error
+///    that reaches \f$10^{-3}\f$ counts as infinite until the next stop, as does a grazing (where
+///    \f$T'\f$ is undefined).
 /// All three are sampled, not proved. Where \f$T'\f$ grows fast (a chaotic orbit) the error exceeds
 /// every arc after a few dozen steps, and a return seen afterwards rests on the last bits of the
 /// computation: a cycle of the rounding, about which double precision cannot decide.
@@ -63,10 +64,13 @@ struct StopCycle {
   long long period = 0;       ///< steps of the cycle (0: no stop image repeated within the bound)
   long long stops = 0;        ///< steps with a stop followed (each one resets the error)
   /// The smallest ratio, over the steps with a stop, of the stop arc's sampled radius to the
-  /// propagated error; 0 when the error overflowed, a step grazed, or a step without a stop changed
-  /// branch within kStopCycleSafety times its error.
+  /// propagated error; 0 when the error reached \f$10^{-3}\f$ (or overflowed) before a stop, a step
+  /// grazed, or a step without a stop changed branch within kStopCycleSafety times its error.
   double margin = 0;
   bool resolved = false;      ///< period > 0 and margin >= kStopCycleSafety: a superstable cycle (sampled)
+  /// The error reached \f$10^{-3}\f$ before a stop (or overflowed, or a step grazed), or a step without
+  /// a stop changed branch within its reach: margin 0 for that reason, not for a narrow arc.
+  bool lost = false;
 };
 
 /// Margin (distance over propagated error) that stop_cycle() requires of every step it follows.
@@ -96,8 +100,9 @@ long long first_visit(const Parameters& p, double theta, double target, long lon
 /// That is after the first step from the image: \f$T'(t_2) = 0\f$ (the flight from rest at \f$t_2\f$
 /// starts with \f$F = 0\f$, Eq. 11), so a shift of \f$t_2\f$ itself would be lost at once. For period 1
 /// the shifted point is image \f$+\,h\f$ (is it in the stop arc?); otherwise \f$T(\mathrm{image}) + h\f$
-/// must reach the image first after period \f$-\,1\f$ steps. A resolved cycle passes; a cycle of the
-/// rounding (almost always) does not.
+/// must reach the image first after period \f$-\,1\f$ steps (\f$-h\f$ where \f$+h\f$ would leave
+/// \f$[t_2, t_3)\f$). A resolved cycle passes; a cycle whose return depends on the digits below
+/// \f$h\f$ does not.
 /// @throws InvalidParameter unless c.period \f$\in [1, 10^7]\f$ and \f$0 < h < 10^{-3}\f$.
 bool stop_cycle_survives_shift(const Parameters& p, const StopCycle& c, double h);
 
