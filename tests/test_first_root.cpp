@@ -5,6 +5,7 @@
 
 #include <cfloat>
 #include <cmath>
+#include <tuple>
 #include <utility>
 
 #include "dfchaos/motion.hpp"
@@ -132,6 +133,48 @@ TEST(FirstRoot, RegressionGrazingContactJustAfterTheSkipWindowIsFound) {
   const Parameters p(1.0, 1e-10, 0.85);
   const NextHit h = next_hit(p, 4.712388979803495);
   EXPECT_NEAR(h.theta1, 10.99554995361687790982548, 1e-9);
+}
+
+TEST(SolveIncreasing, HalleyWithAStartAndAJerkBoundKeepsTheRootAndSavesEvaluations) {
+  // g = x - c + 0.3 sin x on [0, 4]: g' = 1 + 0.3 cos x > 0, g'' = -0.3 sin x, |g'''| <= 0.3.
+  // A start near the root and the jerk bound (which lets the solver return a corrected iterate
+  // without evaluating g there) may only save evaluations: the root stays within the stated
+  // tolerance of a long-double bisection to the last bit, and a start outside the bracket changes
+  // nothing.
+  long saved = 0;
+  for (int k = 0; k < 400; ++k) {
+    const double c = 0.5 + 3.0 * k / 400;
+    int evaluations = 0;
+    auto gd = [&](double x) {
+      ++evaluations;
+      const long double xl = x;
+      return std::tuple<long double, long double, long double>{xl - c + 0.3L * std::sin(xl), 1.0L + 0.3L * std::cos(xl),
+                                                               -0.3L * std::sin(xl)};
+    };
+    const double lo = 0, hi = 4;
+    const long double g_lo = std::get<0>(gd(lo)), g_hi = std::get<0>(gd(hi));
+    evaluations = 0;
+    const double plain = solve_increasing(gd, lo, hi, 0.0, g_lo, g_hi);
+    const int plain_evaluations = evaluations;
+    evaluations = 0;
+    const double outside = solve_increasing(gd, lo, hi, 0.0, g_lo, g_hi, -1.0);
+    EXPECT_EQ(outside, plain) << "c=" << c;
+    EXPECT_EQ(evaluations, plain_evaluations);
+    evaluations = 0;
+    const double fast = solve_increasing(gd, lo, hi, 0.0, g_lo, g_hi, c + 0.01, 0.3);
+    EXPECT_LE(evaluations, plain_evaluations) << "c=" << c;
+    saved += plain_evaluations - evaluations;
+    long double a = lo, b = hi;
+    for (int it = 0; it < 200 && b - a > 0; ++it) {
+      const long double m = 0.5L * (a + b);
+      if (m <= a || m >= b) break;
+      if (m - c + 0.3L * std::sin(m) < 0) a = m; else b = m;
+    }
+    const double tol = 4 * DBL_EPSILON * (hi + 1);  // the solver's stated tolerance
+    EXPECT_LE(std::fabs(fast - static_cast<double>(b)), tol) << "c=" << c;
+    EXPECT_LE(std::fabs(plain - static_cast<double>(b)), tol) << "c=" << c;
+  }
+  EXPECT_GT(saved, 400);  // at least one evaluation per root on average
 }
 
 TEST(SolveIncreasing, RegressionConvergedNewtonStopsWithoutBisecting) {

@@ -528,6 +528,37 @@ class PieceFunction {
   int n_anchors_ = 0;
 };
 
+/// A start for the root search on a piece [0, L] where f(0) < 0 <= f(L): the root of the quintic
+/// Hermite interpolant of f, f', f'' at both ends (f0, d0, k0 at 0; f1, d1, k1 at L), found by a
+/// bracketed Newton iteration on the interpolant (no evaluation of f). The interpolant differs from
+/// f by at most \f$L^6 \max|f^{(6)}| / 46080 \le L^6 R / 46080\f$ (\f$f^{(6)}\f$ is the harmonic
+/// part's), so for the pieces of the search (L up to about \f$\pi\f$) the start lies within about
+/// \f$10^{-2}\f$ of the root, where the secant of the end values may be off by 1: a start only,
+/// saving one or two evaluations of f; the root itself is found by solve_increasing on f.
+/// Returns NaN when the interpolant gives no start inside (0, L).
+double hermite_start(double L, double f0, double d0, double k0, double f1, double d1, double k1) {
+  // p(t) = f0 + m0 t + K0 t^2 / 2 + c3 t^3 + c4 t^4 + c5 t^5 on t = u / L in [0, 1].
+  const double m0 = d0 * L, m1 = d1 * L, K0 = k0 * L * L, K1 = k1 * L * L, df = f1 - f0;
+  const double c3 = 10 * df - 6 * m0 - 4 * m1 - 1.5 * K0 + 0.5 * K1;
+  const double c4 = -15 * df + 8 * m0 + 7 * m1 + 1.5 * K0 - K1;
+  const double c5 = 6 * df - 3 * (m0 + m1) - 0.5 * (K0 - K1);
+  const double c2 = 0.5 * K0;
+  double lo = 0, hi = 1, t = f0 / (f0 - f1);  // secant start, then Newton kept inside [lo, hi]
+  if (!(t > 0 && t < 1)) t = 0.5;
+  for (int it = 0; it < 12; ++it) {
+    const double p = f0 + t * (m0 + t * (c2 + t * (c3 + t * (c4 + t * c5))));
+    const double dp = m0 + t * (2 * c2 + t * (3 * c3 + t * (4 * c4 + t * 5 * c5)));
+    (p < 0 ? lo : hi) = t;
+    double next = dp > 0 ? t - p / dp : 0.5 * (lo + hi);
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    const bool done = std::fabs(next - t) <= 1e-6;
+    t = next;
+    if (done) break;
+  }
+  const double u = t * L;
+  return u > 0 && u < L ? u : std::numeric_limits<double>::quiet_NaN();
+}
+
 /// f, f' and the harmonic part at the end of a piece: the start of the next one.
 struct PieceEnd {
   bool valid = false;
@@ -573,7 +604,16 @@ std::optional<UpCrossing> search_piece(const QuadraticPlusHarmonic& f, PieceFunc
   //     (0, L], with f < 0 before it and f >= 0 after it, so the sign bracket [0, L] is valid
   //     (the solver bisects where f' < 0).
   auto val_der_curv = [&pf](double u) { return pf.value_slope_curvature(u); };
-  if (f_start < 0 && f_end >= 0) return crossing_at(solve_increasing(val_der_curv, 0, L, phi0, f_start, f_end));
+  if (f_start < 0 && f_end >= 0) {
+    // (After a start at rest the value at 0 is a bound, not data for an interpolant: secant start.)
+    const double H0 = start.valid ? start.H : pf.harmonic(0).H;
+    const double guess = left_value ? std::numeric_limits<double>::quiet_NaN()
+                                    : hermite_start(L, static_cast<double>(f_start), static_cast<double>(d0),
+                                                    static_cast<double>(2 * f.alpha) - H0, static_cast<double>(f_end),
+                                                    static_cast<double>(d1), static_cast<double>(2 * f.alpha) - h1.H);
+    // (|f'''| = |A cos t - B sin t| <= R.)
+    return crossing_at(solve_increasing(val_der_curv, 0, L, phi0, f_start, f_end, guess, static_cast<double>(R)));
+  }
   // (2) f < 0 at both ends: only a concave piece can rise above 0 in between. Its graph lies
   //     below the tangent lines at both ends, so its maximum is at most where the tangents
   //     cross; the piece is skipped when that bound is negative beyond a rounding margin (the

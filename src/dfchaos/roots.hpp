@@ -118,10 +118,16 @@ std::optional<UpCrossing> first_upcrossing(const QuadraticPlusHarmonic& f, const
 /// or fails to halve the previous one (as in Numerical Recipes' rtsafe). When `gd(x)` returns a
 /// triple \f$(g, g', g'')\f$ the correction is Halley's (cubic convergence), computed in double. Stops when the Newton
 /// correction or the bracket falls below the tolerance \f$4\epsilon(|x_0| + |hi| + 1)\f$, where
-/// \f$x_0\f$ is the offset scale.
+/// \f$x_0\f$ is the offset scale. A `start` strictly inside \f$(lo, hi)\f$ replaces the secant start
+/// (e.g. a root of an interpolant of the end data); any other value (NaN) keeps the secant.
+/// With Halley's correction and a `jerk_bound` \f$J \ge |g'''|\f$ (near the root), an iterate
+/// whose predicted error after the step, \f$2\bigl((g''/2g')^2 + J/(6g')\bigr)|\text{step}|^3\f$,
+/// is below tol/16 is corrected and returned without a further evaluation (NaN: always evaluate).
 /// @throws std::logic_error if 400 iterations do not suffice.
 template <class GD>
-double solve_increasing(GD&& gd, double lo, double hi, double scale, long double g_lo, long double g_hi);
+double solve_increasing(GD&& gd, double lo, double hi, double scale, long double g_lo, long double g_hi,
+                        double start = std::numeric_limits<double>::quiet_NaN(),
+                        double jerk_bound = std::numeric_limits<double>::quiet_NaN());
 
 }  // namespace dfchaos
 

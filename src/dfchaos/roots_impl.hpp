@@ -11,12 +11,16 @@
 namespace dfchaos {
 
 template <class GD>
-double solve_increasing(GD&& gd, double lo, double hi, double scale, long double g_lo, long double g_hi) {
+double solve_increasing(GD&& gd, double lo, double hi, double scale, long double g_lo, long double g_hi, double start,
+                        double jerk_bound) {
   const double tol = 4 * DBL_EPSILON * (std::fabs(scale) + std::fabs(hi) + 1.0);
-  // Start from the secant of the end values (inside the bracket), then Newton's method, with a
-  // bisection whenever a Newton step would leave the bracket or fails to halve the previous step.
+  // Start from the given start if it lies inside the bracket, else from the secant of the end
+  // values, then Newton's method, with a bisection whenever a Newton step would leave the bracket
+  // or fails to halve the previous step.
   double x = 0.5 * (lo + hi);
-  if (g_lo < 0 && g_hi > 0) {
+  if (start > lo && start < hi) {
+    x = start;
+  } else if (g_lo < 0 && g_hi > 0) {
     const double sec = static_cast<double>(lo - g_lo * (hi - lo) / (g_hi - g_lo));
     if (sec > lo && sec < hi) x = sec;
   }
@@ -41,9 +45,22 @@ double solve_increasing(GD&& gd, double lo, double hi, double scale, long double
         if (std::fabs(ratio) < 0.5) step /= 1 - ratio;
       }
       newton_ok = d > 0 && std::fabs(2 * step) <= std::fabs(dx_old);
-      // Converged: the correction is below the tolerance (see below).
-      if (newton_ok && std::fabs(step) <= 0.5 * tol) return x;
+      // Converged: the correction is below the tolerance (see below). It is applied: after it the
+      // error is at the level of the rounding of g, whatever the path to x was.
+      if (newton_ok && std::fabs(step) <= 0.5 * tol) return x - step;
       newton = newton_ok ? x - step : 0.0;
+      // Converged after this step, without evaluating g there: Halley's error after a step of
+      // size e is about C e^3 with C = (g''/(2g'))^2 - g'''/(6g'); with |g'''| <= jerk_bound near
+      // the root and a safety factor 2 on C, when that bound on the error is below tol/16 the
+      // iterate x - step is returned at once. It is the point the iteration would evaluate next
+      // and then return (its correction being below tol/2), so the evaluation is saved. Only for
+      // small steps (|g g''/(2 g'^2)| < 0.01) inside the bracket.
+      if (newton_ok && newton > lo && newton < hi && jerk_bound >= 0) {
+        const double dd_ = static_cast<double>(d), k = static_cast<double>(std::get<2>(r)) / (2 * dd_);
+        const double ratio = static_cast<double>(g) / dd_ * k;
+        const double C = 2 * (k * k + jerk_bound / (6 * dd_));
+        if (std::fabs(ratio) < 0.01 && C * std::fabs(step) * step * step <= tol / 16) return newton;
+      }
     } else {
       newton_ok = d > 0 && std::fabs(2 * g) <= std::fabs(dx_old * d);
       // Converged: the Newton correction is below the tolerance. (Tested before the bracket test:
