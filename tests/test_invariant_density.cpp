@@ -9,6 +9,7 @@
 
 #include "dfchaos/errors.hpp"
 #include "dfchaos/invariant_density.hpp"
+#include "dfchaos/superstable.hpp"
 #include "dfchaos/map_derivative.hpp"
 #include "dfchaos/return_map.hpp"
 
@@ -33,10 +34,12 @@ TEST(InvariantDensity, IsAProbabilityOnTheArc) {
 
 TEST(InvariantDensity, RecordsTheReturnOfTheComputedOrbitToT2) {
   // Started at t2 itself, the first visit is index 0; the return time must be the first k with
-  // T^k(t2) == t2, found here by iterating T by hand (0 if there is none within the orbit). From the
-  // gallery's parameters, whose computed orbit of t2 does return: a second start, reaching t2 after
-  // a transient, must record the same return time, since it then follows the same computed orbit.
-  const Parameters p(1.0, 0.01, 0.85);
+  // T^k(t2) == t2, found here by iterating T by hand (0 if there is none within the orbit). At these
+  // parameters the computed orbit of t2 returns (a cycle of the rounding, period 147 today; the
+  // gallery's b/a = 0.01 returned after 943 steps until the root solver's start changed): a second
+  // start, reaching t2 after a transient, must record the same return time, since it then follows
+  // the same computed orbit.
+  const Parameters p(1.0, 0.0089, 0.85);
   const double t2 = *p.t2(), t3 = *p.t3();
   constexpr long long kSteps = 40000;
   const OrbitHistogram h = orbit_histogram(p, t2, 0, kSteps, 50);
@@ -78,19 +81,30 @@ TEST(InvariantDensity, CountsTheOrbitThatIteratingTGives) {
 }
 
 TEST(InvariantDensity, AtomAtT2OnASuperstableCycle) {
-  // At b/a = 0.01, q/a = 0.95 orbits end on a superstable cycle through t2 (Theorem 2 is one
-  // instance): the empirical measure is carried by the cycle, the atom at t2 has mass 1/period.
-  const Parameters p(1.0, 0.01, 0.95);
-  const double theta0 = *p.t2() + 0.3 * (*p.t3() - *p.t2());
-  const OrbitStatistics st = orbit_statistics(p, theta0, 2000, 5000);
-  ASSERT_GT(st.period_of_t2, 0) << "no superstable cycle through t2 at these parameters";
-  const long long steps = 20 * st.period_of_t2;
-  const OrbitHistogram h = orbit_histogram(p, theta0, 2000, steps, 200);
+  // At b/a = 0.000876896..., q/a = 0.85 the orbit of t2 is a superstable cycle of period 2 that
+  // t2_cycle resolves (its error stays far inside the stop arc): an orbit that reaches t2 stays on
+  // it, the empirical measure is carried by the cycle and the atom at t2 has mass 1/period. (The
+  // parameters used here before, b/a = 0.01, q/a = 0.95, gave a computed return to t2 that t2_cycle
+  // does not resolve: a cycle of the rounding, whose period changed with the root solver's start.)
+  const Parameters p(1.0, 0.0008768960966052783, 0.85);
+  const double t2 = *p.t2(), t3 = *p.t3();
+  const StopCycle c = t2_cycle(p, 100);
+  ASSERT_TRUE(c.resolved) << "the cycle through t2 is not resolved: pick other parameters";
+  // Both starts reach t2 after a transient that depends on the rounding (tens of thousands of steps).
+  const double theta0 = t2 + 0.3 * (t3 - t2), theta1 = t2 + 0.7 * (t3 - t2);
+  const long long k0 = first_visit(p, theta0, t2, 400000), k1 = first_visit(p, theta1, t2, 400000);
+  ASSERT_GT(k0, 0) << "the orbit does not reach t2 within 400000 steps: pick other parameters";
+  ASSERT_GT(k1, 0) << "the orbit does not reach t2 within 400000 steps: pick other parameters";
+  const long long transient = std::max(k0, k1);
+  const OrbitStatistics st = orbit_statistics(p, theta0, transient, 5000);
+  EXPECT_EQ(st.period_of_t2, c.period);
+  const long long steps = 20 * c.period;
+  const OrbitHistogram h = orbit_histogram(p, theta0, transient, steps, 200);
   EXPECT_EQ(h.at_t2, 20);
-  EXPECT_NEAR(h.atom_mass(), 1.0 / static_cast<double>(st.period_of_t2), 1e-15);
+  EXPECT_NEAR(h.atom_mass(), 1.0 / static_cast<double>(c.period), 1e-15);
   EXPECT_NEAR(h.total_mass(), 1.0, kMassTol);
   // two starts end on the same cycle: the same measure
-  const OrbitHistogram g = orbit_histogram(p, *p.t2() + 0.7 * (*p.t3() - *p.t2()), 2000, steps, 200);
+  const OrbitHistogram g = orbit_histogram(p, theta1, transient, steps, 200);
   EXPECT_LT(l1_distance(h, g), 1e-12);
 }
 

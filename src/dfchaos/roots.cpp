@@ -259,38 +259,40 @@ long double amplitude(double A, double B) {
   return std::hypot(A, B);
 }
 
-/// inflection_phases_into, remembered per thread for the last two coefficient sets
-/// \f$(A, B, \alpha)\f$: an evaluation of T searches two kinds of function (the gap, the progression
-/// velocity), whose coefficients repeat from one search to the next. A pure function of its key,
-/// so the results do not depend on what was computed before.
-int inflection_phases_cached(const QuadraticPlusHarmonic& f, double out[2]) {
+/// The inflection phases of a coefficient set and \f$\sin, \cos\f$ there (one sincos call each).
+struct Inflections {
+  int n = 0;                        ///< how many (0 or 2)
+  double at[2] = {0, 0};            ///< the phases, ascending
+  double sn[2] = {0, 0}, cs[2] = {0, 0};  ///< sine and cosine at them
+};
+
+/// inflection_phases_into and the sine and cosine there, remembered per thread for the last two
+/// coefficient sets \f$(A, B, \alpha)\f$: an evaluation of T searches two kinds of function (the
+/// gap, the progression velocity), whose coefficients repeat from one search to the next. A pure
+/// function of its key, so the results do not depend on what was computed before.
+const Inflections& inflections_cached(const QuadraticPlusHarmonic& f) {
   struct Entry {
     bool valid = false;
     double A = 0, B = 0;
     long double alpha = 0;
-    int n = 0;
-    double at[2] = {0, 0};
+    Inflections value;
   };
   thread_local Entry cache[2];
   thread_local int next = 0;
   for (const Entry& e : cache)
     // (signbit too: atan2 tells -0 from +0, so the inflections of B = -0 and B = +0 may differ)
     if (e.valid && e.A == f.A && e.B == f.B && e.alpha == f.alpha && std::signbit(e.A) == std::signbit(f.A) &&
-        std::signbit(e.B) == std::signbit(f.B)) {
-      out[0] = e.at[0];
-      out[1] = e.at[1];
-      return e.n;
-    }
+        std::signbit(e.B) == std::signbit(f.B))
+      return e.value;
   Entry& e = cache[next];
   next ^= 1;
-  e.n = inflection_phases_into(f, e.at);
+  e.value.n = inflection_phases_into(f, e.value.at);
+  for (int i = 0; i < e.value.n; ++i) ::sincos(e.value.at[i], &e.value.sn[i], &e.value.cs[i]);  // (glibc: one call)
   e.A = f.A;
   e.B = f.B;
   e.alpha = f.alpha;
   e.valid = true;
-  out[0] = e.at[0];
-  out[1] = e.at[1];
-  return e.n;
+  return e.value;
 }
 
 /// Where the search looks, from the quadratic envelope \f$\alpha s^2 + \beta s + \gamma \pm R\f$ of f
@@ -346,17 +348,28 @@ SearchBounds search_bounds(const QuadraticPlusHarmonic& f, long double R, long d
   return b;
 }
 
-/// The phases in [0, 2 pi) where pieces end: 0 and the inflections of f (zeros of f''), ascending
-/// and distinct. Between two consecutive breaks f' is monotone. (A fixed array: this is built once
+/// The phases in [0, 2 pi) where pieces end: the inflections of f (zeros of f''), ascending and
+/// distinct, or the phase 0 alone when f'' has no sign change (then a piece is one whole period).
+/// Between two consecutive breaks f' is monotone; a piece may run across the phase 0 (turn
+/// boundary). With each break, the sine and cosine of its phase when known (the harmonic part at a
+/// piece end is then formed from them, without a sincos call). (A fixed array: this is built once
 /// per search, and a heap allocation here cost more than the arithmetic.)
 struct PieceBreaks {
-  std::array<double, 3> at{};  ///< the breaks, ascending; at[0] = 0
-  int n = 0;                   ///< how many
+  std::array<double, 2> at{};  ///< the breaks, ascending
+  std::array<double, 2> sn{}, cs{};  ///< sine and cosine at them (where trig)
+  std::array<bool, 2> trig{};  ///< whether sn, cs hold
+  int n = 0;                   ///< how many (1 or 2)
 
-  /// The end of the piece that starts at `cursor`: the first break after its phase, else the next 0.
-  Instant next_after(const Instant& cursor) const {
-    const double* next = std::upper_bound(at.data(), at.data() + n, cursor.phase);
-    return next == at.data() + n ? Instant{cursor.turn + 1, 0.0} : Instant{cursor.turn, *next};
+  /// The end of the piece that starts at `cursor`: the first break after its phase in the same
+  /// turn, else the first break of the next turn; `index` receives which break it is.
+  Instant next_after(const Instant& cursor, int& index) const {
+    for (int i = 0; i < n; ++i)
+      if (at[i] > cursor.phase) {
+        index = i;
+        return Instant{cursor.turn, at[i]};
+      }
+    index = 0;
+    return Instant{cursor.turn + 1, at[0]};
   }
 };
 
@@ -365,18 +378,37 @@ struct PieceBreaks {
 /// has no meaning: such a break is snapped onto the origin (within 1e-12 on the circle).
 PieceBreaks piece_breaks(const QuadraticPlusHarmonic& f) {
   PieceBreaks b;
-  double* buf = b.at.data();
-  const int n_inflections = inflection_phases_cached(f, buf);
-  for (int i = 0; i < n_inflections; ++i) {
-    const double d = std::fabs(buf[i] - f.origin.phase);
-    if (std::min(d, two_pi - d) < 1e-12) buf[i] = f.origin.phase;
+  const Inflections& inf = inflections_cached(f);
+  if (inf.n == 0) {
+    b.n = 1;
+    b.at[0] = 0.0;
+    b.sn[0] = 0.0;
+    b.cs[0] = 1.0;
+    b.trig[0] = true;
+    return b;
   }
-  // 0 first (phases lie in [0, 2 pi)), then the inflections in ascending order (the snap may
-  // have swapped two inflections that were within 1e-12 of each other).
-  if (n_inflections == 2 && buf[1] < buf[0]) std::swap(buf[0], buf[1]);
-  for (int i = n_inflections; i > 0; --i) buf[i] = buf[i - 1];
-  buf[0] = 0.0;
-  b.n = static_cast<int>(std::unique(buf, buf + n_inflections + 1) - buf);
+  for (int i = 0; i < inf.n; ++i) {
+    b.at[i] = inf.at[i];
+    b.sn[i] = inf.sn[i];
+    b.cs[i] = inf.cs[i];
+    b.trig[i] = true;
+    const double d = std::fabs(inf.at[i] - f.origin.phase);
+    if (std::min(d, two_pi - d) < 1e-12) {
+      b.at[i] = f.origin.phase;
+      b.sn[i] = f.origin_sin;
+      b.cs[i] = f.origin_cos;
+      b.trig[i] = f.origin_trig;
+    }
+  }
+  // Ascending (the snap may have swapped two inflections that were within 1e-12 of each other),
+  // distinct.
+  if (b.at[1] < b.at[0]) {
+    std::swap(b.at[0], b.at[1]);
+    std::swap(b.sn[0], b.sn[1]);
+    std::swap(b.cs[0], b.cs[1]);
+    std::swap(b.trig[0], b.trig[1]);
+  }
+  b.n = b.at[1] == b.at[0] ? 1 : 2;
   return b;
 }
 
@@ -450,11 +482,12 @@ struct HarmonicAt {
 /// polynomial part \f$(\alpha s + c_1) s + c_0\f$, \f$s = \mathrm{base} + u\f$ (Recentring::coefficients),
 /// plus the harmonic part.
 ///
-/// **The harmonic part without a sincos call per evaluation.** It is computed exactly (one sincos
-/// call) at a few anchors: the piece's end, its start (or, when the scan goes on from the previous
-/// piece, that piece's end, computed at its own start phase plus its length), and the points where
-/// an evaluation is more than kRotate from every anchor; on a piece shorter than kRotate with no
-/// carried start, the start is rotated from the end. Elsewhere, at \f$u = u_a + h\f$ with \f$|h| \le\f$ kRotate, it follows
+/// **The harmonic part without a sincos call per evaluation.** It is computed exactly at a few
+/// anchors: the piece's end, its start (or, when the scan goes on from the previous piece, that
+/// piece's end), and the points where an evaluation is more than kRotate from every anchor; on a
+/// piece shorter than kRotate with no known start, the start is rotated from the end. An anchor at
+/// a break (an inflection phase, PieceBreaks) or at the origin takes the sine and cosine known
+/// there; any other costs one sincos call. Elsewhere, at \f$u = u_a + h\f$ with \f$|h| \le\f$ kRotate, it follows
 /// from the anchor's \f$(H, D)\f$ by the addition theorem,
 /// \f$H(u) = H + (H(\cos h - 1) + D\sin h)\f$, \f$D(u) = D + (D(\cos h - 1) - H\sin h)\f$, with the
 /// series of small_sincos(): a few multiplications instead of a sincos call, with an error of
@@ -514,13 +547,15 @@ class PieceFunction {
 
   /// Makes a known harmonic part an anchor (the end of the previous piece, at u = 0).
   void add_anchor(const HarmonicAt& h) { anchors_[n_anchors_ < 3 ? n_anchors_++ : 2] = h; }
+  /// The harmonic part at u from the sine and cosine of its phase.
+  HarmonicAt from_trig(double u, double sn, double cs) const { return {u, f_.A * sn + f_.B * cs, f_.A * cs - f_.B * sn}; }
 
  private:
   /// One sincos call at u; the result becomes an anchor (the two ends stay, a third slot is reused).
   HarmonicAt exact(double u) {
     double sn, cs;
     ::sincos(phi0_ + u, &sn, &cs);  // (glibc: one call for both)
-    const HarmonicAt h{u, f_.A * sn + f_.B * cs, f_.A * cs - f_.B * sn};
+    const HarmonicAt h = from_trig(u, sn, cs);
     add_anchor(h);
     return h;
   }
@@ -584,8 +619,8 @@ std::optional<UpCrossing> search_piece(const QuadraticPlusHarmonic& f, PieceFunc
     return r;
   };
   const double phi0 = pf.phi0_;
-  // Value and slope at both ends (one sine-cosine evaluation each; the start's is the end of the
-  // previous piece when the scan continues from there).
+  // Value and slope at both ends (the harmonic part at a break end is known; the start's is the
+  // end of the previous piece when the scan continues from there).
   const HarmonicAt h1 = pf.harmonic(L);
   const long double f_end = pf.poly(L) + static_cast<long double>(h1.H), d1 = pf.dpoly(L) + static_cast<long double>(h1.D);
   end = PieceEnd{true, f_end, d1, h1.H, h1.D};
@@ -675,6 +710,9 @@ std::optional<UpCrossing> first_upcrossing(const QuadraticPlusHarmonic& f, const
   Recentring recentring;
   PieceEnd carried;  // f at the cursor from the end of the previous piece, when the scan goes on from there
   bool falling_first_piece = false;  // the first piece falls (RestStart::falling): skipped unevaluated
+  // Sine and cosine of the cursor's phase, when known: at the origin (origin_trig), at a break.
+  bool cursor_trig = f.origin_trig;
+  double cursor_sn = f.origin_sin, cursor_cs = f.origin_cos;
   if (f.starts_at_rest) {
     const RestStart rs = rest_start(f, R, limit);
     if (rs.kind == RestStart::Root) return rs.root;
@@ -683,6 +721,7 @@ std::optional<UpCrossing> first_upcrossing(const QuadraticPlusHarmonic& f, const
     s_cursor = elapsed(f.origin, cursor);
     left_value = rs.left_value;
     falling_first_piece = rs.falling;
+    cursor_trig = false;
   }
   while (true) {
     if (bounds.in_window(s_cursor)) {
@@ -691,22 +730,31 @@ std::optional<UpCrossing> first_upcrossing(const QuadraticPlusHarmonic& f, const
       left_value.reset();
       carried = PieceEnd{};
       falling_first_piece = false;  // (the piece after the window is not the one next to the origin)
+      cursor_trig = false;
     }
     if (s_cursor >= limit) break;
     if (++pieces > limits.max_pieces)
       throw GaveUp("first_upcrossing: gave up after " + std::to_string(limits.max_pieces) + " monotone pieces");
 
-    // The piece [cursor, end]: up to the next inflection or period boundary, the limit, or the window.
-    Instant end = breaks.next_after(cursor);
+    // The piece [cursor, end]: up to the next break (inflection), the limit, or the window.
+    int end_break = 0;
+    Instant end = breaks.next_after(cursor, end_break);
     long double s_end = elapsed(f.origin, end);
     long double cut = limit;
     if (bounds.we > 0 && bounds.ws > s_cursor) cut = std::min(cut, bounds.ws);
+    bool end_trig = breaks.trig[end_break];
     if (s_end > cut) {
       end = advance(f.origin, cut);
       s_end = cut;
+      end_trig = false;
     }
     const double L = static_cast<double>(elapsed(cursor, end));
     PieceFunction pf(f, cursor.phase);
+    // The harmonic part at a break end, and at an uncarried start whose phase has a known sine and
+    // cosine, without a sincos call (at the end from the break's own phase, where cursor.phase + L
+    // would carry the rounding of L).
+    if (end_trig) pf.add_anchor(pf.from_trig(L, breaks.sn[end_break], breaks.cs[end_break]));
+    if (cursor_trig && !carried.valid) pf.add_anchor(pf.from_trig(0, cursor_sn, cursor_cs));
     recentring.coefficients(f, cursor, s_cursor, pf.base, pf.c1, pf.c0);
     PieceEnd piece_end;
     if (falling_first_piece) falling_first_piece = false;
@@ -717,6 +765,11 @@ std::optional<UpCrossing> first_upcrossing(const QuadraticPlusHarmonic& f, const
     cursor = end;
     s_cursor = s_end;
     left_value.reset();
+    cursor_trig = end_trig;
+    if (end_trig) {
+      cursor_sn = breaks.sn[end_break];
+      cursor_cs = breaks.cs[end_break];
+    }
   }
   if (bounds.limit_is_bound && limit < limits.horizon)
     throw std::logic_error("first_upcrossing: no root found before the guaranteed bound (a bug)");
