@@ -3,8 +3,10 @@
 // located by bisection on dG1/dt, must show no contact before the computed T1.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <limits>
 #include <tuple>
 #include <utility>
 
@@ -137,11 +139,11 @@ TEST(FirstRoot, RegressionGrazingContactJustAfterTheSkipWindowIsFound) {
 
 TEST(SolveIncreasing, HalleyWithAStartAndAJerkBoundKeepsTheRootAndSavesEvaluations) {
   // g = x - c + 0.3 sin x on [0, 4]: g' = 1 + 0.3 cos x > 0, g'' = -0.3 sin x, |g'''| <= 0.3.
-  // A start near the root and the jerk bound (which lets the solver return a corrected iterate
-  // without evaluating g there) may only save evaluations: the root stays within the stated
-  // tolerance of a long-double bisection to the last bit, and a start outside the bracket changes
+  // A start near the root, and the jerk bound (which lets the solver return a corrected iterate
+  // without evaluating g there), each save evaluations; the root stays within the stated
+  // tolerance of a long-double bisection to the last bit; a start outside the bracket changes
   // nothing.
-  long saved = 0;
+  long plain_total = 0, start_total = 0, jerk_total = 0, both_total = 0;
   for (int k = 0; k < 400; ++k) {
     const double c = 0.5 + 3.0 * k / 400;
     int evaluations = 0;
@@ -153,17 +155,21 @@ TEST(SolveIncreasing, HalleyWithAStartAndAJerkBoundKeepsTheRootAndSavesEvaluatio
     };
     const double lo = 0, hi = 4;
     const long double g_lo = std::get<0>(gd(lo)), g_hi = std::get<0>(gd(hi));
-    evaluations = 0;
-    const double plain = solve_increasing(gd, lo, hi, 0.0, g_lo, g_hi);
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    auto solve = [&](double start, double jerk, long& total) {
+      evaluations = 0;
+      const double root = solve_increasing(gd, lo, hi, 0.0, g_lo, g_hi, start, jerk);
+      total += evaluations;
+      return root;
+    };
+    const double plain = solve(nan, nan, plain_total);
     const int plain_evaluations = evaluations;
-    evaluations = 0;
-    const double outside = solve_increasing(gd, lo, hi, 0.0, g_lo, g_hi, -1.0);
-    EXPECT_EQ(outside, plain) << "c=" << c;
-    EXPECT_EQ(evaluations, plain_evaluations);
-    evaluations = 0;
-    const double fast = solve_increasing(gd, lo, hi, 0.0, g_lo, g_hi, c + 0.01, 0.3);
-    EXPECT_LE(evaluations, plain_evaluations) << "c=" << c;
-    saved += plain_evaluations - evaluations;
+    long outside_total = 0;
+    EXPECT_EQ(solve(-1.0, nan, outside_total), plain) << "c=" << c;
+    EXPECT_EQ(outside_total, plain_evaluations);
+    const double with_start = solve(c + 0.01, nan, start_total);
+    const double with_jerk = solve(nan, 0.3, jerk_total);
+    const double fast = solve(c + 0.01, 0.3, both_total);
     long double a = lo, b = hi;
     for (int it = 0; it < 200 && b - a > 0; ++it) {
       const long double m = 0.5L * (a + b);
@@ -171,10 +177,27 @@ TEST(SolveIncreasing, HalleyWithAStartAndAJerkBoundKeepsTheRootAndSavesEvaluatio
       if (m - c + 0.3L * std::sin(m) < 0) a = m; else b = m;
     }
     const double tol = 4 * DBL_EPSILON * (hi + 1);  // the solver's stated tolerance
-    EXPECT_LE(std::fabs(fast - static_cast<double>(b)), tol) << "c=" << c;
-    EXPECT_LE(std::fabs(plain - static_cast<double>(b)), tol) << "c=" << c;
+    for (double root : {plain, with_start, with_jerk, fast}) EXPECT_LE(std::fabs(root - static_cast<double>(b)), tol) << "c=" << c;
   }
-  EXPECT_GT(saved, 400);  // at least one evaluation per root on average
+  EXPECT_LT(start_total, plain_total);
+  EXPECT_LT(jerk_total, plain_total);
+  EXPECT_LT(both_total, std::min(start_total, jerk_total));
+}
+
+TEST(SolveIncreasing, TheJerkBoundKeepsAHalleyStepFromEndingTooEarlyWhereGppVanishes) {
+  // g = x - pi + 0.9 sin x: at the root pi, g' = 0.1 and g'' = 0 but g''' = 0.9. From a start 1e-4
+  // away, (g''/2g')^2 alone would predict an error of ~1e-19 after one Halley step; the true error
+  // is about g''' e^3 / (6 g') = 1.5e-12. With the jerk bound 0.9 the step is evaluated, and the
+  // root is right to the tolerance.
+  const long double c = 3.14159265358979323846L;
+  auto gd = [&](double x) {
+    const long double xl = x;
+    return std::tuple<long double, long double, long double>{xl - c + 0.9L * std::sin(xl), 1.0L + 0.9L * std::cos(xl),
+                                                             -0.9L * std::sin(xl)};
+  };
+  const double lo = 2, hi = 4, tol = 4 * DBL_EPSILON * (hi + 1);
+  const double root = solve_increasing(gd, lo, hi, 0.0, std::get<0>(gd(lo)), std::get<0>(gd(hi)), 3.1416926535897933, 0.9);
+  EXPECT_LE(std::fabs(root - 3.141592653589793), tol);
 }
 
 TEST(SolveIncreasing, RegressionConvergedNewtonStopsWithoutBisecting) {

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
 
 #include "dfchaos/errors.hpp"
 #include "dfchaos/invariant_density.hpp"
@@ -34,27 +35,38 @@ TEST(InvariantDensity, IsAProbabilityOnTheArc) {
 
 TEST(InvariantDensity, RecordsTheReturnOfTheComputedOrbitToT2) {
   // Started at t2 itself, the first visit is index 0; the return time must be the first k with
-  // T^k(t2) == t2, found here by iterating T by hand (0 if there is none within the orbit). At these
-  // parameters the computed orbit of t2 returns (a cycle of the rounding, period 147 today; the
-  // gallery's b/a = 0.01 returned after 943 steps until the root solver's start changed): a second
-  // start, reaching t2 after a transient, must record the same return time, since it then follows
-  // the same computed orbit.
-  const Parameters p(1.0, 0.0089, 0.85);
-  const double t2 = *p.t2(), t3 = *p.t3();
+  // T^k(t2) == t2, found here by iterating T by hand (0 if there is none within the orbit). Where
+  // the computed orbit of t2 returns (a cycle of the rounding), a second start, reaching t2 after a
+  // transient, must record the same return time, since it then follows the same computed orbit.
+  // Which b/a near the gallery's 0.01 gives such a return changes with any ulp-level change of T
+  // (0.01 itself returned after 943 steps until the root solver's start changed), so the
+  // parameters are the first of a list where both happen within the bounds below.
   constexpr long long kSteps = 40000;
-  const OrbitHistogram h = orbit_histogram(p, t2, 0, kSteps, 50);
-  EXPECT_EQ(h.first_t2, 0);
+  auto return_by_hand = [&](const Parameters& q) {
+    const double t2 = *q.t2();
+    double x = t2;
+    for (long long k = 1; k < kSteps; ++k) {
+      x = T(q, x);
+      if (x == t2) return k;
+    }
+    return 0LL;
+  };
+  std::optional<Parameters> chosen;
   long long by_hand = 0;
-  double x = t2;
-  for (long long k = 1; k < kSteps; ++k) {
-    x = T(p, x);
-    if (x == t2) {
-      by_hand = k;
+  for (double b : {0.0089, 0.0096, 0.0101, 0.0102, 0.0091, 0.0094, 0.0095, 0.0107, 0.0114, 0.0085}) {
+    const Parameters q(1.0, b, 0.85);
+    by_hand = return_by_hand(q);
+    if (by_hand > 0 && orbit_histogram(q, *q.t2() + 0.3 * (*q.t3() - *q.t2()), 100, 400000, 50).first_t2 >= 0) {
+      chosen = q;
       break;
     }
   }
+  ASSERT_TRUE(chosen.has_value()) << "no parameters in the list have a computed return of t2 reached from the second start: extend the list";
+  const Parameters& p = *chosen;
+  const double t2 = *p.t2(), t3 = *p.t3();
+  const OrbitHistogram h = orbit_histogram(p, t2, 0, kSteps, 50);
+  EXPECT_EQ(h.first_t2, 0);
   EXPECT_EQ(h.t2_return, by_hand);
-  ASSERT_GT(by_hand, 0) << "the computed orbit of t2 no longer returns within " << kSteps << " steps: pick other parameters";
   EXPECT_EQ(h.at_t2, (kSteps - 1) / by_hand + 1);  // then it is periodic
   const OrbitHistogram g = orbit_histogram(p, t2 + 0.3 * (t3 - t2), 100, 400000, 50);
   ASSERT_GE(g.first_t2, 0);

@@ -485,7 +485,7 @@ struct HarmonicAt {
 /// **The harmonic part without a sincos call per evaluation.** It is computed exactly at a few
 /// anchors: the piece's end, its start (or, when the scan goes on from the previous piece, that
 /// piece's end), and the points where an evaluation is more than kRotate from every anchor; on a
-/// piece shorter than kRotate with no known start, the start is rotated from the end. An anchor at
+/// piece shorter than kRotate, an end that is not known is rotated from the other. An anchor at
 /// a break (an inflection phase, PieceBreaks) or at the origin takes the sine and cosine known
 /// there; any other costs one sincos call. Elsewhere, at \f$u = u_a + h\f$ with \f$|h| \le\f$ kRotate, it follows
 /// from the anchor's \f$(H, D)\f$ by the addition theorem,
@@ -545,13 +545,16 @@ class PieceFunction {
     return {dpoly(u) + static_cast<long double>(h.D), 2 * f_.alpha - static_cast<long double>(h.H), -static_cast<long double>(h.D)};
   }
 
-  /// Makes a known harmonic part an anchor (the end of the previous piece, at u = 0).
+  /// Makes a known harmonic part an anchor: the end of the previous piece (at u = 0), or a value
+  /// formed from a known sine and cosine (from_trig) at a break end (u = L) or a known start. At
+  /// most two are added before the first exact() call, so both ends keep their slots.
   void add_anchor(const HarmonicAt& h) { anchors_[n_anchors_ < 3 ? n_anchors_++ : 2] = h; }
   /// The harmonic part at u from the sine and cosine of its phase.
   HarmonicAt from_trig(double u, double sn, double cs) const { return {u, f_.A * sn + f_.B * cs, f_.A * cs - f_.B * sn}; }
 
  private:
-  /// One sincos call at u; the result becomes an anchor (the two ends stay, a third slot is reused).
+  /// One sincos call at u; the result becomes an anchor (the first two anchors, the ends, stay; a
+  /// third slot is reused).
   HarmonicAt exact(double u) {
     double sn, cs;
     ::sincos(phi0_ + u, &sn, &cs);  // (glibc: one call for both)
@@ -567,9 +570,10 @@ class PieceFunction {
 /// Hermite interpolant of f, f', f'' at both ends (f0, d0, k0 at 0; f1, d1, k1 at L), found by a
 /// bracketed Newton iteration on the interpolant (no evaluation of f). The interpolant differs from
 /// f by at most \f$L^6 \max|f^{(6)}| / 46080 \le L^6 R / 46080\f$ (\f$f^{(6)}\f$ is the harmonic
-/// part's), so for the pieces of the search (L up to about \f$\pi\f$) the start lies within about
-/// \f$10^{-2}\f$ of the root, where the secant of the end values may be off by 1: a start only,
-/// saving one or two evaluations of f; the root itself is found by solve_increasing on f.
+/// part's): about \f$0.02R\f$ on a piece of length \f$\pi\f$, the common case (the pieces between
+/// the two inflections of the gap or of the progression velocity). Pieces reach \f$2\pi\f$ when
+/// \f$f''\f$ has no sign change, or two nearly coincident ones; the bound is then no better than
+/// the secant's. A start only: the root itself is found by solve_increasing on f.
 /// Returns NaN when the interpolant gives no start inside (0, L).
 double hermite_start(double L, double f0, double d0, double k0, double f1, double d1, double k1) {
   // p(t) = f0 + m0 t + K0 t^2 / 2 + c3 t^3 + c4 t^4 + c5 t^5 on t = u / L in [0, 1].
@@ -603,11 +607,12 @@ struct PieceEnd {
   double D = 0;
 };
 
-/// The first up-crossing of f on one piece [0, L] (f' monotone there), or nothing. `f_start` is f at
-/// u = 0 when known better than by a direct evaluation (after the rest region), else that
-/// evaluation; `pieces` is the work count to report with a crossing.
+/// The first up-crossing of f on one piece [0, L] (f' monotone there), or nothing. `left_value`,
+/// when not null, is f at u = 0 as the rest region left it (known better than by a direct
+/// evaluation, or -1 for "negative"); else f(0) is evaluated. `pieces` is the work count to report
+/// with a crossing.
 std::optional<UpCrossing> search_piece(const QuadraticPlusHarmonic& f, PieceFunction& pf, const Instant& cursor, long double s0,
-                                       double L, std::optional<long double> left_value, long double R, long pieces,
+                                       double L, const long double* left_value, long double R, long pieces,
                                        const PieceEnd& start, PieceEnd& end) {
   auto val_der = [&pf](double u) { return pf.value_slope(u); };
   auto crossing_at = [&](double u) {
@@ -632,7 +637,8 @@ std::optional<UpCrossing> search_piece(const QuadraticPlusHarmonic& f, PieceFunc
   } else {
     std::tie(f_start_computed, d0) = val_der(0);
   }
-  const long double f_start = left_value ? *left_value : f_start_computed;
+  const bool after_rest = left_value != nullptr;  // f(0) is the value left by the rest region
+  const long double f_start = after_rest ? *left_value : f_start_computed;
   // On a piece f' is monotone, so f is increasing, decreasing, convex with one minimum or
   // concave with one maximum. Two shortcuts avoid the split point m below:
   // (1) f(0) < 0 <= f(L): in every one of these shapes there is exactly one up-crossing in
@@ -641,11 +647,11 @@ std::optional<UpCrossing> search_piece(const QuadraticPlusHarmonic& f, PieceFunc
   auto val_der_curv = [&pf](double u) { return pf.value_slope_curvature(u); };
   if (f_start < 0 && f_end >= 0) {
     // (After a start at rest the value at 0 is a bound, not data for an interpolant: secant start.)
-    const double H0 = start.valid ? start.H : pf.harmonic(0).H;
-    const double guess = left_value ? std::numeric_limits<double>::quiet_NaN()
-                                    : hermite_start(L, static_cast<double>(f_start), static_cast<double>(d0),
-                                                    static_cast<double>(2 * f.alpha) - H0, static_cast<double>(f_end),
-                                                    static_cast<double>(d1), static_cast<double>(2 * f.alpha) - h1.H);
+    const double guess =
+        after_rest ? std::numeric_limits<double>::quiet_NaN()
+                   : hermite_start(L, static_cast<double>(f_start), static_cast<double>(d0),
+                                   static_cast<double>(2 * f.alpha) - (start.valid ? start.H : pf.harmonic(0).H),
+                                   static_cast<double>(f_end), static_cast<double>(d1), static_cast<double>(2 * f.alpha) - h1.H);
     // (|f'''| = |A cos t - B sin t| <= R.)
     return crossing_at(solve_increasing(val_der_curv, 0, L, phi0, f_start, f_end, guess, static_cast<double>(R)));
   }
@@ -705,7 +711,8 @@ std::optional<UpCrossing> first_upcrossing(const QuadraticPlusHarmonic& f, const
   long double s_cursor = 0;
   // f at the cursor when it is known better than a direct evaluation there would give it (after
   // the rest region below); -1 stands for "known negative, value not needed" (Case A).
-  std::optional<long double> left_value;
+  bool has_left_value = false;
+  long double left_value = 0;
   long pieces = 0;
   Recentring recentring;
   PieceEnd carried;  // f at the cursor from the end of the previous piece, when the scan goes on from there
@@ -720,6 +727,7 @@ std::optional<UpCrossing> first_upcrossing(const QuadraticPlusHarmonic& f, const
     cursor = advance(f.origin, kRestOffset);
     s_cursor = elapsed(f.origin, cursor);
     left_value = rs.left_value;
+    has_left_value = true;
     falling_first_piece = rs.falling;
     cursor_trig = false;
   }
@@ -727,7 +735,7 @@ std::optional<UpCrossing> first_upcrossing(const QuadraticPlusHarmonic& f, const
     if (bounds.in_window(s_cursor)) {
       cursor = advance(f.origin, std::min(bounds.we, limit));  // (a window may reach far beyond a horizon)
       s_cursor = elapsed(f.origin, cursor);
-      left_value.reset();
+      has_left_value = false;
       carried = PieceEnd{};
       falling_first_piece = false;  // (the piece after the window is not the one next to the origin)
       cursor_trig = false;
@@ -753,18 +761,20 @@ std::optional<UpCrossing> first_upcrossing(const QuadraticPlusHarmonic& f, const
     // The harmonic part at a break end, and at an uncarried start whose phase has a known sine and
     // cosine, without a sincos call (at the end from the break's own phase, where cursor.phase + L
     // would carry the rounding of L).
+    // (At most these two anchors come before search_piece's: the carried start is added there
+    // only when no trig start was added here.)
     if (end_trig) pf.add_anchor(pf.from_trig(L, breaks.sn[end_break], breaks.cs[end_break]));
     if (cursor_trig && !carried.valid) pf.add_anchor(pf.from_trig(0, cursor_sn, cursor_cs));
     recentring.coefficients(f, cursor, s_cursor, pf.base, pf.c1, pf.c0);
     PieceEnd piece_end;
     if (falling_first_piece) falling_first_piece = false;
     else if (L > 0)
-      if (auto root = search_piece(f, pf, cursor, s_cursor, L, left_value, R, pieces, carried, piece_end)) return root;
+      if (auto root = search_piece(f, pf, cursor, s_cursor, L, has_left_value ? &left_value : nullptr, R, pieces, carried, piece_end)) return root;
     carried = piece_end;
     if (pf.base == 0) recentring.carry(f, cursor, end, pf.c0, pf.c1);  // re-centred: carry P0, P1 over
     cursor = end;
     s_cursor = s_end;
-    left_value.reset();
+    has_left_value = false;
     cursor_trig = end_trig;
     if (end_trig) {
       cursor_sn = breaks.sn[end_break];

@@ -37,11 +37,11 @@ double solve_increasing(GD&& gd, double lo, double hi, double scale, long double
       // Halley's correction, in double (its relative error 1e-16 moves the next iterate by far
       // less than the tolerance): the Newton step divided by 1 - g g''/(2 g'^2) when that ratio is
       // below 1/2. Accepted only if at most half the step before the last one.
-      double step = 0;
+      double step = 0, ratio = 0;
       if (d > 0) {
         const double gd_ = static_cast<double>(g), dd_ = static_cast<double>(d);
         step = gd_ / dd_;
-        const double ratio = step * static_cast<double>(std::get<2>(r)) / (2 * dd_);
+        ratio = step * static_cast<double>(std::get<2>(r)) / (2 * dd_);
         if (std::fabs(ratio) < 0.5) step /= 1 - ratio;
       }
       newton_ok = d > 0 && std::fabs(2 * step) <= std::fabs(dx_old);
@@ -52,14 +52,13 @@ double solve_increasing(GD&& gd, double lo, double hi, double scale, long double
       // Converged after this step, without evaluating g there: Halley's error after a step of
       // size e is about C e^3 with C = (g''/(2g'))^2 - g'''/(6g'); with |g'''| <= jerk_bound near
       // the root and a safety factor 2 on C, when that bound on the error is below tol/16 the
-      // iterate x - step is returned at once. It is the point the iteration would evaluate next
-      // and then return (its correction being below tol/2), so the evaluation is saved. Only for
-      // small steps (|g g''/(2 g'^2)| < 0.01) inside the bracket.
-      if (newton_ok && newton > lo && newton < hi && jerk_bound >= 0) {
+      // iterate x - step is returned at once. The iteration would otherwise evaluate g there and
+      // find a correction below tol/2 (so the evaluation is saved). Only for small steps
+      // (|g g''/(2 g'^2)| < 0.01) that stay inside the bracket.
+      if (newton_ok && newton > lo && newton < hi && jerk_bound >= 0 && std::fabs(ratio) < 0.01) {
         const double dd_ = static_cast<double>(d), k = static_cast<double>(std::get<2>(r)) / (2 * dd_);
-        const double ratio = static_cast<double>(g) / dd_ * k;
         const double C = 2 * (k * k + jerk_bound / (6 * dd_));
-        if (std::fabs(ratio) < 0.01 && C * std::fabs(step) * step * step <= tol / 16) return newton;
+        if (C * std::fabs(step) * step * step <= tol / 16) return newton;
       }
     } else {
       newton_ok = d > 0 && std::fabs(2 * g) <= std::fabs(dx_old * d);
