@@ -16,6 +16,8 @@
 #include "dfchaos/simulator.hpp"
 #include "dfchaos/superstable.hpp"
 
+#include "test_support.hpp"
+
 namespace {
 
 using namespace dfchaos;
@@ -178,7 +180,7 @@ TEST(StopCycle, AReturnAfterTheDerivativeHasExplodedIsNotResolved) {
   // first whose orbit of t2 returns after more than 100 and at most 40000 steps.
   std::optional<Parameters> chosen;
   StopCycle c;
-  for (double b : {0.0089, 0.0096, 0.0101, 0.0102, 0.0091, 0.0094, 0.0095, 0.0107, 0.0114, 0.0085}) {
+  for (double b : test_support::kRoundingCycleCandidates) {
     const Parameters q(1.0, b, 0.85);
     c = t2_cycle(q, 40000);
     if (c.period > 100) {

@@ -14,6 +14,8 @@
 #include "dfchaos/map_derivative.hpp"
 #include "dfchaos/return_map.hpp"
 
+#include "test_support.hpp"
+
 namespace dfchaos {
 namespace {
 
@@ -53,7 +55,7 @@ TEST(InvariantDensity, RecordsTheReturnOfTheComputedOrbitToT2) {
   };
   std::optional<Parameters> chosen;
   long long by_hand = 0;
-  for (double b : {0.0089, 0.0096, 0.0101, 0.0102, 0.0091, 0.0094, 0.0095, 0.0107, 0.0114, 0.0085}) {
+  for (double b : test_support::kRoundingCycleCandidates) {
     const Parameters q(1.0, b, 0.85);
     by_hand = return_by_hand(q);
     if (by_hand > 0 && orbit_histogram(q, *q.t2() + 0.3 * (*q.t3() - *q.t2()), 100, 400000, 50).first_t2 >= 0) {
