@@ -1,5 +1,6 @@
 /// @file test_support.hpp
-/// @brief Shared helpers of the test suites: seeded random draws over the parameter plane.
+/// @brief Shared helpers of the test suites: seeded random draws over the parameter plane, and the
+/// b/a candidates of the tests that need a cycle of the rounding.
 #pragma once
 
 #include <array>
