@@ -355,21 +355,26 @@ SearchBounds search_bounds(const QuadraticPlusHarmonic& f, long double R, long d
 /// piece end is then formed from them, without a sincos call). (A fixed array: this is built once
 /// per search, and a heap allocation here cost more than the arithmetic.)
 struct PieceBreaks {
-  std::array<double, 2> at{};  ///< the breaks, ascending
-  std::array<double, 2> sn{}, cs{};  ///< sine and cosine at them (where trig)
-  std::array<bool, 2> trig{};  ///< whether sn, cs hold
-  int n = 0;                   ///< how many (1 or 2)
+  /// One break: its phase, and the sine and cosine there when known.
+  struct Break {
+    double at = 0;      ///< the phase
+    double sn = 0;      ///< sine at it (when trig)
+    double cs = 0;      ///< cosine at it (when trig)
+    bool trig = false;  ///< whether sn, cs hold
+  };
+  std::array<Break, 2> br{};  ///< the breaks, ascending by phase
+  int n = 0;                  ///< how many (1 or 2)
 
   /// The end of the piece that starts at `cursor`: the first break after its phase in the same
   /// turn, else the first break of the next turn; `index` receives which break it is.
   Instant next_after(const Instant& cursor, int& index) const {
     for (int i = 0; i < n; ++i)
-      if (at[i] > cursor.phase) {
+      if (br[i].at > cursor.phase) {
         index = i;
-        return Instant{cursor.turn, at[i]};
+        return Instant{cursor.turn, br[i].at};
       }
     index = 0;
-    return Instant{cursor.turn + 1, at[0]};
+    return Instant{cursor.turn + 1, br[0].at};
   }
 };
 
@@ -381,34 +386,18 @@ PieceBreaks piece_breaks(const QuadraticPlusHarmonic& f) {
   const Inflections& inf = inflections_cached(f);
   if (inf.n == 0) {
     b.n = 1;
-    b.at[0] = 0.0;
-    b.sn[0] = 0.0;
-    b.cs[0] = 1.0;
-    b.trig[0] = true;
+    b.br[0] = {0.0, 0.0, 1.0, true};
     return b;
   }
   for (int i = 0; i < inf.n; ++i) {
-    b.at[i] = inf.at[i];
-    b.sn[i] = inf.sn[i];
-    b.cs[i] = inf.cs[i];
-    b.trig[i] = true;
+    b.br[i] = {inf.at[i], inf.sn[i], inf.cs[i], true};
     const double d = std::fabs(inf.at[i] - f.origin.phase);
-    if (std::min(d, two_pi - d) < 1e-12) {
-      b.at[i] = f.origin.phase;
-      b.sn[i] = f.origin_sin;
-      b.cs[i] = f.origin_cos;
-      b.trig[i] = f.origin_trig;
-    }
+    if (std::min(d, two_pi - d) < 1e-12) b.br[i] = {f.origin.phase, f.origin_sin, f.origin_cos, f.origin_trig};
   }
   // Ascending (the snap may have swapped two inflections that were within 1e-12 of each other),
   // distinct.
-  if (b.at[1] < b.at[0]) {
-    std::swap(b.at[0], b.at[1]);
-    std::swap(b.sn[0], b.sn[1]);
-    std::swap(b.cs[0], b.cs[1]);
-    std::swap(b.trig[0], b.trig[1]);
-  }
-  b.n = b.at[1] == b.at[0] ? 1 : 2;
+  if (b.br[1].at < b.br[0].at) std::swap(b.br[0], b.br[1]);
+  b.n = b.br[1].at == b.br[0].at ? 1 : 2;
   return b;
 }
 
@@ -750,7 +739,7 @@ std::optional<UpCrossing> first_upcrossing(const QuadraticPlusHarmonic& f, const
     long double s_end = elapsed(f.origin, end);
     long double cut = limit;
     if (bounds.we > 0 && bounds.ws > s_cursor) cut = std::min(cut, bounds.ws);
-    bool end_trig = breaks.trig[end_break];
+    bool end_trig = breaks.br[end_break].trig;
     if (s_end > cut) {
       end = advance(f.origin, cut);
       s_end = cut;
@@ -763,7 +752,7 @@ std::optional<UpCrossing> first_upcrossing(const QuadraticPlusHarmonic& f, const
     // would carry the rounding of L).
     // (At most these two anchors come before search_piece's: the carried start is added there
     // only when no trig start was added here.)
-    if (end_trig) pf.add_anchor(pf.from_trig(L, breaks.sn[end_break], breaks.cs[end_break]));
+    if (end_trig) pf.add_anchor(pf.from_trig(L, breaks.br[end_break].sn, breaks.br[end_break].cs));
     if (cursor_trig && !carried.valid) pf.add_anchor(pf.from_trig(0, cursor_sn, cursor_cs));
     recentring.coefficients(f, cursor, s_cursor, pf.base, pf.c1, pf.c0);
     PieceEnd piece_end;
@@ -777,8 +766,8 @@ std::optional<UpCrossing> first_upcrossing(const QuadraticPlusHarmonic& f, const
     has_left_value = false;
     cursor_trig = end_trig;
     if (end_trig) {
-      cursor_sn = breaks.sn[end_break];
-      cursor_cs = breaks.cs[end_break];
+      cursor_sn = breaks.br[end_break].sn;
+      cursor_cs = breaks.br[end_break].cs;
     }
   }
   if (bounds.limit_is_bound && limit < limits.horizon)
