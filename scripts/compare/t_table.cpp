@@ -1,0 +1,45 @@
+/// @file t_table.cpp
+/// @brief The table that scripts/compare-builds.sh compares between two builds of the library: T
+/// at a fixed set of phases, one line each, `b/a q/a theta T scenario` (a = 1; 17 digits).
+///
+/// Built outside the project against each build's libdfchaos.a, so it uses only the public API
+/// that older revisions have too (Parameters, return_map_step, scenario_name). The phases: for
+/// b/a in {0.3 ... 1e-12} and q/a in {0.85, 0.75, 0.6}, 1000 uniform random phases in [t2, t3)
+/// (mt19937_64, seed 7), t2 itself, and the 8 doubles just below t3. Where the map gives up or
+/// throws, T is printed as nan and the scenario as err.
+#include <cmath>
+#include <cstdio>
+#include <exception>
+#include <random>
+#include <vector>
+
+#include "dfchaos/parameters.hpp"
+#include "dfchaos/return_map.hpp"
+
+int main() {
+  using namespace dfchaos;
+  const double ratios[] = {0.3, 0.1, 3e-2, 1e-2, 3e-3, 1e-3, 1e-4, 1e-5, 1e-6, 1e-8, 1e-10, 1e-12};
+  const double qs[] = {0.85, 0.75, 0.6};
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> uniform(0, 1);
+  for (const double ba : ratios)
+    for (const double q : qs) {
+      const Parameters p(1.0, ba, q);
+      if (!p.t2() || !p.t3()) continue;
+      const double t2 = *p.t2(), t3 = *p.t3();
+      std::vector<double> theta;
+      for (int i = 0; i < 1000; ++i) theta.push_back(t2 + (t3 - t2) * uniform(rng));
+      theta.push_back(t2);
+      double x = t3;
+      for (int i = 0; i < 8; ++i) theta.push_back(x = std::nextafter(x, 0.0));
+      for (const double th : theta) {
+        if (th < t2 || th >= t3) continue;
+        try {
+          const MapStep s = return_map_step(p, th);
+          std::printf("%.17g %.17g %.17g %.17g %s\n", ba, q, th, s.T, scenario_name(s.scenario));
+        } catch (const std::exception&) {
+          std::printf("%.17g %.17g %.17g nan err\n", ba, q, th);
+        }
+      }
+    }
+}
