@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Compare T between two builds of the library, judged against the 40-digit reference.
 #
-#   scripts/compare-builds.sh BASE [NEW]
+#   scripts/compare-builds.sh [--time] BASE [NEW]
 #
 # BASE and NEW are git revisions; NEW defaults to the working tree (uncommitted changes
 # included). Each is built (the library target only, RelWithDebInfo, in
@@ -10,10 +10,17 @@
 # by scripts/compare/judge.py: per b/a, how many values changed, by how many ulp, and which
 # build is closer to tests/precision_reference.py where they differ. For any change to the
 # root search or the return map that is not bit-identical (docs/performance.md).
+# With --time, also the time of one evaluation of T in each build at the b/a of `make bench`: the
+# two drivers run alternately 3 times (`t_table --time`, itself the fastest of 5 rounds), the
+# fastest kept; on an otherwise idle machine.
 # Takes ~3 min per build on 2 cores, and seconds to judge a few thousand changed phases.
 set -euo pipefail
+usage="usage: compare-builds.sh [--time] BASE [NEW]   (git revisions; NEW defaults to the working tree)"
+timing=0
+if [[ "${1:-}" == "--time" ]]; then timing=1; shift; fi
+[[ $# -ge 1 && $# -le 2 ]] || { echo "$usage" >&2; exit 2; }
 root=$(git -C "$(dirname "$0")" rev-parse --show-toplevel)
-base=${1:?usage: compare-builds.sh BASE [NEW]   (git revisions; NEW defaults to the working tree)}
+base=$1
 new=${2:-}
 work=$root/build/compare
 mkdir -p "$work"
@@ -49,3 +56,16 @@ build() {
 build base "$base"
 build new "$new"
 /usr/bin/python3 "$root/scripts/compare/judge.py" "$work/base/T.txt" "$work/new/T.txt"
+if [[ $timing == 1 ]]; then
+  for i in 1 2 3; do
+    "$work/base/t_table" --time > "$work/base/time.$i"
+    "$work/new/t_table" --time > "$work/new/time.$i"
+  done
+  echo
+  echo -e "b/a\tbase [us]\tnew [us]\tnew/base"
+  fastest() { cat "$work/$1"/time.[123] | awk -v b="$2" '$1 == b && (m == "" || $2 < m) { m = $2 } END { print m }'; }
+  for ba in $(cut -d' ' -f1 "$work/base/time.1"); do
+    tb=$(fastest base "$ba") tn=$(fastest new "$ba")
+    awk -v ba="$ba" -v tb="$tb" -v tn="$tn" 'BEGIN { printf "%s\t%.3f\t%.3f\t%.3f\n", ba, tb, tn, tn / tb }'
+  done
+fi
