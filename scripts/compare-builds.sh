@@ -4,53 +4,69 @@
 #   scripts/compare-builds.sh [--time] BASE [NEW]
 #
 # BASE and NEW are git revisions; NEW defaults to the working tree (uncommitted changes
-# included). Each is built (the library target only, RelWithDebInfo, in
-# build/compare/<name>/), the driver scripts/compare/t_table.cpp is linked against it, and the
-# two tables of T (36 324 phases: 12 values of b/a from 0.3 to 1e-12, three q/a) are compared
-# by scripts/compare/judge.py: per b/a, how many values changed, by how many ulp, and which
-# build is closer to tests/precision_reference.py where they differ. For any change to the
-# root search or the return map that is not bit-identical (docs/performance.md).
-# With --time, also the time of one evaluation of T in each build at the b/a of `make bench`: the
-# two drivers run alternately 3 times (`t_table --time`, itself the fastest of 5 rounds), the
-# fastest kept; on an otherwise idle machine.
-# Takes ~3 min per build on 2 cores, and seconds to judge a few thousand changed phases.
+# included). Each is built (the library target only, RelWithDebInfo, default options, in
+# build/compare/<base|new>/), the driver scripts/compare/t_table.cpp of the working tree is linked
+# against each, and the two tables of T (36 324 phases: 12 values of b/a from 0.3 to 1e-12, three
+# q/a; the 1 009 with q = 2b fail in every build) are compared by scripts/compare/judge.py: per
+# b/a, how many values changed, by how many ulp, and which build is closer to
+# tests/precision_reference.py where they differ. For any change to the root search or the return
+# map that is not bit-identical (docs/performance.md). A revision is built from a fresh copy of its
+# sources each time, the working tree incrementally; the whole comparison takes ~30 s on 2 cores.
+# With --time, also the time of one evaluation of T in each build at the b/a and phases of
+# `make bench`: the two drivers run 3 times each, in alternating order (`t_table --time`, itself
+# the fastest of 5 rounds), the fastest kept; run it on an otherwise idle machine.
+# The phases are computed from each build's own t2 and t3: a change that moves them cannot be
+# compared this way (the judge names the first line where the phases differ).
 set -euo pipefail
 usage="usage: compare-builds.sh [--time] BASE [NEW]   (git revisions; NEW defaults to the working tree)"
 timing=0
-if [[ "${1:-}" == "--time" ]]; then timing=1; shift; fi
-[[ $# -ge 1 && $# -le 2 ]] || { echo "$usage" >&2; exit 2; }
+revs=()
+for arg in "$@"; do
+  case "$arg" in
+    --time) timing=1 ;;
+    -h|--help) echo "$usage"; exit 0 ;;
+    -*) echo "compare-builds: unknown option '$arg'; $usage" >&2; exit 2 ;;
+    *) revs+=("$arg") ;;
+  esac
+done
+[[ ${#revs[@]} -ge 1 && ${#revs[@]} -le 2 ]] || { echo "compare-builds: expected one or two revisions, BASE [NEW]; $usage" >&2; exit 2; }
 root=$(git -C "$(dirname "$0")" rev-parse --show-toplevel)
-base=$1
-new=${2:-}
+base=${revs[0]}
+new=${revs[1]:-}
+for r in "$base" $new; do
+  git -C "$root" rev-parse --verify --quiet "$r^{commit}" > /dev/null \
+    || { echo "compare-builds: revision '$r' is not a commit of $root" >&2; exit 2; }
+done
 work=$root/build/compare
-mkdir -p "$work"
 
 # build NAME REV: the library of revision REV (or of the working tree when REV is empty) and the
 # table of T from it, into $work/NAME/.
 build() {
   local name=$1 rev=$2 src
+  local dir=$work/$name
+  mkdir -p "$dir"
   if [[ -n "$rev" ]]; then
-    git -C "$root" rev-parse --verify --quiet "$rev^{commit}" > /dev/null \
-      || { echo "compare-builds: $name revision '$rev' is not a commit" >&2; exit 2; }
-    src=$work/$name/src
+    src=$dir/src
     rm -rf "$src" && mkdir -p "$src"
     git -C "$root" archive "$rev" | tar -x -C "$src"
   else
     src=$root
   fi
-  local bld=$work/$name/build
-  mkdir -p "$work/$name"
+  local bld=$dir/build
   # (The default options, which every revision configures with; only the library is built. A
   # cache left by an earlier run is dropped, its objects kept.)
   rm -f "$bld/CMakeCache.txt"
-  cmake -S "$src" -B "$bld" -DCMAKE_BUILD_TYPE=RelWithDebInfo > "$work/$name/configure.log" 2>&1 \
-    || { cat "$work/$name/configure.log"; exit 1; }
-  cmake --build "$bld" -j "$(nproc)" --target dfchaos > "$work/$name/build.log" 2>&1 || { tail -30 "$work/$name/build.log"; exit 1; }
-  local lib
-  lib=$(find "$bld" -name libdfchaos.a | head -1)
-  g++ -std=c++20 -O2 -I"$src/src" -I"$bld/src" "$root/scripts/compare/t_table.cpp" "$lib" -lgsl -lgslcblas -o "$work/$name/t_table"
-  "$work/$name/t_table" > "$work/$name/T.txt"
-  echo "compare-builds: $name (${rev:-working tree}): $(wc -l < "$work/$name/T.txt") phases -> $work/$name/T.txt" >&2
+  cmake -S "$src" -B "$bld" -DCMAKE_BUILD_TYPE=RelWithDebInfo > "$dir/configure.log" 2>&1 \
+    || { echo "compare-builds: configuring $name (${rev:-working tree}) failed; see $dir/configure.log" >&2; exit 1; }
+  cmake --build "$bld" -j "$(nproc)" --target dfchaos > "$dir/build.log" 2>&1 \
+    || { echo "compare-builds: building $name (${rev:-working tree}) failed; see $dir/build.log" >&2; exit 1; }
+  local lib=$bld/src/libdfchaos.a
+  [[ -f "$lib" ]] || { echo "compare-builds: $name: no library at $lib" >&2; exit 1; }
+  "${CXX:-g++}" -std=c++20 -O2 -I"$src/src" -I"$bld/src" "$root/scripts/compare/t_table.cpp" "$lib" -lgsl -lgslcblas \
+    -o "$dir/t_table" > "$dir/driver.log" 2>&1 \
+    || { echo "compare-builds: the driver does not build against $name (${rev:-working tree}); see $dir/driver.log" >&2; exit 1; }
+  "$dir/t_table" > "$dir/T.txt" || { echo "compare-builds: the driver failed on $name (${rev:-working tree})" >&2; exit 1; }
+  echo "compare-builds: $name (${rev:-working tree}): $(wc -l < "$dir/T.txt") phases -> $dir/T.txt" >&2
 }
 
 build base "$base"
@@ -58,8 +74,11 @@ build new "$new"
 /usr/bin/python3 "$root/scripts/compare/judge.py" "$work/base/T.txt" "$work/new/T.txt"
 if [[ $timing == 1 ]]; then
   for i in 1 2 3; do
-    "$work/base/t_table" --time > "$work/base/time.$i"
-    "$work/new/t_table" --time > "$work/new/time.$i"
+    if (( i % 2 )); then order=(base new); else order=(new base); fi
+    for name in "${order[@]}"; do
+      "$work/$name/t_table" --time > "$work/$name/time.$i" \
+        || { echo "compare-builds: timing $name failed" >&2; exit 1; }
+    done
   done
   echo
   echo -e "b/a\tbase [us]\tnew [us]\tnew/base"

@@ -4,11 +4,19 @@
   judge.py OLD NEW        (both: lines `b/a q/a theta T scenario`, the same phases in the same order)
 
 Every phase where the two values of T differ is evaluated by tests/precision_reference.py (mpmath,
-40 digits, written from the paper alone); per b/a the table gives how many phases changed, the
-largest change in ulp of T, in how many the new or the old value is closer to the reference, and
-the mean and largest error of each among the changed phases. A changed scenario, or a phase that
-one build maps and the other does not, is listed in full. Exit status 1 when the tables do not
-hold the same phases, 0 otherwise (the verdict is for the reader: this prints evidence).
+40 digits, written from the paper alone), with T read as the exact binary value of the printed
+double. Per b/a the table gives:
+  mapped      phases that both builds map (rows that fail in both are counted apart: failed)
+  changed     of those, how many values of T differ, and the largest change in ulp of T
+  new closer, old closer, equal
+              in how many changed phases each value is closer to the reference (equal: the same
+              distance, which two different doubles can have)
+  mean and largest error of each among the changed phases.
+Phases whose scenario changed, or that one build maps and the other does not, are listed in full.
+Exit status 0 with the table; 2 (one line on stderr) when a file cannot be read, its lines are
+not of this form, the two tables do not hold the same phases (the first differing line is named:
+a change that moves t2 or t3 moves every phase, which this comparison cannot follow), or the
+reference fails.
 """
 import collections
 import math
@@ -22,59 +30,116 @@ mp.dps = 40
 REFERENCE = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..', 'tests', 'precision_reference.py')
 
 
+class BadInput(Exception):
+    pass
+
+
+def value(text):
+    """T as a double, or None for a failure (nan, -nan)."""
+    x = float(text)
+    return None if math.isnan(x) else x
+
+
 def rows(path):
-    with open(path) as f:
-        return [line.split() for line in f if line.strip()]
+    try:
+        with open(path) as f:
+            out = []
+            for k, line in enumerate(f, 1):
+                if not line.strip():
+                    continue
+                r = line.split()
+                if len(r) != 5:
+                    raise BadInput(f'{path}:{k}: expected `b/a q/a theta T scenario`, got {line.strip()!r}')
+                try:
+                    float(r[0]), float(r[1]), float(r[2]), float(r[3])
+                except ValueError:
+                    raise BadInput(f'{path}:{k}: not numbers: {line.strip()!r}') from None
+                out.append((k, r))
+            return out
+    except OSError as e:
+        raise BadInput(f'{path}: cannot read ({e.strerror})') from None
 
 
 def ulp_distance(x, y):
     return abs(x - y) / math.ulp(max(abs(x), abs(y)))
 
 
+def reference_T(b, q, thetas):
+    r = subprocess.run(['/usr/bin/python3', REFERENCE, 'eval', '1', b, q] + thetas, capture_output=True, text=True)
+    lines = r.stdout.splitlines()[1:]
+    if r.returncode != 0 or len(lines) != len(thetas):
+        raise BadInput(f'the reference failed for b/a={b} q/a={q}: ' + (r.stderr.strip().splitlines() or ['no output'])[-1])
+    out = []
+    for line in lines:
+        f = line.split('\t')
+        try:
+            out.append(mpf(f[2]))
+        except (IndexError, ValueError):
+            out.append(None)  # the reference has no T here (e.g. no return to free flight)
+    return out
+
+
+def judge(old, new):
+    if len(old) != len(new):
+        raise BadInput(f'the tables hold {len(old)} and {len(new)} phases')
+    for (k, o), (_, n) in zip(old, new):
+        if o[:3] != n[:3]:
+            raise BadInput(f'the tables differ in their phases from line {k} on: {" ".join(o[:3])} against {" ".join(n[:3])}')
+    mapped, failed = collections.Counter(), collections.Counter()
+    changed = collections.defaultdict(list)
+    listed = []
+    for (_, o), (_, n) in zip(old, new):
+        vo, vn = value(o[3]), value(n[3])
+        if vo is None and vn is None:
+            failed[o[0]] += 1
+            continue
+        if vo is None or vn is None or o[4] != n[4]:
+            listed.append((o, n))
+        if vo is None or vn is None:
+            continue
+        mapped[o[0]] += 1
+        if vo != vn:
+            changed[(o[0], o[1])].append((o, n, vo, vn))
+    stats = collections.defaultdict(lambda: {'n': 0, 'ulp': 0.0, 'new': 0, 'old': 0, 'equal': 0, 'en': [], 'eo': [], 'noref': 0})
+    for (b, q), group in changed.items():
+        refs = reference_T(b, q, [o[2] for o, _, _, _ in group])
+        for (o, n, vo, vn), ref in zip(group, refs):
+            s = stats[b]
+            s['n'] += 1
+            s['ulp'] = max(s['ulp'], ulp_distance(vo, vn))
+            if ref is None:
+                s['noref'] += 1
+                continue
+            e_old, e_new = float(abs(mpf(vo) - ref)), float(abs(mpf(vn) - ref))
+            s['new' if e_new < e_old else 'old' if e_old < e_new else 'equal'] += 1
+            s['en'].append(e_new)
+            s['eo'].append(e_old)
+    print('b/a\tmapped\tfailed\tchanged\tmax change [ulp]\tnew closer\told closer\tequal\t'
+          'mean err new\tmean err old\tmax err new\tmax err old')
+    for b in sorted(set(mapped) | set(failed), key=lambda x: -float(x)):
+        s = stats.get(b)
+        head = f'{float(b):.0e}\t{mapped[b]}\t{failed[b]}'
+        if not s:
+            print(head + '\t0' + '\t-' * 8)
+            continue
+        m = len(s['en'])
+        errs = (f"{sum(s['en']) / m:.2g}\t{sum(s['eo']) / m:.2g}\t{max(s['en']):.2g}\t{max(s['eo']):.2g}" if m else '-\t-\t-\t-')
+        print(f"{head}\t{s['n']}\t{s['ulp']:.0f}\t{s['new']}\t{s['old']}\t{s['equal']}\t{errs}")
+        if s['noref']:
+            print(f"  ({s['noref']} changed phases at b/a={b} have no reference value: not judged)")
+    for o, n in listed:
+        print(f'changed scenario or failure: b/a={o[0]} q/a={o[1]} theta={o[2]}: old {o[3]} {o[4]}, new {n[3]} {n[4]}')
+
+
 def main(argv):
     if len(argv) != 3:
         print('usage: judge.py OLD NEW', file=sys.stderr)
         return 2
-    old, new = rows(argv[1]), rows(argv[2])
-    if len(old) != len(new) or any(o[:3] != n[:3] for o, n in zip(old, new)):
-        print('judge: the two tables do not hold the same phases', file=sys.stderr)
-        return 1
-    total = collections.Counter(o[0] for o in old)
-    changed = collections.defaultdict(list)
-    listed = []
-    for o, n in zip(old, new):
-        if o[3] == n[3] and o[4] == n[4]:
-            continue
-        if o[4] != n[4] or o[3] == 'nan' or n[3] == 'nan':
-            listed.append((o, n))
-        if o[3] != 'nan' and n[3] != 'nan' and o[3] != n[3]:
-            changed[(o[0], o[1])].append((o, n))
-    stats = collections.defaultdict(lambda: {'n': 0, 'ulp': 0.0, 'new': 0, 'old': 0, 'en': [], 'eo': []})
-    for (b, q), pairs in changed.items():
-        out = subprocess.run(['/usr/bin/python3', REFERENCE, 'eval', '1', b, q] + [o[2] for o, _ in pairs],
-                             capture_output=True, text=True, check=True).stdout.splitlines()[1:]
-        for (o, n), line in zip(pairs, out):
-            ref = mpf(line.split('\t')[2])
-            e_old, e_new = float(abs(mpf(o[3]) - ref)), float(abs(mpf(n[3]) - ref))
-            s = stats[b]
-            s['n'] += 1
-            s['ulp'] = max(s['ulp'], ulp_distance(float(o[3]), float(n[3])))
-            if e_new < e_old:
-                s['new'] += 1
-            elif e_old < e_new:
-                s['old'] += 1
-            s['en'].append(e_new)
-            s['eo'].append(e_old)
-    print('b/a\tphases\tchanged\tmax change [ulp]\tnew closer\told closer\tmean err new\tmean err old\tmax err new\tmax err old')
-    for b in sorted(total, key=lambda x: -float(x)):
-        s = stats.get(b)
-        if not s:
-            print(f'{float(b):.0e}\t{total[b]}\t0\t-\t-\t-\t-\t-\t-\t-')
-            continue
-        print(f"{float(b):.0e}\t{total[b]}\t{s['n']}\t{s['ulp']:.0f}\t{s['new']}\t{s['old']}\t"
-              f"{sum(s['en']) / s['n']:.2g}\t{sum(s['eo']) / s['n']:.2g}\t{max(s['en']):.2g}\t{max(s['eo']):.2g}")
-    for o, n in listed:
-        print(f'changed scenario or failure: b/a={o[0]} q/a={o[1]} theta={o[2]}: old {o[3]} {o[4]}, new {n[3]} {n[4]}')
+    try:
+        judge(rows(argv[1]), rows(argv[2]))
+    except BadInput as e:
+        print(f'judge: {e}', file=sys.stderr)
+        return 2
     return 0
 
 

@@ -3,10 +3,12 @@
 /// at a fixed set of phases, one line each, `b/a q/a theta T scenario` (a = 1; 17 digits).
 ///
 /// Built outside the project against each build's libdfchaos.a, so it uses only the public API
-/// that older revisions have too (Parameters, return_map_step, scenario_name). The phases: for
+/// that older revisions have too (Parameters, return_map_step, scenario_name, T). The phases: for
 /// b/a in {0.3 ... 1e-12} and q/a in {0.85, 0.75, 0.6}, 1000 uniform random phases in [t2, t3)
-/// (mt19937_64, seed 7), t2 itself, and the 8 doubles just below t3. Where the map gives up or
-/// throws, T is printed as nan and the scenario as err.
+/// (mt19937_64, seed 7), t2 itself, and the 8 doubles just below t3: 36 324 in all. Where the map
+/// gives up or throws, T is printed as nan and the scenario as err: so at the 1 009 phases of
+/// b/a = 0.3, q/a = 0.6, where q = 2b is outside the map's domain (q > 2b). They are kept so that
+/// the random phases, drawn in sequence, stay those of earlier comparisons.
 ///
 /// With `--time`: instead, the time of one evaluation of T at each b/a of `make bench`
 /// (1e-1 ... 1e-6, q/a = 0.85, the bench's 16 phases), one line `b/a microseconds` each: the
