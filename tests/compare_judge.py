@@ -12,6 +12,7 @@
      both fail (printed -nan) at one phase.
    The judge must count and list each as stated, give the change in ulp and the errors of each
    side, and refuse tables with different phases (exit status 2, naming the line).
+4. --errors on two phases, one moved by 1e-12: that error, at that phase, counted above 2.1e-14.
 """
 import math
 import os
@@ -97,6 +98,18 @@ def main():
         check(len(listed) == 2 and all(any(w in l for l in listed) for w in want),
               'the changed scenario (1e-2) and the one-sided failure (1e-4), and only they, should be listed', text)
         check(all(r[3] == '0' for ba, r in rows.items() if ba not in ('1e-03', '1e-01')), 'other rows report changes', text)
+
+        # --errors on a small table: one value moved by 1e-12 at b/a = 1e-3 (T flat there or not,
+        # 1e-12 is far above the library's error), one left as computed.
+        small = [list(lines[i]), list(lines[i + 1])]
+        small[1][3] = repr(float(small[1][3]) + 1e-12)
+        ps = os.path.join(d, 'small.txt')
+        write(ps, small)
+        r = subprocess.run(['/usr/bin/python3', JUDGE, '--errors', ps], capture_output=True, text=True)
+        f = r.stdout.splitlines()[1].split('\t') if r.returncode == 0 and len(r.stdout.splitlines()) == 2 else []
+        check(len(f) == 10 and f[1] == '2' and 0.9e-12 < float(f[3]) < 1.1e-12 and f[5] == small[1][2] and f[8] == '1',
+              '--errors: expected 2 mapped, the largest error about 1e-12 at the moved phase, 1 error above 2.1e-14',
+              r.stdout + r.stderr)
 
         other = [list(l) for l in lines]
         other[7][2] = repr(float(other[7][2]) * (1 + 1e-12))

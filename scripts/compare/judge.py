@@ -2,6 +2,7 @@
 """Judge two tables of T (from t_table.cpp) against the 40-digit reference.
 
   judge.py OLD NEW        (both: lines `b/a q/a theta T scenario`, the same phases in the same order)
+  judge.py --errors TABLE (the errors of one table at every mapped phase; ~2 min for 35 315 phases)
 
 Every phase where the two values of T differ is evaluated by tests/precision_reference.py (mpmath,
 40 digits, written from the paper alone), with T read as the exact binary value of the printed
@@ -13,6 +14,13 @@ double. Per b/a the table gives:
               distance, which two different doubles can have)
   mean and largest error of each among the changed phases.
 Phases whose scenario changed, or that one build maps and the other does not, are listed in full.
+With --errors, per b/a: the mapped phases, the largest error of T and where (q/a, theta), the
+conditioning |dT/dtheta| there (from the reference at theta and theta (1 + 1e-10); a discontinuity
+in between would show as a huge value), and the backward error: the error of T divided by
+|dT/dtheta|, in ulp of theta (how far theta would have to move for the reference to give the
+computed T); and how many errors exceed 2.1e-14 (the largest the CTest precision_reference
+measures at its random phases), with the largest backward error among them. Phases where the
+reference has no T are counted apart.
 Exit status 0 with the table; 2 (one line on stderr) when a file cannot be read, its lines are
 not of this form, the two tables do not hold the same phases (the first differing line is named:
 a change that moves t2 or t3 moves every phase, which this comparison cannot follow), or the
@@ -27,6 +35,9 @@ import sys
 from mpmath import mp, mpf
 
 mp.dps = 40
+# --errors: errors above this (the largest the CTest precision_reference measures at its random
+# phases, docs/accuracy.md) are each divided by the conditioning |dT/dtheta| there.
+LARGE = 2.1e-14
 REFERENCE = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..', 'tests', 'precision_reference.py')
 
 
@@ -131,9 +142,56 @@ def judge(old, new):
         print(f'changed scenario or failure: b/a={o[0]} q/a={o[1]} theta={o[2]}: old {o[3]} {o[4]}, new {n[3]} {n[4]}')
 
 
+def errors(table):
+    groups = collections.defaultdict(list)
+    for _, r in table:
+        if value(r[3]) is not None:
+            groups[(r[0], r[1])].append(r)
+    worst = {}  # b/a -> (error, q/a, theta)
+    large = collections.defaultdict(list)  # b/a -> [(error, q/a, theta)] with error > LARGE
+    mapped, noref = collections.Counter(), collections.Counter()
+    for (b, q), group in groups.items():
+        for r, ref in zip(group, reference_T(b, q, [r[2] for r in group])):
+            mapped[b] += 1
+            if ref is None:
+                noref[b] += 1
+                continue
+            e = float(abs(mpf(float(r[3])) - ref))
+            if b not in worst or e > worst[b][0]:
+                worst[b] = (e, q, r[2])
+            if e > LARGE:
+                large[b].append((e, q, r[2]))
+
+    def conditioning(b, q, th, e):
+        """|dT/dtheta| at theta, and e divided by it in ulp of theta."""
+        h = float(th) * 1e-10
+        t0, t1 = reference_T(b, q, [th, repr(float(th) + h)])
+        slope = float(abs(t1 - t0)) / h if t0 is not None and t1 is not None else float('nan')
+        return slope, (e / slope / math.ulp(float(th)) if slope > 0 else float('nan'))
+
+    print('b/a\tmapped\tno reference\tmax error\tq/a\ttheta\t|dT/dtheta|\tbackward error [ulp of theta]\t'
+          f'errors above {LARGE:g}\ttheir largest backward error [ulp of theta]')
+    for b in sorted(mapped, key=lambda x: -float(x)):
+        if b not in worst:
+            print(f'{float(b):.0e}\t{mapped[b]}\t{noref[b]}' + '\t-' * 7)
+            continue
+        e, q, th = worst[b]
+        slope, back = conditioning(b, q, th, e)
+        big = max((conditioning(b, *x[1:], x[0])[1] for x in large[b]), default=None)
+        print(f'{float(b):.0e}\t{mapped[b]}\t{noref[b]}\t{e:.2g}\t{q}\t{th}\t{slope:.2g}\t{back:.2g}\t'
+              f'{len(large[b])}\t' + ('-' if big is None else f'{big:.2g}'))
+
+
 def main(argv):
-    if len(argv) != 3:
-        print('usage: judge.py OLD NEW', file=sys.stderr)
+    if len(argv) == 3 and argv[1] == '--errors':
+        try:
+            errors(rows(argv[2]))
+        except BadInput as e:
+            print(f'judge: {e}', file=sys.stderr)
+            return 2
+        return 0
+    if len(argv) != 3 or argv[1].startswith('-'):
+        print('usage: judge.py OLD NEW | judge.py --errors TABLE', file=sys.stderr)
         return 2
     try:
         judge(rows(argv[1]), rows(argv[2]))
