@@ -90,6 +90,11 @@ def reference_T(b, q, thetas):
     return out
 
 
+def error(x, ref):
+    """|x - ref| for the double x, as a float."""
+    return float(abs(mpf(x) - ref))
+
+
 def judge(old, new):
     if len(old) != len(new):
         raise BadInput(f'the tables hold {len(old)} and {len(new)} phases')
@@ -121,7 +126,7 @@ def judge(old, new):
             if ref is None:
                 s['noref'] += 1
                 continue
-            e_old, e_new = float(abs(mpf(vo) - ref)), float(abs(mpf(vn) - ref))
+            e_old, e_new = error(vo, ref), error(vn, ref)
             s['new' if e_new < e_old else 'old' if e_old < e_new else 'equal'] += 1
             s['en'].append(e_new)
             s['eo'].append(e_old)
@@ -156,7 +161,7 @@ def errors(table):
             if ref is None:
                 noref[b] += 1
                 continue
-            e = float(abs(mpf(float(r[3])) - ref))
+            e = error(float(r[3]), ref)
             if b not in worst or e > worst[b][0]:
                 worst[b] = (e, q, r[2])
             if e > LARGE:
@@ -183,18 +188,14 @@ def errors(table):
 
 
 def main(argv):
-    if len(argv) == 3 and argv[1] == '--errors':
-        try:
-            errors(rows(argv[2]))
-        except BadInput as e:
-            print(f'judge: {e}', file=sys.stderr)
-            return 2
-        return 0
-    if len(argv) != 3 or argv[1].startswith('-'):
+    if len(argv) != 3 or (argv[1].startswith('-') and argv[1] != '--errors'):
         print('usage: judge.py OLD NEW | judge.py --errors TABLE', file=sys.stderr)
         return 2
     try:
-        judge(rows(argv[1]), rows(argv[2]))
+        if argv[1] == '--errors':
+            errors(rows(argv[2]))
+        else:
+            judge(rows(argv[1]), rows(argv[2]))
     except BadInput as e:
         print(f'judge: {e}', file=sys.stderr)
         return 2
