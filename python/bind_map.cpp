@@ -6,6 +6,7 @@
 
 #include "convert.hpp"
 #include "dfchaos/errors.hpp"
+#include "dfchaos/limits.hpp"
 #include "dfchaos/next_hit.hpp"
 #include "dfchaos/return_map.hpp"
 
@@ -75,8 +76,8 @@ py::dict orbit(const Parameters& p, double theta0, long long steps) {
   const double t2 = p.t2_required(), t3 = p.t3_required();
   if (!(theta0 >= t2 && theta0 < t3))  // the CLI's check, before any work
     throw InvalidParameter("theta0", "t2 <= theta0 < t3 = [" + format_double(t2) + ", " + format_double(t3) + ")", theta0);
-  if (steps < 1 || steps > kMaxElements)
-    throw InvalidParameter("steps", "1 <= steps <= " + std::to_string(kMaxElements), static_cast<double>(steps));
+  if (steps < 1 || steps > kMaxOrbitSteps)
+    throw InvalidParameter("steps", "1 <= steps <= " + std::to_string(kMaxOrbitSteps), static_cast<double>(steps));
   const std::vector<py::ssize_t> shape{static_cast<py::ssize_t>(steps)};
   RealArray theta(shape), elapsed(shape), penetration(shape), time(shape), y(shape);
   StrColumn scenario(shape, kScenarioWidth);

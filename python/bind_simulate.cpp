@@ -8,6 +8,7 @@
 
 #include "convert.hpp"
 #include "dfchaos/errors.hpp"
+#include "dfchaos/limits.hpp"
 #include "dfchaos/simulator.hpp"
 
 namespace dfchaos::python {
@@ -25,8 +26,8 @@ py::dict simulate_py(const Parameters& p, double x0, double y0, double v0, doubl
     so.sample_dt = finite("sample", *sample);
     if (!(so.sample_dt > 0)) throw InvalidParameter("sample", "sample > 0", so.sample_dt);
   }
-  if (max_events < 1 || max_events > 100'000'000)
-    throw InvalidParameter("max-events", "1 <= max-events <= 100000000", static_cast<double>(max_events));
+  if (max_events < 1 || max_events > kMaxSimulationEvents)
+    throw InvalidParameter("max-events", "1 <= max-events <= " + std::to_string(kMaxSimulationEvents), static_cast<double>(max_events));
   so.max_events = static_cast<long>(max_events);
 
   Simulation r;
@@ -102,7 +103,7 @@ void bind_simulate(py::module_& m) {
   py::options options;
   options.disable_function_signatures();
   m.def("simulate", &simulate_py, py::arg("p"), py::arg("x0"), py::arg("y0"), py::arg("v0"), py::arg("t0"),
-        py::arg("t_end"), py::kw_only(), py::arg("sample") = py::none(), py::arg("max_events") = 1'000'000, R"doc(simulate(p, x0, y0, v0, t0, t_end, *, sample=None, max_events=1000000) -> dict
+        py::arg("t_end"), py::kw_only(), py::arg("sample") = py::none(), py::arg("max_events") = SimulationOptions{}.max_events, R"doc(simulate(p, x0, y0, v0, t0, t_end, *, sample=None, max_events=1000000) -> dict
 
 Event-driven simulation of the full system (Section 2) from x(t0) = x0 (mass), y(t0) = y0
 (delimiter), x'(t0) = v0 until t_end, in closed form between events. Any positive parameters (also
