@@ -35,17 +35,38 @@ py::dict segment_dict(const CoveringSegment& s) {
   return d;
 }
 
-/// "dense" or "branchwise" (CoveringMethod); the re-check defaults to each method's own.
+// The ranges of the search options that the library does not check itself (it checks scan >= 2
+// and uniform >= 0, covering.cpp). Upper bounds: kMaxElements, the module's bound on every loop.
+/// Least `recheck`: with fewer than 2 points recheck_segment() (covering.cpp) checks nothing and
+/// with fewer than 4 it skips the test for a jump of T, yet marks the segment rechecked.
+constexpr int kMinRecheck = 4;
+/// Least `refine`: the refinement steps by 1/refine of a grid step (0 would give NaN phases).
+constexpr int kMinRefine = 1;
+
+/// v unless it lies outside [lo, hi]. @throws InvalidParameter naming `name` with the condition
+/// spelled as the CLI spells a count's ("4 <= recheck <= 100000000").
+int count_in(const char* name, int v, long long lo, long long hi) {
+  if (v < lo || v > hi)
+    throw InvalidParameter(name, std::to_string(lo) + " <= " + name + " <= " + std::to_string(hi), v);
+  return v;
+}
+
+/// "dense" or "branchwise" (CoveringMethod); the re-check defaults to each method's own. Every
+/// option is checked, also those the chosen method does not use.
 CoveringSearch search_options(const std::string& method, int scan, int uniform, std::optional<int> recheck, int refine, bool descend,
                               int max_segments) {
   CoveringSearch s;
   if (method == "branchwise") s = CoveringSearch::branchwise();
   else if (method != "dense") throw InvalidParameter("method", "'dense' or 'branchwise' (got '" + method + "')");
+  // scan and uniform: the library's lower bounds (checked by covering_segments), ours above.
+  if (scan > kMaxElements) throw InvalidParameter("scan", "scan <= " + std::to_string(kMaxElements), scan);
+  if (uniform > kMaxElements) throw InvalidParameter("uniform", "uniform <= " + std::to_string(kMaxElements), uniform);
   s.scan = scan;
   s.uniform = uniform;
-  if (recheck) s.recheck = *recheck;
-  s.refine = refine;
+  if (recheck) s.recheck = count_in("recheck", *recheck, kMinRecheck, kMaxElements);
+  s.refine = count_in("refine", refine, kMinRefine, kMaxElements);
   s.descend = descend;
+  if (max_segments < 0) throw InvalidParameter("max_segments", "max_segments >= 0 (0: all)", max_segments);
   s.max_segments = max_segments;
   return s;
 }
@@ -57,6 +78,9 @@ py::list covering_segments_py(const Parameters& p, std::optional<double> lo, std
   const double l = lo ? finite("lo", *lo) : p.t2_required();
   const double h = hi ? finite("hi", *hi) : 1.5 * pi;
   const double t = top ? finite("top", *top) : 1.5 * pi;
+  const double t2 = p.t2_required(), t3 = p.t3_required();
+  if (!(t > t2 && t < t3))  // T lies in [t2, t3): any other top gives no segment, or empty ones
+    throw InvalidParameter("top", "t2 < top < t3 = (" + format_double(t2) + ", " + format_double(t3) + ")", t);
   const CoveringSearch s = search_options(method, scan, uniform, recheck, refine, descend, max_segments);
   std::vector<CoveringSegment> segs;
   {
@@ -94,7 +118,7 @@ void bind_covering(py::module_& m) {
   m.def("covering_segments", &covering_segments_py, py::arg("p"), py::arg("lo") = py::none(), py::arg("hi") = py::none(),
         py::arg("top") = py::none(), py::kw_only(), py::arg("method") = "dense", py::arg("scan") = def.scan,
         py::arg("uniform") = def.uniform, py::arg("recheck") = py::none(), py::arg("refine") = def.refine,
-        py::arg("descend") = def.descend, py::arg("max_segments") = def.max_segments,
+        py::arg("descend").noconvert() = def.descend, py::arg("max_segments") = def.max_segments,
         R"doc(covering_segments(p, lo=t2, hi=3 pi/2, top=3 pi/2, *, method="dense", scan=48, uniform=8000, recheck=None,
                   refine=32, descend=True, max_segments=0) -> list of dict
 
@@ -107,16 +131,19 @@ read from the ends of theta2 (about 100 evaluations of T; scan, uniform, refine 
 Either way each segment is re-checked on `recheck` points inside it (default 400 dense, 64
 branchwise). Each dict: lo, hi, theta_at_t2, theta_at_top, T_at_top, label (dict t1_branch,
 t3_passed, scenario_d) and rechecked (sampled on a finer grid, not proved).
-Raises ValueError unless the map is defined and t2 <= lo < hi < t3, or for an unknown method.)doc");
+Raises ValueError (dfchaos.InvalidParameter, naming the argument) unless the map is defined,
+t2 <= lo < hi < t3, t2 < top < t3, method is known, 2 <= scan, 0 <= uniform, 4 <= recheck (fewer
+points would not re-check), 1 <= refine (each of them <= max_elements) and max_segments >= 0;
+TypeError unless descend is a bool.)doc");
   m.def("lemma4_covering", &lemma4_covering_py, py::arg("p"), py::kw_only(), py::arg("method") = "dense", py::arg("scan") = def.scan,
         py::arg("uniform") = def.uniform, py::arg("recheck") = py::none(), py::arg("refine") = def.refine,
-        py::arg("descend") = def.descend, py::arg("max_segments") = def.max_segments, R"doc(lemma4_covering(p, *, method="dense", scan=48, uniform=8000, recheck=None, refine=32, descend=True,
+        py::arg("descend").noconvert() = def.descend, py::arg("max_segments") = def.max_segments, R"doc(lemma4_covering(p, *, method="dense", scan=48, uniform=8000, recheck=None, refine=32, descend=True,
                 max_segments=0) -> dict
 
 Lemma 4's conclusion at one parameter set: two disjoint closed segments J0, J1 of [t2, 3 pi/2], each
 with T continuous and T(J) containing [t2, 3 pi/2]. Keys: holds, J0, J1 (dicts as from
 covering_segments, None unless holds), segments_found (the search stops after 2 when
-max_segments is 0). Sampled evidence, as covering_segments.)doc");
+max_segments is 0). Sampled evidence, as covering_segments; its options are checked as there.)doc");
 }
 
 }  // namespace dfchaos::python

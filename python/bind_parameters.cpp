@@ -65,7 +65,8 @@ x'' = F(t) = a sin t + 2b in free flight (Eq. 3) and x'' = F(t) - q while it dra
 Parameters(a, b, q) accepts finite a, b, q in [min_parameter, max_parameter] = [1e-100, 1e100]
 and raises ValueError (dfchaos.InvalidParameter) naming the parameter otherwise. The stronger
 conditions of the paper are demanded by the functions that need them (require_return_map).
-Picklable; immutable.)doc")
+Picklable; immutable. An object made by Parameters.__new__ without __init__ is refused by every
+function and method with a TypeError.)doc")
       .def(py::init(&make_parameters), py::arg("a"), py::arg("b"), py::arg("q"))
       .def_property_readonly("a", &Parameters::a, "amplitude of the harmonic forcing")
       .def_property_readonly("b", &Parameters::b, "half the constant forcing component")
@@ -94,14 +95,23 @@ Picklable; immutable.)doc")
           },
           "Which of the paper's assumptions hold, as a dict: b_in_range (0 < b < a/2), q_above_threshold "
           "(a sin(vartheta0) < q < a), eq2 (all of Eq. 2), eq23 (Eq. 23), progression_ends (q > 2b), describe (one line).")
-      .def("F", &Parameters::F, py::arg("t"), "F(t) = a sin t + 2b (Eq. 3)")
+      .def("F", [](const Parameters& p, double t) { return p.F(finite("t", t)); }, py::arg("t"),
+           "F(t) = a sin t + 2b (Eq. 3). Raises ValueError unless t is finite.")
       .def("require_return_map", &Parameters::require_return_map,
            "Raises ValueError unless the return map T is defined here: b < a/2, q > 2b and b/a >= min_map_ratio.")
       .def("require_eq2", &Parameters::require_eq2,
            "Raises ValueError unless assumption (2) holds: 0 < b < a/2 and a sin(vartheta0) < q < a.")
       .def("describe", &Parameters::describe, "'a=... b=... q=...' with 17 significant digits")
       .def("__repr__",
-           [](const Parameters& p) {
+           [](const py::handle& self) -> std::string {
+             // repr works on every object (debuggers and tracebacks call it): an unconstructed one
+             // says so instead of raising.
+             try {
+               require_constructed(self);
+             } catch (const py::type_error&) {
+               return "<dfchaos.Parameters, not initialised>";
+             }
+             const auto& p = self.cast<const Parameters&>();
              return "dfchaos.Parameters(a=" + py_repr(p.a()) + ", b=" + py_repr(p.b()) + ", q=" + py_repr(p.q()) + ")";
            })
       .def(py::pickle([](const Parameters& p) { return py::make_tuple(p.a(), p.b(), p.q()); },

@@ -42,6 +42,17 @@ Reals as_reals(const py::handle& obj, const char* name) {
   return r;
 }
 
+void require_constructed(py::handle obj) {
+  if (!obj || obj.is_none()) return;
+  const py::detail::type_info* type = py::detail::get_type_info(typeid(Parameters));
+  if (type == nullptr || PyObject_TypeCheck(obj.ptr(), type->type) == 0) return;
+  auto* instance = reinterpret_cast<py::detail::instance*>(obj.ptr());
+  if (!instance->get_value_and_holder(type).holder_constructed())
+    throw py::type_error(
+        "dfchaos.Parameters: this object was never initialised (made by Parameters.__new__ without __init__); "
+        "build it as dfchaos.Parameters(a, b, q)");
+}
+
 StrColumn::StrColumn(const std::vector<py::ssize_t>& shape, py::ssize_t width)
     : array(py::dtype("<U" + std::to_string(width)), shape), width_(width) {
   data_ = static_cast<char32_t*>(array.mutable_data());

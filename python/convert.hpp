@@ -6,6 +6,9 @@
 /// The module holds no algorithm: every number comes from one call into the library per element.
 /// A new group of functions (the certified layer, for example) is one more `bind_X(py::module_&)`
 /// in its own file, declared here and called from module.cpp.
+///
+/// Every file of the module includes this header first: it holds the type caster of Parameters
+/// (below), which must be the one seen wherever a Parameters argument is converted.
 #pragma once
 
 #include <pybind11/numpy.h>
@@ -14,6 +17,8 @@
 #include <cstdint>
 #include <string>
 #include <vector>
+
+#include "dfchaos/parameters.hpp"
 
 namespace dfchaos::python {
 
@@ -44,6 +49,13 @@ Reals as_reals(const py::handle& obj, const char* name);
 /// A scalar argument: @throws InvalidParameter unless finite, with the CLI's message
 /// (`theta: must be a finite number (got 'nan')`).
 double finite(const char* name, double x);
+
+/// Refuses a dfchaos.Parameters whose C++ object was never constructed: one made by
+/// `Parameters.__new__(Parameters)` (or a subclass's `__new__`) without `__init__`, whose memory
+/// pybind11 would otherwise allocate uninitialised on first use. Anything else passes (a wrong type
+/// is left to pybind11's own TypeError).
+/// @throws py::type_error saying how to build the object.
+void require_constructed(py::handle obj);
 
 /// Runs body(i) for i in [0, n) without the GIL; every 2^14 elements the GIL is taken back for an
 /// instant to let Python handle a signal (Ctrl-C raises KeyboardInterrupt).
@@ -100,3 +112,21 @@ void bind_covering(py::module_& m);    ///< covering_segments, lemma4_covering (
 void bind_certify(py::module_& m);     ///< certify: proofs in ball arithmetic (bind_certify.cpp)
 
 }  // namespace dfchaos::python
+
+namespace pybind11::detail {
+
+/// The caster of every Parameters argument of the module (by value, reference or pointer, and
+/// `self` of its methods and properties): pybind11's own, after require_constructed(). pybind11
+/// 2.10 lets `Parameters.__new__(Parameters)` make an instance without a C++ object and, on first
+/// use, hands uninitialised memory to the function; no such object gets past this caster.
+template <>
+class type_caster<dfchaos::Parameters> : public type_caster_base<dfchaos::Parameters> {
+ public:
+  /// @throws type_error for an unconstructed Parameters (see require_constructed()).
+  bool load(handle src, bool convert) {
+    dfchaos::python::require_constructed(src);
+    return type_caster_base<dfchaos::Parameters>::load(src, convert);
+  }
+};
+
+}  // namespace pybind11::detail
