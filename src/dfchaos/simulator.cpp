@@ -32,8 +32,8 @@ MechanicalState state_in_segment(const Parameters& p, const MechanicalState& s, 
   return out;
 }
 
-Simulation simulate(const Parameters& p, double x0, double y0, double v0, double t0, double t_end,
-                    const SimulationOptions& options) {
+MechanicalState simulate(const Parameters& p, double x0, double y0, double v0, double t0, double t_end,
+                         const SimulationOptions& options, SimulationSink& sink) {
   auto finite = [](const char* name, double v) {
     if (!std::isfinite(v)) throw InvalidParameter(name, std::string(name) + " finite", v);
   };
@@ -63,11 +63,10 @@ Simulation simulate(const Parameters& p, double x0, double y0, double v0, double
     n_samples = static_cast<long>(n);
   }
 
-  Simulation sim;
   const Instant start = Instant::from_time(t0), stop = Instant::from_time(t_end);
   MechanicalState s{start, classify(p, start, x0, y0, v0), x0, y0, v0};
   if (x0 == y0 && s.regime != Regime::Free && s.regime != Regime::Progression) s.v = 0;
-  sim.initial_regime = s.regime;
+  sink.start(s.regime);
 
   long next_sample = 0;
   auto emit_samples_until = [&](const Instant& segment_end, bool inclusive) {
@@ -76,18 +75,19 @@ Simulation simulate(const Parameters& p, double x0, double y0, double v0, double
       const Instant is = Instant::from_time(ts);
       if (before(segment_end, is) || (!inclusive && is == segment_end)) break;
       const MechanicalState m = state_in_segment(p, s, before(is, s.t) ? s.t : is);
-      sim.samples.push_back(Sample{ts, m.x, m.y, m.v, m.regime});
+      sink.sample(Sample{ts, m.x, m.y, m.v, m.regime});
       ++next_sample;
     }
   };
 
+  long n_events = 0;
   while (true) {
     SearchLimits lim;
     lim.horizon = elapsed(s.t, stop);
     const auto tr = next_transition(p, s, lim);
     if (!tr || before(stop, tr->t)) break;
     emit_samples_until(tr->t, false);
-    if (static_cast<long>(sim.events.size()) >= options.max_events)
+    if (n_events >= options.max_events)
       throw GaveUp("simulate: more than " + std::to_string(options.max_events) + " events before t-end=" +
                    format_double(t_end) + "; raise the event limit or shorten the time span");
     SimulationEvent e;
@@ -100,11 +100,27 @@ Simulation simulate(const Parameters& p, double x0, double y0, double v0, double
     e.y = tr->y;
     e.v_before = tr->v_before;
     e.v_after = tr->v_after;
-    sim.events.push_back(e);
+    sink.event(e);
+    ++n_events;
     s = tr->after();
   }
   emit_samples_until(stop, true);
-  sim.final_state = state_in_segment(p, s, stop);
+  return state_in_segment(p, s, stop);
+}
+
+Simulation simulate(const Parameters& p, double x0, double y0, double v0, double t0, double t_end,
+                    const SimulationOptions& options) {
+  // The streaming form, its calls collected in order.
+  struct Collect final : SimulationSink {
+    Simulation& sim;
+    explicit Collect(Simulation& s) : sim(s) {}
+    void start(Regime initial_regime) override { sim.initial_regime = initial_regime; }
+    void event(const SimulationEvent& e) override { sim.events.push_back(e); }
+    void sample(const Sample& s) override { sim.samples.push_back(s); }
+  };
+  Simulation sim;
+  Collect collect(sim);
+  sim.final_state = simulate(p, x0, y0, v0, t0, t_end, options, collect);
   return sim;
 }
 
