@@ -21,6 +21,7 @@
 #include "dfchaos/map_derivative.hpp"
 #include "dfchaos/phase.hpp"
 #include "dfchaos/superstable.hpp"
+#include "kit/digest.hpp"
 #include "kit/grid.hpp"
 #include "kit/output.hpp"
 #include "sweep/cell.hpp"
@@ -28,6 +29,7 @@
 #include "sweep/engine.hpp"
 #include "sweep/header.hpp"
 #include "sweep/run.hpp"
+#include "sweep/seal.hpp"
 #include "t_evaluations.hpp"
 
 using namespace dfchaos;
@@ -214,10 +216,52 @@ TEST(Header, ReadBackWithTheShardLineApart) {
   EXPECT_EQ(h.cells, 30);
   EXPECT_EQ(h.fields, s.columns().size());
   EXPECT_EQ(whole.find("shard"), std::string::npos);
-  EXPECT_TRUE(row_matches("12\ta\tb", 12, 3));
-  EXPECT_FALSE(row_matches("12\ta\tb", 1, 3));
-  EXPECT_FALSE(row_matches("12\ta", 12, 3));
-  EXPECT_FALSE(row_matches("123\ta\tb", 12, 3));
+  EXPECT_EQ(h.columns, s.columns());
+}
+
+TEST(Header, RowProblemChecksEveryField) {
+  const std::vector<std::string> cols = {"index", "q_over_a", "b_over_a", "status", "covering", "period", "error"};
+  const std::string good = "12\t0.80000000000000004\t0.001\tok\t1\t3\t-";
+  EXPECT_EQ(row_problem(good, 12, cols), "");
+  EXPECT_EQ(row_problem("12\t0.80000000000000004\t0.001\tinadmissible\tnan\tnan\t-", 12, cols), "");
+  EXPECT_EQ(row_problem("12\t0.80000000000000004\t0.001\terror\tnan\tnan\tcovering: gave up", 12, cols), "");
+  // One change in each field is refused.
+  for (const std::string& bad : std::vector<std::string>{
+           "13\t0.80000000000000004\t0.001\tok\t1\t3\t-",           // another index
+           "12\t0.8000000000000000x\t0.001\tok\t1\t3\t-",           // q/a not a number
+           "12\t0.800000000000000040\t0.001\tok\t1\t3\t-",          // q/a not as the sweep writes it
+           "12\t0.80000000000000004\t-0.001\tok\t1\t3\t-",          // negative b/a
+           "12\t0.80000000000000004\t0.001\tXX\t1\t3\t-",           // status
+           "12\t0.80000000000000004\t0.001\tok\t7\t3\t-",           // covering 7
+           "12\t0.80000000000000004\t0.001\tok\t1\t3.5\t-",         // period not a count
+           "12\t0.80000000000000004\t0.001\tok\t1\t3\tboom",        // a message in an ok cell
+           "12\t0.80000000000000004\t0.001\terror\tnan\tnan\t-",    // an error without message
+           "12\t0.80000000000000004\t0.001\tinadmissible\t1\tnan\t-",  // a value in an inadmissible cell
+           "12\t0.80000000000000004\t0.001\tok\t1\t3",               // a field missing
+           "12\t0.80000000000000004\t0.001\tok\t1\t3\t-\t-",       // a field too many
+           std::string("12\t0.80000000000000004\t0.0") + '\0' + "01\tok\t1\t3\t-"})  // a NUL byte
+    EXPECT_NE(row_problem(bad, 12, cols), "") << bad;
+}
+
+TEST(Seal, ParsesExactlyWhatItWrites) {
+  const std::string digest = kit::sha256_hex("abc");
+  EXPECT_EQ(digest, "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");  // FIPS 180-2, Appendix B.1
+  const std::string line = seal_line(42, digest);
+  const auto s = parse_seal_line(line.substr(0, line.size() - 1));
+  ASSERT_TRUE(s.has_value());
+  EXPECT_EQ(s->rows, 42);
+  EXPECT_EQ(s->sha256, digest);
+  for (std::size_t k = 0; k + 1 < line.size(); ++k) {  // any changed character makes it something else
+    std::string bad = line.substr(0, line.size() - 1);
+    bad[k] = bad[k] == '7' ? '8' : '7';
+    const auto t = parse_seal_line(bad);
+    EXPECT_TRUE(!t || t->rows != 42 || t->sha256 != digest) << bad;
+  }
+  Seal seal;
+  const std::string text = "1\tx\n" + seal_line(1, kit::sha256_hex("1\tx\n"));
+  EXPECT_EQ(check_text_seal("resume", "chunk", text, seal), "1\tx\n");
+  EXPECT_NE(rejection([&] { check_text_seal("resume", "chunk", "1\ty\n" + text.substr(4), seal); }).find("damaged"), std::string::npos);
+  EXPECT_NE(rejection([&] { check_text_seal("resume", "chunk", "1\tx\n", seal); }).find("incomplete"), std::string::npos);
 }
 
 TEST(Header, RejectsATruncatedOrForeignHeader) {
@@ -301,7 +345,7 @@ TEST(Cell, InadmissibleAndFailingCellsAreRecordedNotThrown) {
   EXPECT_NE(failed.error.find("covering: "), std::string::npos);
   EXPECT_NE(failed.error.find("orbit: "), std::string::npos);
   const std::string row = format_row(s, failed);
-  EXPECT_TRUE(row_matches(row.substr(0, row.size() - 1), 1, s.columns().size())) << row;  // one line, all fields
+  EXPECT_EQ(row_problem(row.substr(0, row.size() - 1), 1, s.columns()), "") << row;  // one line, all fields well-formed
   EXPECT_NE(row.find("\terror\tnan\tnan\tnan\tnan\tcovering: "), std::string::npos) << row;
 }
 
@@ -373,7 +417,11 @@ TEST(Resume, RejectsAnotherSpecADamagedChunkAndASecondRun) {
   const fs::path chunk = Checkpoint::directory(d / "r.tsv") / "chunk-000000000004-000000000008.tsv";
   ASSERT_TRUE(fs::exists(chunk));
   const std::string rows = slurp(chunk);
-  std::ofstream(chunk, std::ios::trunc) << rows.substr(0, rows.size() - 3);
+  std::ofstream(chunk, std::ios::trunc) << rows.substr(0, rows.size() - 3);  // the seal cut short
+  EXPECT_NE(rejection([&] { sweep::Run r(o); }).find("incomplete"), std::string::npos);
+  std::string changed = rows;
+  changed[rows.find("\tok\t")] = ' ';  // one byte of a row: the digest no longer matches
+  std::ofstream(chunk, std::ios::trunc) << changed;
   EXPECT_NE(rejection([&] { sweep::Run r(o); }).find("damaged"), std::string::npos);
   std::ofstream(chunk, std::ios::trunc) << rows;
   std::ofstream(Checkpoint::directory(d / "r.tsv") / "chunk-000000000006-000000000009.tsv") << rows;

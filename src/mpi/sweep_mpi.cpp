@@ -120,6 +120,7 @@ int run(int argc, char** argv, int rank, int ranks) {
 int main(int argc, char** argv) {
   int provided = 0;
   MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);  // only the main thread calls MPI
+  dfchaos::kit::remove_temporaries_on_signals();  // rank 0's output temporary goes with a SIGINT/SIGTERM/SIGHUP
   int rank = 0, ranks = 1;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   MPI_Comm_size(MPI_COMM_WORLD, &ranks);

@@ -24,6 +24,41 @@ namespace dfchaos::kit {
 /// half written. Used by the experiment outputs and by the sweep's output files.
 std::filesystem::path unique_temporary(const std::filesystem::path& path);
 
+/// Makes SIGINT, SIGTERM and SIGHUP remove every temporary file registered (TemporaryFileGuard)
+/// before the process ends by the signal as it would have (the same status). A signal that is
+/// ignored when this is called (e.g. SIGHUP under nohup) stays ignored. Idempotent. SIGKILL
+/// cannot be caught: what it leaves (a `.tmp.*` beside the target) is never taken for an output
+/// and is removed by the next run that uses the same place (sweep checkpoints), or by hand.
+void remove_temporaries_on_signals();
+
+/// Removes every guarded temporary now (async-signal-safe: for handlers that end the process).
+void remove_guarded_temporaries();
+
+/// While it lives, a temporary file that the signal handlers of remove_temporaries_on_signals()
+/// remove. At most kMaxGuardedTemporaries at once (more are simply not guarded).
+class TemporaryFileGuard {
+ public:
+  explicit TemporaryFileGuard(const std::filesystem::path& path);
+  ~TemporaryFileGuard();
+  TemporaryFileGuard(const TemporaryFileGuard&) = delete;
+  TemporaryFileGuard& operator=(const TemporaryFileGuard&) = delete;
+  /// Stops guarding (the file was renamed into place or removed).
+  void release();
+
+ private:
+  int slot_ = -1;
+};
+
+/// Most temporaries guarded at once.
+inline constexpr int kMaxGuardedTemporaries = 256;
+
+/// The file an output to `path` must write: `path` itself, or the file its chain of symbolic links
+/// ends at (a symlink is written through, never replaced). @throws OutputError (bad_path() true)
+/// when that is an existing directory, device, FIFO or socket (an output is a regular file: it is
+/// written beside and renamed into place, which would replace a device by a file), or when the
+/// chain of links is longer than 40.
+std::filesystem::path output_target(const std::filesystem::path& path, const std::string& option);
+
 /// A file-system failure while writing outputs. `bad_path()` is true when the output location
 /// itself is unusable (not a directory, not creatable: bad input, exit 2) and false when writing
 /// failed (disk full, I/O error: exit 1).

@@ -8,6 +8,7 @@
 
 #include "dfchaos/errors.hpp"
 #include "kit/format.hpp"
+#include "kit/output.hpp"
 #include "kit/provenance.hpp"
 
 namespace dfchaos::kit {
@@ -59,6 +60,7 @@ Json Experiment::describe(const std::string& name) const {
 }
 
 int Experiment::main(const std::string& name, int argc, char** argv) const {
+  remove_temporaries_on_signals();
   std::string help_footer = "Exit status: 0 every claim it asserts holds, 1 one fails (or a bounded search gave up, or writing failed), 2 bad input.";
   CLI::App app{name + ": " + title};
   app.footer(help_footer);

@@ -3,11 +3,15 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <csignal>
+#include <mutex>
+
 #include <atomic>
 #include <cctype>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <memory>
 #include <random>
 #include <stdexcept>
 #include <system_error>
@@ -30,12 +34,88 @@ fs::path unique_temporary(const fs::path& path) {
 
 namespace {
 
+/// The guarded temporaries: a fixed table that the signal handler can read without allocating.
+/// state: 0 free, 1 being filled, 2 guarded.
+struct GuardSlot {
+  std::atomic<int> state{0};
+  char path[4096];
+};
+GuardSlot g_slots[kMaxGuardedTemporaries];
+
+extern "C" void remove_guarded_and_reraise(int sig) {
+  remove_guarded_temporaries();
+  ::signal(sig, SIG_DFL);
+  ::raise(sig);
+}
+
+}  // namespace
+
+void remove_guarded_temporaries() {
+  for (auto& s : g_slots)
+    if (s.state.load() == 2) ::unlink(s.path);  // async-signal-safe
+}
+
+void remove_temporaries_on_signals() {
+  static std::once_flag once;
+  std::call_once(once, [] {
+    for (int sig : {SIGINT, SIGTERM, SIGHUP}) {
+      struct sigaction old {};
+      if (::sigaction(sig, nullptr, &old) != 0 || old.sa_handler == SIG_IGN) continue;
+      struct sigaction sa {};
+      sa.sa_handler = remove_guarded_and_reraise;
+      sigemptyset(&sa.sa_mask);
+      ::sigaction(sig, &sa, nullptr);
+    }
+  });
+}
+
+TemporaryFileGuard::TemporaryFileGuard(const fs::path& path) {
+  const std::string p = path.string();
+  if (p.size() >= sizeof(g_slots[0].path)) return;
+  for (int i = 0; i < kMaxGuardedTemporaries; ++i) {
+    int expected = 0;
+    if (g_slots[i].state.compare_exchange_strong(expected, 1)) {
+      std::memcpy(g_slots[i].path, p.c_str(), p.size() + 1);
+      g_slots[i].state.store(2);
+      slot_ = i;
+      return;
+    }
+  }
+}
+
+TemporaryFileGuard::~TemporaryFileGuard() { release(); }
+
+void TemporaryFileGuard::release() {
+  if (slot_ >= 0) g_slots[slot_].state.store(0);
+  slot_ = -1;
+}
+
+fs::path output_target(const fs::path& path, const std::string& option) {
+  fs::path p = path;
+  std::error_code ec;
+  for (int links = 0; fs::is_symlink(fs::symlink_status(p, ec)); ++links) {
+    if (links == 40) throw OutputError(option + ": " + path.string() + ": more than 40 symbolic links in a chain", true);
+    const fs::path to = fs::read_symlink(p, ec);
+    if (ec) throw OutputError(option + ": cannot read the symbolic link " + p.string() + " (" + ec.message() + ")", true);
+    p = to.is_absolute() ? to : p.parent_path() / to;
+  }
+  const fs::file_status st = fs::status(p, ec);
+  if (fs::exists(st) && !fs::is_regular_file(st)) {
+    const char* kind = fs::is_directory(st) ? "a directory" : fs::is_character_file(st) || fs::is_block_file(st) ? "a device"
+                       : fs::is_fifo(st) ? "a FIFO" : fs::is_socket(st) ? "a socket" : "not a regular file";
+    throw OutputError(option + ": " + path.string() + " is " + kind + "; an output is a regular file (give a file name, or use stdout)", true);
+  }
+  return p;
+}
+
+namespace {
+
 /// Writes content to a new file `tmp`. @throws OutputError (after removing tmp).
 void write_file(const fs::path& tmp, const std::string& content) {
   const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
   if (fd < 0) {
     const int err = errno;
-    const bool bad_path = err == ENOTDIR || err == ENOENT || err == EACCES || err == EROFS || err == EISDIR || err == EPERM;
+    const bool bad_path = err == ENOTDIR || err == ENOENT || err == EACCES || err == EROFS || err == EISDIR || err == EPERM || err == ENAMETOOLONG || err == ELOOP;
     throw OutputError("cannot create " + tmp.parent_path().string() + "/" + tmp.filename().string() + ": " + std::strerror(err), bad_path);
   }
   std::size_t done = 0;
@@ -68,7 +148,8 @@ void require_output_root(const fs::path& root) {
 }
 
 void write_all_or_nothing(const std::vector<std::pair<fs::path, std::string>>& files) {
-  std::vector<fs::path> temporaries;
+  std::vector<fs::path> temporaries, targets;
+  std::vector<std::unique_ptr<TemporaryFileGuard>> guards;  // removed on SIGINT/SIGTERM/SIGHUP
   auto discard = [&] {
     for (const auto& t : temporaries) ::unlink(t.c_str());
   };
@@ -81,7 +162,9 @@ void write_all_or_nothing(const std::vector<std::pair<fs::path, std::string>>& f
         fs::create_directories(path.parent_path(), ec);
         if (ec) throw OutputError("cannot create the directory " + path.parent_path().string() + " (" + ec.message() + ")", true);
       }
-      const fs::path tmp = unique_temporary(path);
+      targets.push_back(output_target(path, "out"));
+      const fs::path tmp = unique_temporary(targets.back());
+      guards.push_back(std::make_unique<TemporaryFileGuard>(tmp));
       write_file(tmp, content);
       temporaries.push_back(tmp);
     }
@@ -92,7 +175,7 @@ void write_all_or_nothing(const std::vector<std::pair<fs::path, std::string>>& f
   // Every file is complete: rename them into place (a rename within a directory does not fail for
   // lack of space; should one fail anyway, the rest are not renamed and their temporaries removed).
   for (std::size_t k = 0; k < files.size(); ++k) {
-    if (std::rename(temporaries[k].c_str(), files[k].first.c_str()) != 0) {
+    if (std::rename(temporaries[k].c_str(), targets[k].c_str()) != 0) {
       const int err = errno;
       for (std::size_t r = k; r < files.size(); ++r) ::unlink(temporaries[r].c_str());
       throw OutputError("cannot rename into " + files[k].first.string() + ": " + std::strerror(err), false);

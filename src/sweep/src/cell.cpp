@@ -68,7 +68,12 @@ CellValues evaluate_cell(const Spec& spec, long long index) {
     v.status = CellStatus::Inadmissible;
     return v;
   }
-  if (obs.has(Observable::Covering)) guarded(v, "covering", [&] { v.covering = lemma4_covering(p, CoveringSearch::branchwise()).holds ? 1 : 0; });
+  if (obs.has(Observable::Covering))
+    guarded(v, "covering", [&] {
+      CoveringSearch search = CoveringSearch::branchwise();
+      search.max_branches = spec.covering_max_branches;
+      v.covering = lemma4_covering(p, search).holds ? 1 : 0;
+    });
   if (obs.has(Observable::Superstable))
     guarded(v, "superstable", [&] {
       const SuperstableCheck s = superstable_check(p, static_cast<int>(spec.superstable_scan));

@@ -11,7 +11,9 @@
 
 #include "dfchaos/errors.hpp"
 #include "kit/output.hpp"
+#include "kit/digest.hpp"
 #include "sweep/header.hpp"
+#include "sweep/seal.hpp"
 #include "sweep/stream.hpp"
 
 namespace dfchaos::sweep {
@@ -44,8 +46,8 @@ bool parse_chunk_name(const std::string& name, Interval& c) {
 
 fs::path Checkpoint::directory(const fs::path& file) { return fs::path(file.string() + ".chunks"); }
 
-Checkpoint::Checkpoint(const fs::path& file, std::string header, const Shard& shard, long long positions, std::size_t fields)
-    : file_(file), dir_(directory(file)), header_(std::move(header)), positions_(positions) {
+Checkpoint::Checkpoint(const fs::path& file, std::string header, const Shard& shard, long long positions, std::vector<std::string> columns)
+    : file_(file), dir_(directory(file)), header_(std::move(header)), positions_(positions), shard_(shard), columns_(std::move(columns)) {
   std::error_code ec;
   if (fs::exists(dir_, ec) && !fs::is_directory(dir_, ec)) throw InvalidParameter(kOption, dir_.string() + " exists and is not a directory");
   const bool fresh = !fs::exists(dir_, ec);
@@ -74,15 +76,7 @@ Checkpoint::Checkpoint(const fs::path& file, std::string header, const Shard& sh
     Interval c;
     if (!parse_chunk_name(name, c) || c.begin < 0 || c.end <= c.begin || c.end > positions_)
       throw InvalidParameter(kOption, entry.path().string() + " is not a chunk of this run");
-    const std::string rows = read_file(kOption, entry.path());
-    std::size_t at = 0;
-    for (long long p = c.begin; p < c.end; ++p) {
-      const std::size_t nl = rows.find('\n', at);
-      if (nl == std::string::npos || !row_matches(std::string_view(rows).substr(at, nl - at), shard.cell(p), fields))
-        throw InvalidParameter(kOption, entry.path().string() + " is damaged (row of cell " + std::to_string(shard.cell(p)) + ")");
-      at = nl + 1;
-    }
-    if (at != rows.size()) throw InvalidParameter(kOption, entry.path().string() + " is damaged (extra text)");
+    (void)read_chunk(entry.path(), c);  // refused unless sealed and every row well-formed
     insert(c);
   }
   if (ec) throw kit::OutputError("resume: cannot read " + dir_.string() + " (" + ec.message() + ")", true);
@@ -108,17 +102,44 @@ long long Checkpoint::done_positions() const {
   return n;
 }
 
+std::string Checkpoint::read_chunk(const fs::path& path, const Interval& c) const {
+  const std::string text = read_file(kOption, path);
+  Seal seal;
+  const std::string_view rows = check_text_seal(kOption, path.string(), text, seal);
+  if (seal.rows != c.size()) throw InvalidParameter(kOption, path.string() + " is damaged (its seal counts " + std::to_string(seal.rows) + " rows, its name " + std::to_string(c.size()) + ")");
+  std::size_t at = 0;
+  for (long long p = c.begin; p < c.end; ++p) {
+    const std::size_t nl = rows.find('\n', at);
+    const std::string problem = nl == std::string_view::npos ? "missing" : row_problem(rows.substr(at, nl - at), shard_.cell(p), columns_);
+    if (!problem.empty())
+      throw InvalidParameter(kOption, path.string() + " is damaged (row of cell " + std::to_string(shard_.cell(p)) + ": " + problem + ")");
+    at = nl + 1;
+  }
+  if (at != rows.size()) throw InvalidParameter(kOption, path.string() + " is damaged (extra text)");
+  return std::string(rows);
+}
+
 void Checkpoint::save(const Interval& chunk, std::string_view rows) {
-  write_file_atomically(dir_ / chunk_name(chunk), rows);
+  std::string text(rows);
+  text += seal_line(chunk.size(), kit::sha256_hex(rows));
+  write_file_atomically(dir_ / chunk_name(chunk), text);
   insert(chunk);
 }
 
 void Checkpoint::assemble() {
   if (!complete()) throw std::logic_error("Checkpoint::assemble before every chunk is done");
   {
+    // Every chunk is read back and checked again: a chunk damaged since it was saved is refused.
     AtomicFile out(file_);
+    Sealer sealer;
     out.write(header_);
-    for (const auto& c : done_) out.write(read_file(kOption, dir_ / chunk_name(c)));
+    sealer.add(header_, 0);
+    for (const auto& c : done_) {
+      const std::string rows = read_chunk(dir_ / chunk_name(c), c);
+      out.write(rows);
+      sealer.add(rows, c.size());
+    }
+    out.write(sealer.line());
     out.commit();
   }
   std::error_code ec;

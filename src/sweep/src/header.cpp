@@ -1,10 +1,12 @@
 #include "sweep/header.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 
 #include "dfchaos/errors.hpp"
 #include "kit/provenance.hpp"
+#include "sweep/seal.hpp"
 
 namespace dfchaos::sweep {
 
@@ -60,6 +62,15 @@ ParsedHeader read_header(const std::string& option, const std::string& file, std
       if (!titled || !has_cells || !starts_with(line, "index\t"))
         throw InvalidParameter(option, file + ": malformed sweep header (no cell count or column line)");
       h.fields = static_cast<std::size_t>(std::count(line.begin(), line.end(), '\t')) + 1;
+      for (std::size_t at = 0;;) {
+        const std::size_t tab = line.find('\t', at);
+        h.columns.push_back(line.substr(at, tab == std::string::npos ? std::string::npos : tab - at));
+        if (tab == std::string::npos) break;
+        at = tab + 1;
+      }
+      if (h.columns.size() < 5 || h.columns[1] != "q_over_a" || h.columns[2] != "b_over_a" || h.columns[3] != "status" ||
+          h.columns.back() != "error")
+        throw InvalidParameter(option, file + ": malformed column line (index, q_over_a, b_over_a, status, ..., error expected)");
       if (h.shard && h.shard->count > h.cells) throw InvalidParameter(option, file + ": more shards than cells");
       return h;
     }
@@ -67,10 +78,69 @@ ParsedHeader read_header(const std::string& option, const std::string& file, std
   throw InvalidParameter(option, file + ": header longer than " + std::to_string(kMaxHeaderLines) + " lines");
 }
 
-bool row_matches(std::string_view row, long long index, std::size_t fields) {
-  const std::string key = std::to_string(index);
-  if (row.size() <= key.size() || row.substr(0, key.size()) != key || row[key.size()] != '\t') return false;
-  return static_cast<std::size_t>(std::count(row.begin(), row.end(), '\t')) + 1 == fields;
+namespace {
+/// Whether `text` is a number exactly as format_double writes it (%.17g: nan, inf and -inf too).
+bool canonical_number(std::string_view text, double& x) {
+  if (text.empty() || text.size() > 32) return false;
+  const std::string s(text);
+  char* end = nullptr;
+  x = std::strtod(s.c_str(), &end);
+  return end == s.c_str() + s.size() && format_double(x) == s;
+}
+}  // namespace
+
+std::string row_problem(std::string_view row, long long index, const std::vector<std::string>& columns) {
+  for (char c : row)
+    if ((static_cast<unsigned char>(c) < 0x20 && c != '\t') || c == 0x7f) return "a control character";
+  std::vector<std::string_view> f;
+  for (std::size_t at = 0;;) {
+    const std::size_t tab = row.find('\t', at);
+    f.push_back(row.substr(at, tab == std::string_view::npos ? std::string_view::npos : tab - at));
+    if (tab == std::string_view::npos) break;
+    at = tab + 1;
+  }
+  if (f.size() != columns.size()) return std::to_string(f.size()) + " fields instead of " + std::to_string(columns.size());
+  if (f[0] != std::to_string(index)) return "index " + std::string(f[0].substr(0, 24)) + " instead of " + std::to_string(index);
+  double x = 0;
+  for (std::size_t k : {std::size_t{1}, std::size_t{2}})
+    if (!canonical_number(f[k], x) || !(x > 0 && std::isfinite(x))) return columns[k] + " is not a positive number as the sweep writes it";
+  const std::string_view status = f[3];
+  if (status != "ok" && status != "inadmissible" && status != "error") return "unknown status";
+  for (std::size_t k = 4; k + 1 < f.size(); ++k) {
+    if (!canonical_number(f[k], x)) return columns[k] + " is not a number as the sweep writes it";
+    const std::string& c = columns[k];
+    if ((c == "covering" || c == "superstable") && !(x == 0 || x == 1 || std::isnan(x))) return c + " is not 0, 1 or nan";
+    if (c == "period" && !std::isnan(x) && !(x >= 0 && x == std::floor(x) && x <= 1e18)) return "period is not a count";
+    if (status == "inadmissible" && !std::isnan(x)) return c + " is not nan in an inadmissible cell";
+  }
+  const std::string_view error = f.back();
+  if ((status == "error") == (error == "-" || error.empty())) return status == "error" ? "an error cell without its message" : "an error message in a cell that is not in error";
+  return "";
+}
+
+CheckedFile check_sweep_file(const std::string& option, const std::string& file, std::istream& in) {
+  const SealedFile sealed = check_file_seal(option, file);
+  CheckedFile c;
+  c.header = read_header(option, file, in);
+  c.first_row = in.tellg();
+  const Shard shard = c.header.shard.value_or(Shard{});
+  const long long rows = shard.size(c.header.cells);
+  if (sealed.seal.rows != rows)
+    throw InvalidParameter(option, file + " is damaged (its seal counts " + std::to_string(sealed.seal.rows) + " rows, shard " +
+                                       shard.canonical() + " of " + std::to_string(c.header.cells) + " cells has " + std::to_string(rows) + ")");
+  std::string row;
+  for (long long p = 0; p < rows; ++p) {
+    if (!std::getline(in, row) || static_cast<std::uintmax_t>(in.tellg()) > sealed.body_bytes)
+      throw InvalidParameter(option, file + " has " + std::to_string(p) + " of the " + std::to_string(rows) + " rows of shard " + shard.canonical() + " (incomplete)");
+    const std::string problem = row_problem(row, shard.cell(p), c.header.columns);
+    if (!problem.empty())
+      throw InvalidParameter(option, file + ": row " + std::to_string(p + 1) + " is not a valid row of cell " + std::to_string(shard.cell(p)) + " (" + problem + ")");
+  }
+  if (static_cast<std::uintmax_t>(in.tellg()) != sealed.body_bytes)
+    throw InvalidParameter(option, file + " has more rows than the " + std::to_string(rows) + " of shard " + shard.canonical());
+  in.clear();
+  in.seekg(c.first_row);
+  return c;
 }
 
 }  // namespace dfchaos::sweep

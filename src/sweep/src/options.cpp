@@ -16,10 +16,13 @@ long long count(const std::string& name, const std::string& text, long long lo, 
 }  // namespace
 
 void SweepArguments::add_to(CLI::App* app) {
-  app->add_option("--a", a, "forcing amplitude, 1e-150 <= a <= 1e150 (default 1; only q/a and b/a matter)")->type_name("FLOAT");
+  app->add_option("--a", a, "forcing amplitude, " + format_double(kMinA) + " <= a <= " + format_double(kMaxA) + " (default 1; only q/a and b/a matter)")->type_name("FLOAT");
   app->add_option("--q-range", q_range, "q/a axis lo:hi:n[:lin|log|mid] (every q/a > 0)")->required()->type_name("LO:HI:N[:KIND]");
-  app->add_option("--b-range", b_range, "b/a axis lo:hi:n[:lin|log|mid] (every b/a in (0, 1/2))")->required()->type_name("LO:HI:N[:KIND]");
+  app->add_option("--b-range", b_range, "b/a axis lo:hi:n[:lin|log|mid] (every b/a in [" + format_double(kMinMapRatio) + ", 1/2))")->required()->type_name("LO:HI:N[:KIND]");
   app->add_option("--observables", observables, "comma-separated: covering,superstable,lyapunov,rate,period (default all)")->type_name("LIST");
+  app->add_option("--max-branches", max_branches, "covering's work budget per cell: a cell whose [t2, 3pi/2] holds more branches of T1 (about 0.16 a/b)\n"
+                  "is an error cell naming it, 1.." + std::to_string(kMaxCoveringBranches) + " (default " + std::to_string(kDefaultMaxCoveringBranches) + ")")
+      ->type_name("N");
   app->add_option("--superstable-scan", superstable_scan, "scan of superstable_check, " + std::to_string(kMinSuperstableScan) + ".." +
                                                               std::to_string(kMaxSuperstableScan) + " (default 400)")->type_name("N");
   app->add_option("--theta0", theta0, "orbit start as a fraction f in [0, 1): theta_0 = t2 + f (t3 - t2) (default 0.5)")->type_name("F");
@@ -48,6 +51,9 @@ void SweepArguments::add_to(CLI::App* app) {
       "  rate         mean drilling speed over those steps (delimiter advance / elapsed time)\n"
       "  period       smallest k <= period-max with |T^k(e) - e| <= period-tol, e = T^(transient+steps)(theta_0); 0 if none\n"
       "  error        'observable: message' for each observable that threw, '-' if none\n"
+      "The last line is the seal '# end: N rows, sha256 HEX (of every byte above this line)': sweep-merge and --resume\n"
+      "refuse a file without it (cut short) or whose bytes or rows do not match it (damaged). --out follows a symlink and\n"
+      "refuses a directory, device or FIFO; SIGINT/SIGTERM/SIGHUP leave no temporary (docs/reliability.md).\n"
       "Progress with an estimate of the time left goes to stderr (on a terminal, or with --progress).\n"
       "Exit status: 0 done, 1 writing failed, 2 bad input, 3 stopped by --max-chunks (rerun to continue).\n"
       "Threads: OMP_NUM_THREADS. The rows do not depend on the thread, shard or rank count.");
@@ -61,6 +67,7 @@ RunOptions SweepArguments::resolve() const {
   s.b_over_a = Range::parse("b-range", b_range);
   s.observables = ObservableSet::parse("observables", observables);
   s.superstable_scan = count("superstable-scan", superstable_scan, kMinSuperstableScan, kMaxSuperstableScan);
+  s.covering_max_branches = count("max-branches", max_branches, 1, kMaxCoveringBranches);
   s.orbit.theta0_fraction = kit::parse_number("theta0", theta0, false);
   s.orbit.transient = count("transient", transient, 0, kMaxTransient);
   s.orbit.steps = count("steps", steps, 1, kMaxSteps);

@@ -48,9 +48,18 @@ Run::Run(RunOptions options) : o_(std::move(options)) {
     const fs::path file = o_.resume;
     std::error_code ec;
     if (!fs::exists(Checkpoint::directory(file), ec) && fs::exists(file, ec)) {
-      // A finished run: its output is in place (written atomically). Accept it if it is this run.
+      // A finished run: its output is in place (written atomically). Accept it only if it is the
+      // complete, undamaged output of this run: sealed, this header, every row well-formed.
       std::ifstream in(file, std::ios::binary);
+      try {
+        (void)check_sweep_file("resume", file.string(), in);
+      } catch (const InvalidParameter& e) {
+        const std::string why = std::string(e.what()).substr(e.parameter().size() + 2);  // after "resume: "
+        throw InvalidParameter("resume", why + "; it cannot be resumed (its chunks are gone): remove it to compute it again");
+      }
       std::string head(header.size(), '\0');
+      in.clear();
+      in.seekg(0);
       in.read(head.data(), static_cast<std::streamsize>(head.size()));
       if (!in || head != header)
         throw InvalidParameter("resume", file.string() + " exists and is not the output of this run (another spec, build or shard); "
@@ -58,7 +67,7 @@ Run::Run(RunOptions options) : o_(std::move(options)) {
       already_complete_ = true;
       std::fprintf(stderr, "sweep: %s is already complete\n", file.c_str());
     } else {
-      checkpoint_ = std::make_unique<Checkpoint>(file, header, shard_, positions_, o_.spec.columns().size());
+      checkpoint_ = std::make_unique<Checkpoint>(file, header, shard_, positions_, o_.spec.columns());
       done = checkpoint_->done();
       if (!done.empty())
         std::fprintf(stderr, "sweep: resuming %s: %lld of %lld cells already done\n", file.c_str(), checkpoint_->done_positions(), positions_);
@@ -67,6 +76,7 @@ Run::Run(RunOptions options) : o_(std::move(options)) {
     if (o_.out.empty()) stream_ = std::make_unique<StdoutStream>();
     else stream_ = std::make_unique<AtomicFile>(o_.out);
     stream_->write(header);
+    sealer_.add(header, 0);
   }
   if (!already_complete_) chunks_ = plan_chunks(positions_, done, o_.chunk);
   if (o_.max_chunks > 0 && static_cast<long long>(chunks_.size()) > o_.max_chunks) chunks_.resize(static_cast<std::size_t>(o_.max_chunks));
@@ -87,7 +97,10 @@ std::vector<long long> Run::cells_of(const Interval& chunk) const {
 void Run::deliver(std::size_t k, const std::string& rows) {
   if (k != delivered_ || k >= chunks_.size()) throw std::logic_error("Run::deliver: chunks must be delivered once each, in order");
   if (checkpoint_) checkpoint_->save(chunks_[k], rows);
-  else stream_->write(rows);
+  else {
+    stream_->write(rows);
+    sealer_.add(rows, chunks_[k].size());
+  }
   ++delivered_;
 }
 
@@ -104,6 +117,7 @@ int Run::finish() {
     checkpoint_->assemble();
     return 0;
   }
+  stream_->write(sealer_.line());
   stream_->commit();
   return 0;
 }

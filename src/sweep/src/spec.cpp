@@ -1,8 +1,10 @@
 #include "sweep/spec.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "dfchaos/errors.hpp"
+#include "dfchaos/parameters.hpp"
 
 namespace dfchaos::sweep {
 
@@ -11,10 +13,16 @@ std::string count_text(long long v) { return std::to_string(v); }
 }  // namespace
 
 void Spec::validate() const {
-  if (!(a >= kMinA && a <= kMaxA)) throw InvalidParameter("a", "1e-150 <= a <= 1e150", a);
+  if (!(a >= kMinA && a <= kMaxA)) throw InvalidParameter("a", format_double(kMinA) + " <= a <= " + format_double(kMaxA) + " (the model's range)", a);
   if (q_over_a.size() < 1 || b_over_a.size() < 1) throw InvalidParameter("q-range", "both ranges are required");
   q_over_a.require_within("q-range", 0, INFINITY, "every q/a must be positive and finite");
+  for (double r : {q_over_a[0], q_over_a[q_over_a.size() - 1]})
+    if (!std::isnormal(r)) throw InvalidParameter("q-range", "every q/a must be a normal number (not subnormal)", r);
   b_over_a.require_within("b-range", 0, 0.5, "every b/a must lie in (0, 1/2), where t2 and t3 exist");
+  // The axes are monotone: the smallest b/a is at one end.
+  const double b_least = std::min(b_over_a[0], b_over_a[b_over_a.size() - 1]);
+  if (!(b_least >= kMinMapRatio))
+    throw InvalidParameter("b-range", "every b/a >= " + format_double(kMinMapRatio) + " (the accuracy floor of T, docs/accuracy.md)", b_least);
   // The parameters themselves, a·(q/a) and a·(b/a), must be finite and positive (a huge or tiny a
   // would overflow or underflow them).
   for (double r : {q_over_a[0], q_over_a[q_over_a.size() - 1], b_over_a[0], b_over_a[b_over_a.size() - 1]})
@@ -27,6 +35,8 @@ void Spec::validate() const {
   if (superstable_scan < kMinSuperstableScan || superstable_scan > kMaxSuperstableScan)
     throw InvalidParameter("superstable-scan", count_text(kMinSuperstableScan) + " <= superstable-scan <= " + count_text(kMaxSuperstableScan),
                            static_cast<double>(superstable_scan));
+  if (covering_max_branches < 1 || covering_max_branches > kMaxCoveringBranches)
+    throw InvalidParameter("max-branches", "1 <= max-branches <= " + count_text(kMaxCoveringBranches), static_cast<double>(covering_max_branches));
   if (!(orbit.theta0_fraction >= 0 && orbit.theta0_fraction < 1))
     throw InvalidParameter("theta0", "0 <= theta0 < 1 (a fraction of [t2, t3))", orbit.theta0_fraction);
   if (orbit.transient < 0 || orbit.transient > kMaxTransient)
@@ -51,6 +61,8 @@ std::vector<std::string> Spec::header_lines() const {
   h.push_back("q_over_a = " + q_over_a.canonical());
   h.push_back("b_over_a = " + b_over_a.canonical());
   h.push_back("observables = " + observables.canonical());
+  if (observables.has(Observable::Covering))
+    h.push_back("max_branches = " + count_text(covering_max_branches) + "  (the covering search's work budget per cell)");
   if (observables.has(Observable::Superstable)) h.push_back("superstable_scan = " + count_text(superstable_scan));
   if (observables.needs_orbit()) {
     h.push_back("theta0 = " + format_double(orbit.theta0_fraction) + "  (theta_0 = t2 + theta0 (t3 - t2))");

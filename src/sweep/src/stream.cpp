@@ -28,13 +28,12 @@ void StdoutStream::commit() {
     throw kit::OutputError(std::string("cannot write the output: ") + std::strerror(errno), false);
 }
 
-AtomicFile::AtomicFile(fs::path path) : path_(std::move(path)), tmp_(kit::unique_temporary(path_)) {
-  std::error_code ec;
-  if (fs::is_directory(path_, ec)) throw kit::OutputError("out: " + path_.string() + " is a directory", true);
+AtomicFile::AtomicFile(const fs::path& path)
+    : path_(kit::output_target(path, "out")), tmp_(kit::unique_temporary(path_)), guard_(tmp_) {
   file_ = std::fopen(tmp_.c_str(), "wx");  // exclusive: never reuses a name
   if (!file_) {
     const int err = errno;
-    const bool bad_path = err == ENOTDIR || err == ENOENT || err == EACCES || err == EROFS || err == EISDIR || err == EPERM;
+    const bool bad_path = err == ENOTDIR || err == ENOENT || err == EACCES || err == EROFS || err == EISDIR || err == EPERM || err == ENAMETOOLONG || err == ELOOP;
     throw kit::OutputError("out: cannot create a file beside " + path_.string() + ": " + std::strerror(err), bad_path);
   }
 }
@@ -60,6 +59,7 @@ void AtomicFile::commit() {
   if (std::rename(tmp_.c_str(), path_.c_str()) != 0)
     throw kit::OutputError("cannot rename into " + path_.string() + ": " + std::strerror(errno), false);
   committed_ = true;
+  guard_.release();
 }
 
 void write_file_atomically(const fs::path& path, std::string_view content) {

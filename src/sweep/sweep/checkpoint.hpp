@@ -4,7 +4,10 @@
 ///
 /// Layout: `header` (the output header of the run: spec, build and shard), `lock` (held with
 /// flock while a run uses the directory: two runs never share it), and one
-/// `chunk-BEGIN-END.tsv` per chunk of positions [BEGIN, END) of the shard, holding their rows.
+/// `chunk-BEGIN-END.tsv` per chunk of positions [BEGIN, END) of the shard, holding their rows and
+/// a seal line (seal.hpp: the row count and the SHA-256 of the rows). Every chunk is checked when
+/// the directory is opened and again when the output is assembled: an incomplete or damaged chunk
+/// is refused, never merged.
 /// A chunk file appears only complete (written to a unique temporary, then renamed): a run killed
 /// at any instant leaves complete chunks and at most stale temporaries, which the next run removes.
 /// When every position is done, the output is assembled into FILE (atomically) and the directory
@@ -34,11 +37,11 @@ class Checkpoint {
   static std::filesystem::path directory(const std::filesystem::path& file);
 
   /// Opens (or creates) the directory of `file` for a run with output header `header` over the
-  /// `positions` positions of `shard`, rows of `fields` fields. Reads and checks every chunk.
+  /// `positions` positions of `shard`, rows with these `columns`. Reads and checks every chunk.
   /// @throws InvalidParameter naming "resume" when the directory holds another run (another spec,
   ///         build or shard), is in use by another run, or holds a damaged or overlapping chunk;
   ///         kit::OutputError when it cannot be created.
-  Checkpoint(const std::filesystem::path& file, std::string header, const Shard& shard, long long positions, std::size_t fields);
+  Checkpoint(const std::filesystem::path& file, std::string header, const Shard& shard, long long positions, std::vector<std::string> columns);
   Checkpoint(const Checkpoint&) = delete;
   Checkpoint& operator=(const Checkpoint&) = delete;
 
@@ -58,6 +61,8 @@ class Checkpoint {
   std::filesystem::path file_, dir_;
   std::string header_;
   long long positions_;
+  Shard shard_;
+  std::vector<std::string> columns_;
   std::vector<Interval> done_;
   /// An open file descriptor holding the directory's flock, closed (the lock released) on
   /// destruction, also when the constructor of Checkpoint throws after taking it.
@@ -70,6 +75,9 @@ class Checkpoint {
     void release();
   } lock_;
   void insert(const Interval& chunk);
+  /// The rows of chunk file `path` of positions `c`, without its seal.
+  /// @throws InvalidParameter naming "resume" unless it is sealed and every row is well-formed.
+  std::string read_chunk(const std::filesystem::path& path, const Interval& c) const;
 };
 
 }  // namespace dfchaos::sweep

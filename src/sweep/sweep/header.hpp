@@ -9,12 +9,15 @@
 ///     # key = value                      (the spec: Spec::header_lines())
 ///     [# shard = i/N  (...)]             (shard files only)
 ///     index  q_over_a  b_over_a  status  <observable columns>  error
+///     ... rows ...
+///     # end: ROWS rows, sha256 HEX (of every byte above this line)      (seal.hpp)
 ///
 /// Nothing in it differs between an unsharded, a merged, a resumed or an MPI run of the same spec
 /// with the same build: no time, no thread, shard or rank count. Shard files carry one more line,
 /// which the merge checks and drops.
 #pragma once
 
+#include <ios>
 #include <istream>
 #include <optional>
 #include <string>
@@ -43,13 +46,30 @@ struct ParsedHeader {
   std::optional<Shard> shard;    ///< from the shard line, if any
   long long cells = 0;           ///< from the cells line
   std::size_t fields = 0;        ///< the number of columns
+  std::vector<std::string> columns;  ///< the column names
 };
 
 /// Reads the header at the start of `in`, leaving `in` at the first row. Errors name `option` and
 /// `file`. @throws InvalidParameter when the text is not a sweep output.
 ParsedHeader read_header(const std::string& option, const std::string& file, std::istream& in);
 
-/// Whether `row` (without its '\n') is a row of cell `index` with `fields` tab-separated fields.
-bool row_matches(std::string_view row, long long index, std::size_t fields);
+/// Why `row` (without its '\n') is not a well-formed row of cell `index` under `columns`, or ""
+/// when it is one. Every field is checked: the index; q/a and b/a positive finite numbers; the
+/// status one of ok, inadmissible, error; each observable a number in the form the sweep writes
+/// (%.17g, nan, inf), covering and superstable 0, 1 or nan, period nan or a count; the error
+/// field "-" exactly when the status is not error, and no control character anywhere.
+std::string row_problem(std::string_view row, long long index, const std::vector<std::string>& columns);
+
+/// A whole sweep file read back and checked.
+struct CheckedFile {
+  ParsedHeader header;       ///< its header
+  std::streampos first_row;  ///< where its rows begin
+};
+
+/// Checks the whole sweep file `file`, opened as `in`: its seal (seal.hpp: complete and undamaged),
+/// its header, and every row (row_problem), which must be exactly the cells of its shard (0/1 when
+/// it has no shard line), in order, as many as the seal states. Leaves `in` at the first row.
+/// @throws InvalidParameter naming `option` and the file, saying what is wrong.
+CheckedFile check_sweep_file(const std::string& option, const std::string& file, std::istream& in);
 
 }  // namespace dfchaos::sweep

@@ -4,7 +4,9 @@
 ///
 /// Checked before anything is written: every file is a shard of the same sweep (identical headers
 /// but for the shard line: same spec, same build), the shards are 0/N ... N-1/N each exactly once,
-/// and each file holds exactly its cells (index ≡ i mod N, increasing, each row complete).
+/// and each file is whole and undamaged: its seal matches its bytes (seal.hpp) and it holds exactly
+/// its cells (index ≡ i mod N, increasing), every field of every row well-formed (row_problem).
+/// The shard files must be regular files (each is read twice); the output carries a seal of its own.
 #pragma once
 
 #include <string>

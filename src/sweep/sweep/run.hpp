@@ -2,7 +2,8 @@
 /// @brief One run of a sweep, whatever computes its cells (OpenMP threads, MPI ranks): checks the
 /// whole request before any work, plans the chunks still to compute, and puts their rows where
 /// they belong — streamed to stdout or into `--out FILE` (atomically), or saved chunk by chunk
-/// into the checkpoint of `--resume FILE` and assembled at the end.
+/// into the checkpoint of `--resume FILE` and assembled at the end. Every output ends in its seal
+/// (seal.hpp); `--resume` of a finished file accepts it only when its seal and rows check.
 ///
 /// Use: construct (throws on bad input), compute the rows of chunks()[k] for k = 0, 1, ... in order
 /// and deliver() each, then finish(). The output does not depend on how the rows were computed.
@@ -15,6 +16,7 @@
 
 #include "kit/grid.hpp"
 #include "sweep/checkpoint.hpp"
+#include "sweep/seal.hpp"
 #include "sweep/shard.hpp"
 #include "sweep/spec.hpp"
 #include "sweep/stream.hpp"
@@ -73,6 +75,7 @@ class Run {
   std::vector<Interval> chunks_;
   std::unique_ptr<Checkpoint> checkpoint_;
   std::unique_ptr<Stream> stream_;
+  Sealer sealer_;  ///< the seal of what went to stream_
   std::unique_ptr<kit::Progress> progress_;
   bool already_complete_ = false;
   std::size_t delivered_ = 0;

@@ -21,6 +21,8 @@
 #include <string>
 #include <vector>
 
+#include "dfchaos/covering.hpp"
+#include "dfchaos/parameters.hpp"
 #include "sweep/observables.hpp"
 #include "sweep/range.hpp"
 
@@ -32,11 +34,12 @@ inline constexpr long long kMaxSteps = 10'000'000;           ///< most averaged 
 inline constexpr long long kMaxPeriod = 10'000;              ///< largest period searched for
 inline constexpr long long kMinSuperstableScan = 2;          ///< superstable_check's least scan
 inline constexpr long long kMaxSuperstableScan = 1'000'000;  ///< most scan points of superstable_check
+inline constexpr long long kMaxCoveringBranches = 1'000'000'000;  ///< largest covering work budget per cell
 /// Most evaluations of T by the orbits of a whole sweep, cells·(transient + steps + period_max):
 /// 10^12, some 25 core-days at 2 µs per evaluation.
 inline constexpr double kMaxOrbitEvaluations = 1e12;
-inline constexpr double kMinA = 1e-150;  ///< smallest forcing amplitude (squares of a stay normal)
-inline constexpr double kMaxA = 1e150;   ///< largest forcing amplitude (squares of a stay finite)
+inline constexpr double kMinA = kMinParameter;  ///< smallest forcing amplitude: the model's range
+inline constexpr double kMaxA = kMaxParameter;  ///< largest forcing amplitude: the model's range
 inline constexpr double kMinPeriodTol = 1e-15;  ///< smallest period tolerance (about the rounding of T)
 inline constexpr double kMaxPeriodTol = 1e-3;   ///< largest period tolerance
 
@@ -60,12 +63,15 @@ struct Spec {
   Range b_over_a;                ///< second axis
   ObservableSet observables;     ///< what each cell computes
   long long superstable_scan = 400;  ///< scan of superstable_check (as in thm1_parameter_plane)
+  /// The covering search's work budget per cell (CoveringSearch::max_branches, 1..kMaxCoveringBranches):
+  /// a cell with more branches of T1 in [t2, 3pi/2] is an error cell naming the budget.
+  long long covering_max_branches = kDefaultMaxCoveringBranches;
   OrbitSettings orbit;           ///< the orbit (lyapunov, rate, period)
   PeriodSettings period;         ///< the period search
 
   /// Checks every bound and admissibility condition before any work: a in [kMinA, kMaxA], and
   /// a·(q/a), a·(b/a) normal numbers for every cell; every q/a in
-  /// (0, inf) and every b/a in (0, 1/2) (the joint condition q/a > 2 b/a is checked per cell, whose
+  /// (0, inf) and every b/a in [kMinMapRatio, 1/2) (the joint condition q/a > 2 b/a is checked per cell, whose
   /// status is then `inadmissible`); the cell count, the orbit counts and the total orbit work
   /// bounded (the k* constants). @throws InvalidParameter naming the option (as on the command line).
   void validate() const;

@@ -9,6 +9,8 @@
 #include <string>
 #include <string_view>
 
+#include "kit/output.hpp"
+
 namespace dfchaos::sweep {
 
 /// A destination of text. A failed write throws kit::OutputError (bad_path() false: exit 1).
@@ -29,12 +31,15 @@ class StdoutStream final : public Stream {
 };
 
 /// A file written atomically: its previous content stays until commit(); an uncommitted temporary
-/// is removed by the destructor (an interrupted run leaves at most a `.tmp.*` file behind).
+/// is removed by the destructor and by SIGINT, SIGTERM and SIGHUP (kit::TemporaryFileGuard; only
+/// SIGKILL or a crash leaves a `.tmp.*` file behind). The rule for `path` is kit::output_target's:
+/// a symbolic link is written through, a regular file or a new name is replaced atomically, a
+/// directory, device, FIFO or socket is refused.
 class AtomicFile final : public Stream {
  public:
-  /// Creates the temporary beside `path`. @throws kit::OutputError (bad_path() true when the
-  /// directory does not exist or cannot be written).
-  explicit AtomicFile(std::filesystem::path path);
+  /// Creates the temporary beside the target of `path`. @throws kit::OutputError (bad_path() true
+  /// when the target is not a regular file, or its directory does not exist or cannot be written).
+  explicit AtomicFile(const std::filesystem::path& path);
   ~AtomicFile() override;
   AtomicFile(const AtomicFile&) = delete;
   AtomicFile& operator=(const AtomicFile&) = delete;
@@ -43,6 +48,7 @@ class AtomicFile final : public Stream {
 
  private:
   std::filesystem::path path_, tmp_;
+  kit::TemporaryFileGuard guard_;
   std::FILE* file_ = nullptr;
   bool committed_ = false;
 };
