@@ -12,18 +12,59 @@
 /// Output is tab-separated with one header line per table, numbers in %.17g. Bad input: one line
 /// on stderr naming the parameter and the condition, exit status 2, nothing on stdout. A bounded
 /// computation that gives up (e.g. a motion that never flies again): one line, exit status 1.
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
+#include <iostream>
+#include <new>
 #include <string>
 #include <vector>
 
 #include "cli.hpp"
 #include "dfchaos/errors.hpp"
+#include "kit/budget.hpp"
 #include "kit/output.hpp"
 #include "kit/provenance.hpp"
 
 namespace dfchaos::cli {
 
+namespace {
+
+/// Flushes everything written to stdout (C stdio and iostreams); false when it did not reach its
+/// destination (a full disk, a closed pipe or descriptor), with errno set.
+bool stdout_delivered() {
+  errno = 0;
+  std::cout.flush();  // synced with stdio: flushes stdout too
+  const int stream_errno = errno;
+  const bool stream_ok = static_cast<bool>(std::cout);
+  const bool stdio_ok = std::fflush(stdout) == 0 && !std::ferror(stdout);
+  if (!stream_ok && stream_errno != 0) errno = stream_errno;
+  if (errno == 0) errno = EIO;  // the error flag was set by an earlier write
+  return stream_ok && stdio_ok;
+}
+
+int run_command(int argc, char** argv);
+
+/// Set when a failed write was already reported (one line, not two).
+bool g_write_failure_reported = false;
+
+}  // namespace
+
 int run(int argc, char** argv) {
+  kit::remove_temporaries_on_signals();
+  const int status = run_command(argc, argv);
+  // Every command's output must reach stdout (also --help and --version): a failed write is an
+  // error (exit 1), never a silent success.
+  if (!stdout_delivered() && !g_write_failure_reported) {
+    std::fprintf(stderr, "dfchaos: error: cannot write the output: %s\n", std::strerror(errno ? errno : EIO));
+    return status == 2 ? 2 : 1;
+  }
+  return status;
+}
+
+namespace {
+
+int run_command(int argc, char** argv) {
   CLI::App app{"dfchaos: the dry-friction oscillator of Begun & Kryzhevich (return map T, simulator)"};
   app.set_version_flag("--version", std::string(dfchaos::kit::version()) + " (" + dfchaos::kit::git_hash() + ")");
   app.require_subcommand(1);
@@ -56,30 +97,35 @@ int run(int argc, char** argv) {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
-    std::string msg = e.what();
-    for (auto& ch : msg)
-      if (ch == '\n') ch = ' ';
-    std::fprintf(stderr, "dfchaos: error: %s\n", msg.c_str());
+    std::fprintf(stderr, "dfchaos: error: %s\n", one_line(e.what()).c_str());
     return 2;
   }
   try {
     for (const auto& c : commands)
       if (c.app->parsed()) return c.run();
   } catch (const dfchaos::InvalidParameter& e) {
-    std::fprintf(stderr, "dfchaos: error: %s\n", e.what());
+    std::fprintf(stderr, "dfchaos: error: %s\n", one_line(e.what()).c_str());
     return 2;
   } catch (const dfchaos::GaveUp& e) {
     std::fflush(stdout);
-    std::fprintf(stderr, "dfchaos: gave up: %s\n", e.what());
+    std::fprintf(stderr, "dfchaos: gave up: %s\n", one_line(e.what()).c_str());
     return 1;
   } catch (const WriteFailed& e) {
-    std::fprintf(stderr, "dfchaos: error: %s\n", e.what());
+    g_write_failure_reported = true;
+    std::fprintf(stderr, "dfchaos: error: %s\n", one_line(e.what()).c_str());
     return 1;
   } catch (const dfchaos::kit::OutputError& e) {  // an unusable output path is bad input; a failed write is not
-    std::fprintf(stderr, "dfchaos: error: %s\n", e.what());
+    g_write_failure_reported = true;
+    std::fprintf(stderr, "dfchaos: error: %s\n", one_line(e.what()).c_str());
     return e.bad_path() ? 2 : 1;
+  } catch (const std::bad_alloc&) {  // a memory budget (kit/budget.hpp) or the machine's memory ran out
+    const std::string budget = kit::memory_budget_line();
+    std::fprintf(stderr, "dfchaos: gave up: %s\n", budget.empty() ? "out of memory (an allocation failed)" : budget.c_str());
+    return 1;
   }
   return 2;
 }
+
+}  // namespace
 
 }  // namespace dfchaos::cli

@@ -10,10 +10,12 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <new>
 
 #include "dfchaos/certified/json.hpp"
 #include "dfchaos/errors.hpp"
 #include "dfchaos/parameters.hpp"
+#include "kit/budget.hpp"
 #include "kit/options.hpp"
 
 namespace dfchaos::cli {
@@ -71,6 +73,11 @@ CLI::App* add_certify(CLI::App& app, CertifyOptions& o) {
   c->add_option("--period", o.period, "periodic: minimal period m, 1..64");
   c->add_option("--segment", o.segment, "discontinuities: L0 (default) or L2");
   c->add_option("--window", o.window, "superstable: certify the window LO:HI (floating estimate of b) and its edges");
+  c->add_option("--max-seconds", o.max_seconds, "time budget: give up (exit 1, one line) after S seconds, 0 < S <= 1e6 [default 60]")->type_name("S");
+  c->add_option("--max-memory", o.max_memory, "memory budget: give up (exit 1, one line) beyond G GiB of address space, 0.25 <= G <= 1e4 [default 2]")
+      ->type_name("G");
+  c->footer("A proof whose cost is not bounded by its input (a tiny b/a needs many branches of T1) gives up within the\n"
+            "budget: one line on stderr naming the budget that ran out, nothing on stdout, exit status 1.");
   return c;
 }
 
@@ -138,10 +145,15 @@ CertifyResult certify(const CertifyOptions& o) {
 int run_certify(const CertifyOptions& o) {
   CertifyResult r;
   try {
+    kit::apply_process_budget("dfchaos", kit::parse_budget(o.max_seconds, o.max_memory));
+    on_allocation_failure(kit::exit_for_memory_budget);
     r = certify(o);
   } catch (const InvalidParameter& e) {
-    std::fprintf(stderr, "dfchaos: error: %s\n", e.what());
+    std::fprintf(stderr, "dfchaos: error: %s\n", one_line(e.what()).c_str());
     return 2;
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr, "dfchaos: gave up: %s\n", kit::memory_budget_line().c_str());
+    return 1;
   }
   const std::string text = r.json + "\n";
   std::fwrite(text.data(), 1, text.size(), stdout);

@@ -31,6 +31,8 @@ struct CertifyOptions {
   int period = 0;            ///< periodic: the minimal period m
   std::string segment = "L0";  ///< discontinuities: L0 = [101pi/100, 3pi/2] or L2 = [101pi/100, 51pi/50]
   std::string window;        ///< superstable: a window LO:HI in b (floating estimate) to certify with its edges
+  std::string max_seconds = "60";  ///< the time budget of the process (kit/budget.hpp)
+  std::string max_memory = "2";    ///< the memory budget of the process in GiB (kit/budget.hpp)
 };
 
 /// Registers the `certify` subcommand on `app`, bound to `o`; returns it.
@@ -45,7 +47,8 @@ struct CertifyResult {
 /// Carries out a certify request. @throws InvalidParameter (one line naming the option) for bad input.
 CertifyResult certify(const CertifyOptions& o);
 
-/// Runs `certify`: JSON on stdout; returns the exit status (0 proved, 1 not proved, 2 bad input).
+/// Runs `certify` within its time and memory budget (--max-seconds, --max-memory; kit/budget.hpp):
+/// JSON on stdout; returns the exit status (0 proved, 1 not proved or a budget ran out, 2 bad input).
 int run_certify(const CertifyOptions& o);
 
 }  // namespace dfchaos::cli

@@ -1,6 +1,7 @@
 #include <cmath>
 
 #include "cli.hpp"
+#include "dfchaos/errors.hpp"
 
 namespace dfchaos::cli {
 
@@ -29,6 +30,13 @@ Command add_info(CLI::App& app) {
             w.row({"vartheta0", num(vartheta0())});
             w.row({"a*sin(vartheta0)", num(p.a() * sin_vartheta0())});
             w.row({"assumptions", p.assumptions().describe()});
+            std::string map = "defined";
+            try {
+              p.require_return_map();
+            } catch (const InvalidParameter& e) {
+              map = std::string("not computed: ") + e.what();  // e.g. b/a below the accuracy floor
+            }
+            w.row({"return_map", map});
             w.flush();
             return 0;
           }};

@@ -44,7 +44,9 @@ Command add_map(CLI::App& app) {
       "     1e-11 from a discontinuity of T1; at a discontinuity either one-sided value may be returned.\n"
       "  T1, elapsed: within 1e-11 plus the rounding of the printed double (relative 2.2e-16); near a\n"
       "     discontinuity of T1 as T.\n"
-      "  scenario: exact except where T is discontinuous.  penetration: to 1e-7 (against ODE integration).");
+      "  scenario: exact except where T is discontinuous.  penetration: to 1e-7 (against ODE integration).\n"
+      "Rows are streamed as computed: a phase at which the computation gives up (exit 1, one line on stderr) ends\n"
+      "the output after the rows of the phases before it.");
   return {cmd, [o] {
             const Parameters p = o->m.model();
             p.require_return_map();

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "cli.hpp"
+#include "dfchaos/limits.hpp"
 #include "dfchaos/errors.hpp"
 #include "dfchaos/return_map.hpp"
 
@@ -29,6 +30,8 @@ Command add_orbit(CLI::App& app) {
       "  time         the time at which theta_n starts (theta0 at n = 0)\n"
       "  y            the delimiter position at that time (0 at n = 0)\n"
       "Memory does not grow with the number of steps; progress goes to stderr when it is a terminal.\n"
+      "Rows are streamed as computed: a step at which the computation gives up (exit 1, one line on stderr) ends\n"
+      "the output after the rows of the steps before it.\n"
       "Accuracy (docs/accuracy.md): needs b/a >= " + format_double(kMinMapRatio) + ". Each step is one evaluation of T with the\n"
       "accuracy stated by 'dfchaos map --help'; along an orbit these errors are amplified by |T'| (large for small b/a),\n"
       "so a long orbit is a faithful pseudo-orbit, not the exact orbit of theta0. time and y sum elapsed and penetration\n"
@@ -40,7 +43,7 @@ Command add_orbit(CLI::App& app) {
             const double theta0 = number("theta0", o->theta0);
             if (!(theta0 >= t2 && theta0 < t3))
               throw InvalidParameter("theta0", "t2 <= theta0 < t3 = [" + num(t2) + ", " + num(t3) + ")", theta0);
-            const long long steps = count("steps", o->steps, 1, 100'000'000);
+            const long long steps = count("steps", o->steps, 1, kMaxOrbitSteps);
             const bool progress = ::isatty(2) && steps >= 100000;
             const auto start = std::chrono::steady_clock::now();
             Writer w;

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "cli.hpp"
+#include "dfchaos/limits.hpp"
 #include "dfchaos/errors.hpp"
 #include "dfchaos/simulator.hpp"
 
@@ -130,7 +131,7 @@ Command add_simulate(CLI::App& app) {
               so.sample_dt = number("sample", o->sample);
               if (!(so.sample_dt > 0)) throw InvalidParameter("sample", "sample > 0", so.sample_dt);
             }
-            so.max_events = count("max-events", o->max_events, 1, 100'000'000);
+            so.max_events = count("max-events", o->max_events, 1, kMaxSimulationEvents);
             const double x0 = number("x0", o->x0), y0 = number("y0", o->y0), v0 = number("v0", o->v0), t0 = number("t0", o->t0),
                          t_end = number("t-end", o->t_end);
             // Nothing is written before the library has checked the input (bad input: no output).

@@ -91,7 +91,13 @@ double t2_arc_by_descent(const Parameters& p, double lo, double hi, const Contin
 }
 
 /// The cuts lo < z_1 < ... < hi: the symmetric tangencies (next_hit.hpp) strictly inside (lo, hi).
-std::vector<double> branch_cuts(const Parameters& p, double lo, double hi) {
+/// @throws GaveUp when there are more than `max_branches` branches (before finding any cut).
+std::vector<double> branch_cuts(const Parameters& p, double lo, double hi, long long max_branches) {
+  const long long branches = symmetric_tangency_count(p, lo, hi) + 1;
+  if (branches > max_branches)
+    throw GaveUp("work budget: [" + format_double(lo) + ", " + format_double(hi) + "] holds " + std::to_string(branches) +
+                 " branches of T1 at b/a = " + format_double(p.b() / p.a()) + ", more than the covering search's max_branches = " +
+                 std::to_string(max_branches));
   std::vector<double> cuts{lo};
   for (const auto& z : symmetric_tangencies(p, lo, hi))
     if (z.z > lo && z.z < hi) cuts.push_back(z.z);
@@ -104,7 +110,7 @@ std::vector<CoveringSegment> dense_segments(const Parameters& p, double lo, doub
   const double t2 = *p.t2();
   // Scan each continuity branch of T1 separately: their widths range over orders of magnitude
   // (about 2 pi b / (a |sin z|)), and the breakpoints are known in closed form (next_hit.hpp).
-  const std::vector<double> cuts = branch_cuts(p, lo, hi);
+  const std::vector<double> cuts = branch_cuts(p, lo, hi, search.max_branches);
 
   std::vector<CoveringSegment> out;
   ContinuityLabel run_label;
@@ -218,7 +224,7 @@ std::optional<BranchSample> seek(const Parameters& p, BranchSample below, Branch
 std::optional<std::vector<CoveringSegment>> branchwise_segments(const Parameters& p, double lo, double hi, double top,
                                                                 const CoveringSearch& search) {
   const double t2 = *p.t2(), t3 = *p.t3();
-  const std::vector<double> cuts = branch_cuts(p, lo, hi);
+  const std::vector<double> cuts = branch_cuts(p, lo, hi, search.max_branches);
   std::vector<CoveringSegment> out;
   long long previous_branch = 0;
   for (std::size_t c = 0; c + 1 < cuts.size(); ++c) {
@@ -285,11 +291,13 @@ std::vector<CoveringSegment> covering_segments(const Parameters& p, double lo, d
   if (!(lo >= t2 && lo < hi && hi < t3)) throw InvalidParameter("lo, hi", "t2 <= lo < hi < t3");
   if (search.scan < 2) throw InvalidParameter("scan", "scan >= 2", search.scan);
   if (search.uniform < 0) throw InvalidParameter("uniform", "uniform >= 0", search.uniform);
+  if (search.max_branches < 1) throw InvalidParameter("max_branches", "max_branches >= 1", static_cast<double>(search.max_branches));
   if (search.method == CoveringMethod::Branchwise) {
     if (auto segs = branchwise_segments(p, lo, hi, top, search)) return *std::move(segs);
     if (stats != nullptr) ++stats->dense_fallbacks;
     CoveringSearch dense;  // the reference search, with the caller's limits
     dense.max_segments = search.max_segments;
+    dense.max_branches = search.max_branches;
     return dense_segments(p, lo, hi, top, dense);
   }
   return dense_segments(p, lo, hi, top, search);

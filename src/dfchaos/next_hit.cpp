@@ -147,24 +147,41 @@ std::vector<GrazingPoint> grazing_points(const Parameters& p, double lo, double 
   return out;
 }
 
-std::vector<SymmetricTangency> symmetric_tangencies(const Parameters& p, double lo, double hi) {
+namespace {
+/// The k with (2k + 1) pi in h([lo, hi]), h(z) = 2z - (a/b) cos z, after hi is clipped to 3 pi/2:
+/// k_lo..k_hi (empty when k_lo > k_hi). One formula for symmetric_tangencies and its count.
+struct TangencyRange {
+  double lo, hi, r;
+  long long k_lo = 0, k_hi = -1;
+  double h(double th) const { return 2 * th - r * std::cos(th); }
+};
+TangencyRange tangency_range(const Parameters& p, double lo, double hi) {
   require_theta(p, lo, "lo");
   require_theta(p, hi, "hi");
-  hi = std::min(hi, 1.5 * pi);  // s = -(a/b) cos z > 0 needs cos z < 0
-  std::vector<SymmetricTangency> out;
-  if (!(lo < hi)) return out;
-  const double r = p.a() / p.b();
-  auto h = [&](double th) { return 2 * th - r * std::cos(th); };
+  TangencyRange t{lo, std::min(hi, 1.5 * pi), p.a() / p.b()};  // s = -(a/b) cos z > 0 needs cos z < 0
+  if (!(t.lo < t.hi)) return t;
   // h decreases on (t2, t3): odd multiples of pi between h(hi) and h(lo).
-  const long long k_lo = static_cast<long long>(std::ceil((h(hi) / pi - 1) / 2));
-  const long long k_hi = static_cast<long long>(std::floor((h(lo) / pi - 1) / 2));
-  for (long long k = k_hi; k >= k_lo; --k) {
+  t.k_lo = static_cast<long long>(std::ceil((t.h(t.hi) / pi - 1) / 2));
+  t.k_hi = static_cast<long long>(std::floor((t.h(t.lo) / pi - 1) / 2));
+  return t;
+}
+}  // namespace
+
+long long symmetric_tangency_count(const Parameters& p, double lo, double hi) {
+  const TangencyRange t = tangency_range(p, lo, hi);
+  return std::max(0LL, t.k_hi - t.k_lo + 1);
+}
+
+std::vector<SymmetricTangency> symmetric_tangencies(const Parameters& p, double lo, double hi) {
+  const TangencyRange t = tangency_range(p, lo, hi);
+  std::vector<SymmetricTangency> out;
+  for (long long k = t.k_hi; k >= t.k_lo; --k) {
     const double target = (2 * k + 1) * pi;
     // h(lo) >= target > h(hi)
-    const auto [a, b] = bisect([&](double m) { return h(m) >= target; }, lo, hi, {.max_iterations = 200, .rel_tol = 2 * DBL_EPSILON});
+    const auto [a, b] = bisect([&](double m) { return t.h(m) >= target; }, t.lo, t.hi, {.max_iterations = 200, .rel_tol = 2 * DBL_EPSILON});
     const double z = 0.5 * (a + b);
-    if (z < lo || z > hi) continue;
-    out.push_back(SymmetricTangency{z, -r * std::cos(z), k});
+    if (z < t.lo || z > t.hi) continue;
+    out.push_back(SymmetricTangency{z, -t.r * std::cos(z), k});
   }
   return out;
 }

@@ -91,5 +91,9 @@ struct SymmetricTangency {
   long long k = 0;    ///< \f$h(z) = (2k+1)\pi\f$
 };
 std::vector<SymmetricTangency> symmetric_tangencies(const Parameters& p, double lo, double hi);
+/// The number of odd multiples of \f$\pi\f$ in \f$h([lo, \min(hi, 3\pi/2)])\f$, in closed form: the
+/// size of symmetric_tangencies(p, lo, hi) (or a little more), known before any of them is found.
+/// It grows like \f$(a/b)/(2\pi)\f$ on \f$[t_2, 3\pi/2]\f$.
+long long symmetric_tangency_count(const Parameters& p, double lo, double hi);
 
 }  // namespace dfchaos

@@ -1,6 +1,7 @@
 #include "dfchaos/superstable.hpp"
 
 #include <algorithm>
+#include <new>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -152,6 +153,8 @@ double stop_arc_radius(const Parameters& p, double theta, double image) {
       try {
         const MapStep s = return_map_step(p, x);
         if (!map_derivative(p, s).flat || s.T != image) return radius;
+      } catch (const std::bad_alloc&) {
+        throw;  // memory ran out: not an answer of the search
       } catch (const std::exception&) {
         return radius;
       }
@@ -172,6 +175,8 @@ bool same_branch_around(const Parameters& p, double theta, double r) {
       const LabelledStep there = continuity_label(p, x);
       if (!(there.label == at.label) || there.step.scenario != at.step.scenario) return false;
     }
+  } catch (const std::bad_alloc&) {
+    throw;  // memory ran out: not an answer of the search
   } catch (const std::exception&) {
     return false;
   }

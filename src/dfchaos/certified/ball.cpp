@@ -1,10 +1,33 @@
 #include "dfchaos/certified/ball.hpp"
 
+#include <flint/flint.h>
+#include <gmp.h>
+
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <stdexcept>
 
 namespace dfchaos::certified {
+
+namespace {
+void (*g_on_failure)() = nullptr;
+void* checked(void* p) {
+  if (p == nullptr && g_on_failure != nullptr) g_on_failure();
+  return p;
+}
+void* alloc_or_fail(std::size_t n) { return checked(std::malloc(n)); }
+void* calloc_or_fail(std::size_t n, std::size_t size) { return checked(std::calloc(n, size)); }
+void* realloc_or_fail(void* p, std::size_t n) { return checked(std::realloc(p, n)); }
+void* gmp_realloc_or_fail(void* p, std::size_t, std::size_t n) { return checked(std::realloc(p, n)); }
+void gmp_free(void* p, std::size_t) { std::free(p); }
+}  // namespace
+
+void on_allocation_failure(void (*on_failure)()) {
+  g_on_failure = on_failure;
+  __flint_set_memory_functions(alloc_or_fail, calloc_or_fail, realloc_or_fail, std::free);
+  mp_set_memory_functions(alloc_or_fail, gmp_realloc_or_fail, gmp_free);
+}
 
 namespace {
 thread_local long g_prec = 128;

@@ -18,6 +18,12 @@
 
 namespace dfchaos::certified {
 
+/// Makes an allocation failure inside Arb, FLINT or GMP (which cannot throw: by default they
+/// print a message and abort) call `on_failure` instead, which must not return (e.g. print one
+/// line and exit). Replaces their memory functions for the whole process; call before any ball
+/// exists. The standard allocator is used otherwise.
+void on_allocation_failure(void (*on_failure)());
+
 /// Working precision in bits of the Ball arithmetic of this thread (default 128).
 long precision();
 

@@ -1,7 +1,9 @@
 #include "dfchaos/certified/covering.hpp"
 
 #include <chrono>
+#include <new>
 #include <cmath>
+#include <limits>
 #include <exception>
 
 #include "dfchaos/certified/oracle.hpp"
@@ -181,6 +183,8 @@ std::vector<Candidate> track_candidates(double a, double b, double q, const std:
       if (n.lo() < *p.t2() || n.hi() > kThreeHalvesPi) continue;
       out.push_back(n);
     }
+  } catch (const std::bad_alloc&) {
+    throw;  // memory ran out: not an answer of the search
   } catch (const std::exception&) {
     return {};
   }
@@ -198,6 +202,9 @@ std::vector<Candidate> covering_candidates(double a, double b, double q, const C
     if (!(lo < hi)) return out;
     CoveringSearch search;
     search.max_segments = opt.candidates;
+    // No branch budget here: a proof is bounded by its caller's time and memory budget instead
+    // (`dfchaos certify`: kit/budget.hpp), and at b/a = 1e-8 it still fits in the default one.
+    search.max_branches = std::numeric_limits<long long>::max();
     const auto segs = covering_segments(p, lo, hi, kThreeHalvesPi, search);
     for (const auto& s : segs) {
       Candidate c;
@@ -213,6 +220,8 @@ std::vector<Candidate> covering_candidates(double a, double b, double q, const C
       if (!out.empty() && !(out.back().hi() < c.lo())) continue;  // keep them disjoint
       out.push_back(c);
     }
+  } catch (const std::bad_alloc&) {
+    throw;  // memory ran out: not an answer of the search
   } catch (const std::exception&) {
     // The floating layer refused (parameters outside its domain, or it gave up): no candidates.
   }

@@ -1,6 +1,7 @@
 #include "dfchaos/certified/superstable.hpp"
 
 #include <chrono>
+#include <new>
 #include <cmath>
 #include <vector>
 
@@ -63,6 +64,8 @@ SuperstableProof prove_superstable(double a, double b, double q, double eps_try)
   if (std::isnan(eps)) {
     try {
       eps = 0.9 * dfchaos::superstable_check(dfchaos::Parameters(a, b, q), 20000).epsilon;
+    } catch (const std::bad_alloc&) {
+      throw;  // memory ran out: not an answer of the search
     } catch (const std::exception&) {
       eps = 0;
     }
