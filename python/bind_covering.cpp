@@ -54,7 +54,7 @@ int count_in(const char* name, int v, long long lo, long long hi) {
 /// "dense" or "branchwise" (CoveringMethod); the re-check defaults to each method's own. Every
 /// option is checked, also those the chosen method does not use.
 CoveringSearch search_options(const std::string& method, int scan, int uniform, std::optional<int> recheck, int refine, bool descend,
-                              int max_segments) {
+                              int max_segments, long long max_branches) {
   CoveringSearch s;
   if (method == "branchwise") s = CoveringSearch::branchwise();
   else if (method != "dense") throw InvalidParameter("method", "'dense' or 'branchwise' (got '" + method + "')");
@@ -68,12 +68,14 @@ CoveringSearch search_options(const std::string& method, int scan, int uniform, 
   s.descend = descend;
   if (max_segments < 0) throw InvalidParameter("max_segments", "max_segments >= 0 (0: all)", max_segments);
   s.max_segments = max_segments;
+  if (max_branches < 1) throw InvalidParameter("max_branches", "max_branches >= 1", static_cast<double>(max_branches));
+  s.max_branches = max_branches;
   return s;
 }
 
 py::list covering_segments_py(const Parameters& p, std::optional<double> lo, std::optional<double> hi, std::optional<double> top,
                               const std::string& method, int scan, int uniform, std::optional<int> recheck, int refine, bool descend,
-                              int max_segments) {
+                              int max_segments, long long max_branches) {
   p.require_return_map();
   const double l = lo ? finite("lo", *lo) : p.t2_required();
   const double h = hi ? finite("hi", *hi) : 1.5 * pi;
@@ -81,7 +83,7 @@ py::list covering_segments_py(const Parameters& p, std::optional<double> lo, std
   const double t2 = p.t2_required(), t3 = p.t3_required();
   if (!(t > t2 && t < t3))  // T lies in [t2, t3): any other top gives no segment, or empty ones
     throw InvalidParameter("top", "t2 < top < t3 = (" + format_double(t2) + ", " + format_double(t3) + ")", t);
-  const CoveringSearch s = search_options(method, scan, uniform, recheck, refine, descend, max_segments);
+  const CoveringSearch s = search_options(method, scan, uniform, recheck, refine, descend, max_segments, max_branches);
   std::vector<CoveringSegment> segs;
   {
     py::gil_scoped_release nogil;
@@ -93,8 +95,8 @@ py::list covering_segments_py(const Parameters& p, std::optional<double> lo, std
 }
 
 py::dict lemma4_covering_py(const Parameters& p, const std::string& method, int scan, int uniform, std::optional<int> recheck, int refine,
-                            bool descend, int max_segments) {
-  const CoveringSearch s = search_options(method, scan, uniform, recheck, refine, descend, max_segments);
+                            bool descend, int max_segments, long long max_branches) {
+  const CoveringSearch s = search_options(method, scan, uniform, recheck, refine, descend, max_segments, max_branches);
   Lemma4Covering r;
   {
     py::gil_scoped_release nogil;
@@ -119,8 +121,9 @@ void bind_covering(py::module_& m) {
         py::arg("top") = py::none(), py::kw_only(), py::arg("method") = "dense", py::arg("scan") = def.scan,
         py::arg("uniform") = def.uniform, py::arg("recheck") = py::none(), py::arg("refine") = def.refine,
         py::arg("descend").noconvert() = def.descend, py::arg("max_segments") = def.max_segments,
+        py::arg("max_branches") = def.max_branches,
         R"doc(covering_segments(p, lo=t2, hi=3 pi/2, top=3 pi/2, *, method="dense", scan=48, uniform=8000, recheck=None,
-                  refine=32, descend=True, max_segments=0) -> list of dict
+                  refine=32, descend=True, max_segments=0, max_branches=1000000) -> list of dict
 
 Disjoint covering segments J inside [lo, hi], ascending (Lemma 4, Eq. 18): closed segments on which
 T is continuous (one continuity label) and which hold a point with T = t2 and a point with
@@ -133,12 +136,15 @@ branchwise). Each dict: lo, hi, theta_at_t2, theta_at_top, T_at_top, label (dict
 t3_passed, scenario_d) and rechecked (sampled on a finer grid, not proved).
 Raises ValueError (dfchaos.InvalidParameter, naming the argument) unless the map is defined,
 t2 <= lo < hi < t3, t2 < top < t3, method is known, 2 <= scan, 0 <= uniform, 4 <= recheck (fewer
-points would not re-check), 1 <= refine (each of them <= max_elements) and max_segments >= 0;
-TypeError unless descend is a bool.)doc");
+points would not re-check), 1 <= refine (each of them <= max_elements), max_segments >= 0 and
+max_branches >= 1; TypeError unless descend is a bool. max_branches is the work budget: with more
+continuity branches of T1 in [lo, hi] (about 0.16 a/b) the search raises dfchaos.GaveUp before any
+work (docs/reliability.md).)doc");
   m.def("lemma4_covering", &lemma4_covering_py, py::arg("p"), py::kw_only(), py::arg("method") = "dense", py::arg("scan") = def.scan,
         py::arg("uniform") = def.uniform, py::arg("recheck") = py::none(), py::arg("refine") = def.refine,
-        py::arg("descend").noconvert() = def.descend, py::arg("max_segments") = def.max_segments, R"doc(lemma4_covering(p, *, method="dense", scan=48, uniform=8000, recheck=None, refine=32, descend=True,
-                max_segments=0) -> dict
+        py::arg("descend").noconvert() = def.descend, py::arg("max_segments") = def.max_segments,
+        py::arg("max_branches") = def.max_branches, R"doc(lemma4_covering(p, *, method="dense", scan=48, uniform=8000, recheck=None, refine=32, descend=True,
+                max_segments=0, max_branches=1000000) -> dict
 
 Lemma 4's conclusion at one parameter set: two disjoint closed segments J0, J1 of [t2, 3 pi/2], each
 with T continuous and T(J) containing [t2, 3 pi/2]. Keys: holds, J0, J1 (dicts as from

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Reliability of the tool's files, signals and budgets (issue 28), CTest `reliability` (label failure).
 
-    reliability.py DFCHAOS [--sanitized]
+    reliability.py DFCHAOS [--sanitized] [--experiment EXPERIMENT]
 
 Part 1 runs each numbered case of issue 28 that concerns the tool (1-6, 8, 11) as a regression check.
 Part 2 is the harness over files and processes, with the counts it printed:
@@ -14,8 +14,11 @@ Part 2 is the harness over files and processes, with the counts it printed:
   - a full disk (a small tmpfs when this process may mount one, else /dev/full for stdout);
   - concurrent writers of one --out file and of one --resume file.
 Every check prints ok/FAIL; exit 1 if any failed. With --sanitized (AddressSanitizer build) the memory
-budget is not enforced by the tool, so its check is skipped (said so).
+budget is not enforced by the tool, so its check is skipped (said so). --experiment names one built
+experiment executable, whose stdout must be checked as the tool's is.
 """
+import hashlib
+import resource
 import os
 import random
 import shutil
@@ -27,6 +30,10 @@ import time
 
 cli = os.path.abspath(sys.argv[1])
 sanitized = "--sanitized" in sys.argv[2:]
+experiment = os.path.abspath(sys.argv[sys.argv.index("--experiment") + 1]) if "--experiment" in sys.argv else None
+if experiment and not os.path.exists(experiment):
+    print(f"skip: the experiment's stdout check ({experiment} not built)")
+    experiment = None
 tmp = tempfile.mkdtemp(prefix="dfchaos-reliability-")
 os.chdir(tmp)
 fails = 0
@@ -71,6 +78,17 @@ def leftovers(prefix):
     return [n for n in os.listdir(".") if n.startswith(prefix) and ".tmp." in n]
 
 
+def resealed(data):
+    """The file with its seal recomputed over its (changed) body: what a forger, not damage, makes."""
+    body = data[: data.rindex(b"# end: ")]
+    rows = int(data[data.rindex(b"# end: ") + 7:].split(b" ")[0])
+    return body + b"# end: %d rows, sha256 %s (of every byte above this line)\n" % (rows, hashlib.sha256(body).hexdigest().encode())
+
+
+def limited(resource_id, limit):
+    return lambda: resource.setrlimit(resource_id, (limit, limit))
+
+
 def changed_byte(b):
     return (b + 1) % 256 if b != 0x0A else 0x0B  # any other byte; a newline becomes a vertical tab
 
@@ -94,7 +112,7 @@ for name, data in [("truncated by two lines", b"\n".join(full.split(b"\n")[:-3])
                    ("header and garbage rows", header + b"0\tx\ty\n1\tz\n")]:
     write("cut.tsv", data)
     r = run("sweep", *S, "--resume", "cut.tsv")
-    check(one_line_error(r, 2, "resume") and read("cut.tsv") == data, f"28.1 resume of a file {name}: refused, exit 2")
+    check(one_line_error(r, 2, "no seal") and read("cut.tsv") == data, f"28.1 resume of a file {name}: refused (no seal), exit 2")
 # 2. One changed value in a shard; a checkpoint chunk with ok -> XX.
 for what, old, new in [("covering 1 -> 7", b"\tok\t1\t", b"\tok\t7\t"), ("a q_over_a digit", b"\t0.8000", b"\t0.8001"),
                        ("a status word", b"\tok\t", b"\tXX\t"), ("a NUL byte", b"\tok\t", b"\to\0\t")]:
@@ -102,7 +120,14 @@ for what, old, new in [("covering 1 -> 7", b"\tok\t1\t", b"\tok\t7\t"), ("a q_ov
     write("bad.tsv", shards[i].replace(old, new, 1))
     files = [f"s{k}.tsv" if k != i else "bad.tsv" for k in range(3)]
     r = run("sweep-merge", *files)
-    check(one_line_error(r, 2, "sweep-merge") and r.stdout == b"", f"28.2 sweep-merge of a shard with {what}: refused")
+    check(one_line_error(r, 2, "damaged") and r.stdout == b"", f"28.2 sweep-merge of a shard with {what}: refused (damaged)")
+    # The same change with the seal recomputed (a forgery, not damage): the field checks refuse it.
+    write("bad.tsv", resealed(shards[i].replace(old, new, 1)))
+    r = run("sweep-merge", *files)
+    check(one_line_error(r, 2, "not a valid row") and r.stdout == b"", f"28.2 {what} with the seal recomputed: sweep-merge refuses the row")
+write("forged.tsv", resealed(full.replace(b"\tok\t1\t", b"\tok\t7\t", 1)))
+r = run("sweep", *S, "--resume", "forged.tsv")
+check(one_line_error(r, 2, "not a valid row"), "28.2 a finished file with covering 7 and its seal recomputed: --resume refuses the row")
 shutil.rmtree("ck.tsv.chunks", ignore_errors=True)
 r = run("sweep", *S, "--resume", "ck.tsv", "--chunk", "2", "--max-chunks", "1")
 chunk = os.path.join("ck.tsv.chunks", "chunk-000000000000-000000000002.tsv")
@@ -111,9 +136,35 @@ good_chunk = read(chunk)
 write(chunk, good_chunk.replace(b"\tok\t", b"\tXX\t", 1))
 r = run("sweep", *S, "--resume", "ck.tsv")
 check(one_line_error(r, 2, "damaged") and not os.path.exists("ck.tsv"), "28.2 a chunk with ok -> XX: resume refuses it")
+write(chunk, resealed(good_chunk.replace(b"\tok\t", b"\tXX\t", 1)))
+r = run("sweep", *S, "--resume", "ck.tsv")
+check(one_line_error(r, 2, "not a valid row") and not os.path.exists("ck.tsv"), "28.2 a chunk with ok -> XX and its seal recomputed: refused")
+# A chunk of another run (another q-range) put among this run's chunks.
+S_other = ["--q-range", "0.5:0.6:2"] + S[2:]
+run("sweep", *S_other, "--resume", "other.tsv", "--chunk", "2", "--max-chunks", "1")
+shutil.copy(os.path.join("other.tsv.chunks", "chunk-000000000000-000000000002.tsv"), chunk)
+r = run("sweep", *S, "--resume", "ck.tsv")
+check(one_line_error(r, 2, "another run") and not os.path.exists("ck.tsv"), "28.2 a chunk of another run: refused")
 write(chunk, good_chunk)
 r = run("sweep", *S, "--resume", "ck.tsv")
 check(r.returncode == 0 and read("ck.tsv") == full, "the chunk restored: resume finishes byte-identical")
+# FIFOs as inputs: refused at once, never waited on.
+os.mkfifo("in.fifo")
+for what, args in [("--resume of a FIFO", ["sweep", *S, "--resume", "in.fifo"]), ("sweep-merge of a FIFO", ["sweep-merge", "s0.tsv", "in.fifo", "s2.tsv"])]:
+    try:
+        r = run(*args, timeout=20)
+        check(one_line_error(r, 2, "not a regular file"), f"28.3 {what}: refused at once")
+    except subprocess.TimeoutExpired:
+        check(False, f"28.3 {what}: hangs")
+shutil.rmtree("ck.tsv.chunks", ignore_errors=True)
+os.remove("ck.tsv")
+run("sweep", *S, "--resume", "ck.tsv", "--chunk", "2", "--max-chunks", "1")
+os.mkfifo(os.path.join("ck.tsv.chunks", "chunk-000000000002-000000000004.tsv"))
+try:
+    r = run("sweep", *S, "--resume", "ck.tsv", timeout=20)
+    check(one_line_error(r, 2, "not a regular file"), "28.3 a FIFO among the chunks: refused at once")
+except subprocess.TimeoutExpired:
+    check(False, "28.3 a FIFO among the chunks: hangs")
 # 3. --out: a device, a FIFO and a directory are refused and left as they were; a symlink is written through.
 os.mkfifo("fifo")
 r = run("sweep", *S, "--out", "fifo")
@@ -134,6 +185,11 @@ r = run("sweep", *S, "--out", "link.tsv")
 check(r.returncode == 0 and os.path.islink("link.tsv") and read("target.tsv") == full, "28.3 --out a symlink: written through, the link kept")
 r = run("sweep-merge", "s0.tsv", "s1.tsv", "s2.tsv", "--out", "link.tsv")
 check(r.returncode == 0 and os.path.islink("link.tsv") and read("target.tsv") == full, "28.3 sweep-merge --out a symlink: written through")
+# A file-size limit (ulimit -f): a failed write, not a death by SIGXFSZ that leaves the temporary.
+r = run("sweep", "--q-range", "0.8:0.9:10", "--b-range", "1e-3:1e-2:10:log", "--observables", "covering", "--out", "fsize.tsv",
+        preexec_fn=limited(resource.RLIMIT_FSIZE, 1024))
+check(r.returncode == 1 and r.stderr.count(b"\n") == 1 and not os.path.exists("fsize.tsv") and not leftovers("fsize.tsv"),
+      "28.4 a file-size limit under --out: exit 1, one line, no temporary left")
 # 5. A write failure is never a success: /dev/full and a closed stdout.
 with open("/dev/full", "wb") as devfull:
     for args in [["certify", "vartheta0"], ["certify", "covering", "--b", "0.001", "--q", "0.85"], ["--help"], ["--version"],
@@ -141,6 +197,10 @@ with open("/dev/full", "wb") as devfull:
         r = subprocess.run([cli, *args], stdout=devfull, stderr=subprocess.PIPE, timeout=120)
         check(r.returncode == 1 and r.stderr.decode().count("\n") == 1 and b"cannot write" in r.stderr,
               f"28.5 dfchaos {' '.join(args[:2])} > /dev/full: exit 1, one line")
+if experiment:
+    with open("/dev/full", "wb") as devfull:
+        r = subprocess.run([experiment, "--describe"], stdout=devfull, stderr=subprocess.PIPE, timeout=60)
+    check(r.returncode == 1 and b"cannot write" in r.stderr, f"28.5 {os.path.basename(experiment)} --describe > /dev/full: exit 1")
 for args in [["certify", "vartheta0"], ["--version"]]:
     r = subprocess.run([cli, *args], stderr=subprocess.PIPE, timeout=60, preexec_fn=lambda: os.close(1))
     check(r.returncode == 1 and b"cannot write" in r.stderr, f"28.5 dfchaos {args[0]} with stdout closed: exit 1")
@@ -156,6 +216,13 @@ else:
     r = run("certify", "covering", "--a", "1", "--b", "1e-9", "--q", "0.85", "--max-memory", "0.3")
     check(one_line_error(r, 1, "memory budget of 0.3 GiB") and r.stdout == b"",
           "28.6 certify covering at b/a = 1e-9 with --max-memory 0.3: gave up, exit 1, one line")
+    r = run("certify", "covering", "--a", "1", "--b", "1e-9", "--q", "0.85", preexec_fn=limited(resource.RLIMIT_AS, 400 << 20))
+    check(one_line_error(r, 1, "set outside dfchaos") and r.stdout == b"", "28.6 under a lower ulimit -v: the give-up line names that limit")
+    # Memory running out in a sweep cell ends the run (exit 1), never a sealed 'error' cell.
+    r = run("sweep", "--q-range", "0.85:0.85:1", "--b-range", "1e-8:1e-8:1", "--observables", "covering", "--max-branches", "100000000",
+            "--out", "oom.tsv", preexec_fn=limited(resource.RLIMIT_AS, 300 << 20))
+    check(one_line_error(r, 1, "out of memory") and not os.path.exists("oom.tsv") and not leftovers("oom.tsv"),
+          "28.6 memory running out in a sweep cell: exit 1, one line, no file (not an error cell)")
 for opt, val in [("--max-seconds", "0"), ("--max-seconds", "nan"), ("--max-memory", "0.1"), ("--max-memory", "x")]:
     r = run("certify", "vartheta0", opt, val)
     check(one_line_error(r, 2, opt[2:]), f"bad budget {opt} {val}: exit 2")

@@ -261,7 +261,7 @@ TEST(Seal, ParsesExactlyWhatItWrites) {
   const std::string text = "1\tx\n" + seal_line(1, kit::sha256_hex("1\tx\n"));
   EXPECT_EQ(check_text_seal("resume", "chunk", text, seal), "1\tx\n");
   EXPECT_NE(rejection([&] { check_text_seal("resume", "chunk", "1\ty\n" + text.substr(4), seal); }).find("damaged"), std::string::npos);
-  EXPECT_NE(rejection([&] { check_text_seal("resume", "chunk", "1\tx\n", seal); }).find("incomplete"), std::string::npos);
+  EXPECT_NE(rejection([&] { check_text_seal("resume", "chunk", "1\tx\n", seal); }).find("no seal"), std::string::npos);
 }
 
 TEST(Header, RejectsATruncatedOrForeignHeader) {
@@ -418,7 +418,7 @@ TEST(Resume, RejectsAnotherSpecADamagedChunkAndASecondRun) {
   ASSERT_TRUE(fs::exists(chunk));
   const std::string rows = slurp(chunk);
   std::ofstream(chunk, std::ios::trunc) << rows.substr(0, rows.size() - 3);  // the seal cut short
-  EXPECT_NE(rejection([&] { sweep::Run r(o); }).find("incomplete"), std::string::npos);
+  EXPECT_NE(rejection([&] { sweep::Run r(o); }).find("no seal"), std::string::npos);
   std::string changed = rows;
   changed[rows.find("\tok\t")] = ' ';  // one byte of a row: the digest no longer matches
   std::ofstream(chunk, std::ios::trunc) << changed;

@@ -30,19 +30,6 @@ namespace dfchaos::cli {
 
 namespace {
 
-/// Flushes everything written to stdout (C stdio and iostreams); false when it did not reach its
-/// destination (a full disk, a closed pipe or descriptor), with errno set.
-bool stdout_delivered() {
-  errno = 0;
-  std::cout.flush();  // synced with stdio: flushes stdout too
-  const int stream_errno = errno;
-  const bool stream_ok = static_cast<bool>(std::cout);
-  const bool stdio_ok = std::fflush(stdout) == 0 && !std::ferror(stdout);
-  if (!stream_ok && stream_errno != 0) errno = stream_errno;
-  if (errno == 0) errno = EIO;  // the error flag was set by an earlier write
-  return stream_ok && stdio_ok;
-}
-
 int run_command(int argc, char** argv);
 
 /// Set when a failed write was already reported (one line, not two).
@@ -55,8 +42,9 @@ int run(int argc, char** argv) {
   const int status = run_command(argc, argv);
   // Every command's output must reach stdout (also --help and --version): a failed write is an
   // error (exit 1), never a silent success.
-  if (!stdout_delivered() && !g_write_failure_reported) {
-    std::fprintf(stderr, "dfchaos: error: cannot write the output: %s\n", std::strerror(errno ? errno : EIO));
+  const int err = kit::stdout_failure();
+  if (err != 0 && !g_write_failure_reported) {
+    std::fprintf(stderr, "dfchaos: error: cannot write the output: %s\n", std::strerror(err));
     return status == 2 ? 2 : 1;
   }
   return status;
@@ -97,26 +85,26 @@ int run_command(int argc, char** argv) {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
-    std::fprintf(stderr, "dfchaos: error: %s\n", one_line(e.what()).c_str());
+    std::fprintf(stderr, "dfchaos: error: %s\n", kit::one_line(e.what()).c_str());
     return 2;
   }
   try {
     for (const auto& c : commands)
       if (c.app->parsed()) return c.run();
   } catch (const dfchaos::InvalidParameter& e) {
-    std::fprintf(stderr, "dfchaos: error: %s\n", one_line(e.what()).c_str());
+    std::fprintf(stderr, "dfchaos: error: %s\n", kit::one_line(e.what()).c_str());
     return 2;
   } catch (const dfchaos::GaveUp& e) {
     std::fflush(stdout);
-    std::fprintf(stderr, "dfchaos: gave up: %s\n", one_line(e.what()).c_str());
+    std::fprintf(stderr, "dfchaos: gave up: %s\n", kit::one_line(e.what()).c_str());
     return 1;
   } catch (const WriteFailed& e) {
     g_write_failure_reported = true;
-    std::fprintf(stderr, "dfchaos: error: %s\n", one_line(e.what()).c_str());
+    std::fprintf(stderr, "dfchaos: error: %s\n", kit::one_line(e.what()).c_str());
     return 1;
   } catch (const dfchaos::kit::OutputError& e) {  // an unusable output path is bad input; a failed write is not
     g_write_failure_reported = true;
-    std::fprintf(stderr, "dfchaos: error: %s\n", one_line(e.what()).c_str());
+    std::fprintf(stderr, "dfchaos: error: %s\n", kit::one_line(e.what()).c_str());
     return e.bad_path() ? 2 : 1;
   } catch (const std::bad_alloc&) {  // a memory budget (kit/budget.hpp) or the machine's memory ran out
     const std::string budget = kit::memory_budget_line();

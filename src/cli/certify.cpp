@@ -16,6 +16,7 @@
 #include "dfchaos/errors.hpp"
 #include "dfchaos/parameters.hpp"
 #include "kit/budget.hpp"
+#include "kit/output.hpp"
 #include "kit/options.hpp"
 
 namespace dfchaos::cli {
@@ -148,8 +149,9 @@ int run_certify(const CertifyOptions& o) {
     kit::apply_process_budget("dfchaos", kit::parse_budget(o.max_seconds, o.max_memory));
     on_allocation_failure(kit::exit_for_memory_budget);
     r = certify(o);
+    kit::stop_time_budget();
   } catch (const InvalidParameter& e) {
-    std::fprintf(stderr, "dfchaos: error: %s\n", one_line(e.what()).c_str());
+    std::fprintf(stderr, "dfchaos: error: %s\n", kit::one_line(e.what()).c_str());
     return 2;
   } catch (const std::bad_alloc&) {
     std::fprintf(stderr, "dfchaos: gave up: %s\n", kit::memory_budget_line().c_str());

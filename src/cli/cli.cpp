@@ -30,12 +30,6 @@ long long count(const std::string& name, const std::string& text, long long lo, 
 
 std::string num(double x) { return format_double(x); }
 
-std::string one_line(std::string msg) {
-  for (auto& ch : msg)
-    if (ch == '\n' || ch == '\r') ch = ' ';
-  return msg;
-}
-
 Writer::Writer() { buffer_.reserve(1 << 16); }
 Writer::~Writer() {
   try {

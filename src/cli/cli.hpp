@@ -56,9 +56,6 @@ struct WriteFailed : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// The message with every line break made a space: an error is printed on one line.
-std::string one_line(std::string msg);
-
 /// Formats a double as every output does (%.17g).
 std::string num(double x);
 

@@ -96,8 +96,8 @@ std::vector<double> branch_cuts(const Parameters& p, double lo, double hi, long 
   const long long branches = symmetric_tangency_count(p, lo, hi) + 1;
   if (branches > max_branches)
     throw GaveUp("work budget: [" + format_double(lo) + ", " + format_double(hi) + "] holds " + std::to_string(branches) +
-                 " branches of T1 at b/a = " + format_double(p.b() / p.a()) + ", more than the covering search's max_branches = " +
-                 std::to_string(max_branches));
+                 " branches of T1 at b/a = " + format_double(p.b() / p.a()) + ", more than this search's budget of " +
+                 std::to_string(max_branches) + " (max_branches; docs/reliability.md)");
   std::vector<double> cuts{lo};
   for (const auto& z : symmetric_tangencies(p, lo, hi))
     if (z.z > lo && z.z < hi) cuts.push_back(z.z);
@@ -295,9 +295,9 @@ std::vector<CoveringSegment> covering_segments(const Parameters& p, double lo, d
   if (search.method == CoveringMethod::Branchwise) {
     if (auto segs = branchwise_segments(p, lo, hi, top, search)) return *std::move(segs);
     if (stats != nullptr) ++stats->dense_fallbacks;
-    CoveringSearch dense;  // the reference search, with the caller's limits
+    CoveringSearch dense;  // the reference search, with the caller's limits (its work per branch is larger)
     dense.max_segments = search.max_segments;
-    dense.max_branches = search.max_branches;
+    dense.max_branches = std::max(1LL, search.max_branches / kDenseCostFactor);
     return dense_segments(p, lo, hi, top, dense);
   }
   return dense_segments(p, lo, hi, top, search);

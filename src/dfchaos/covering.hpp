@@ -83,9 +83,14 @@ enum class CoveringMethod {
   Branchwise
 };
 
-/// The default CoveringSearch::max_branches: 2e6 branches, reached near b/a = 8e-8, where one
-/// search costs seconds and tens of MB (docs/reliability.md has the measurements).
-inline constexpr long long kDefaultMaxCoveringBranches = 2'000'000;
+/// The default CoveringSearch::max_branches: 1e6 branches, reached near b/a = 1.6e-7. A branchwise
+/// search that must visit every branch costs about 20 us per branch (measured: 10 s and 37 MB at
+/// b/a = 3e-7, q/a = 0.3; docs/reliability.md), so at most about 20 s and 40 MB.
+inline constexpr long long kDefaultMaxCoveringBranches = 1'000'000;
+/// A Dense search evaluates T about this many times as often per branch as a Branchwise one
+/// (CoveringSearch::scan = 48 points against 4): the Dense fallback of a Branchwise search takes
+/// on at most max_branches / this.
+inline constexpr long long kDenseCostFactor = 12;
 
 /// Options of the covering search.
 struct CoveringSearch {
@@ -96,9 +101,11 @@ struct CoveringSearch {
   bool descend = true;          ///< descend T into the end gaps of runs that reach the top without t2
   int max_segments = 0;         ///< stop after this many rechecked segments (0: find all; both methods)
   CoveringMethod method = CoveringMethod::Dense;  ///< how to search (the fields above are for Dense unless noted)
-  /// Most continuity branches of \f$T_1\f$ in [lo, hi] (symmetric_tangency_count + 1) that a search
-  /// takes on: their number grows like \f$(a/b)/(2\pi)\f$ (about 1.6e5 at b/a = 1e-6), and so do the
-  /// time and memory of the search. Beyond it covering_segments gives up (GaveUp) before any work.
+  /// The work budget: most continuity branches of \f$T_1\f$ in [lo, hi] (symmetric_tangency_count
+  /// + 1) that the search takes on (the Dense fallback of a Branchwise search: max_branches /
+  /// kDenseCostFactor). Their number grows like \f$(a/b)/(2\pi)\f$ (about 1.6e5 at b/a = 1e-6), and
+  /// so do the time and memory of the search. Beyond it covering_segments gives up (GaveUp) before
+  /// any work.
   long long max_branches = kDefaultMaxCoveringBranches;
   /// The branchwise search with its re-check on 64 points (about 100 evaluations of T in all).
   static CoveringSearch branchwise() { return {.recheck = 64, .method = CoveringMethod::Branchwise}; }

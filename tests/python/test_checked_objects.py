@@ -128,10 +128,22 @@ def test_refine_is_checked(search, refine):
     ("uniform", -1, "uniform >= 0"),
     ("uniform", 10**8 + 1, "uniform <= 100000000"),
     ("max_segments", -1, "max_segments >= 0 (0: all)"),
+    ("max_branches", 0, "max_branches >= 1"),
 ])
 def test_search_counts_are_checked(search, name, value, condition):
     msg = refusal(lambda: search(model(), **{name: value}), name)
     assert msg == f"{name}: must satisfy {condition} (got {value})"
+
+
+@pytest.mark.parametrize("search", SEARCHES, ids=SEARCH_IDS)
+def test_covering_work_budget_gives_up_before_any_work(search):
+    """Issue 28.6: at b/a = 1e-8, [t2, 3 pi/2] holds 1.6e7 branches of T1, more than the default
+    budget: GaveUp at once, naming it; a larger max_branches is accepted (not run here)."""
+    p = dfchaos.Parameters(1.0, 1e-8, 0.85)
+    with pytest.raises(dfchaos.GaveUp, match="max_branches"):
+        search(p, method="branchwise")
+    with pytest.raises(dfchaos.GaveUp, match="budget of 10 "):
+        search(dfchaos.Parameters(1.0, 1e-4, 0.85), method="branchwise", max_branches=10)
 
 
 @pytest.mark.parametrize("search", SEARCHES, ids=SEARCH_IDS)

@@ -18,8 +18,11 @@ void* checked(void* p) {
 }
 void* alloc_or_fail(std::size_t n) { return checked(std::malloc(n)); }
 void* calloc_or_fail(std::size_t n, std::size_t size) { return checked(std::calloc(n, size)); }
-void* realloc_or_fail(void* p, std::size_t n) { return checked(std::realloc(p, n)); }
-void* gmp_realloc_or_fail(void* p, std::size_t, std::size_t n) { return checked(std::realloc(p, n)); }
+void* realloc_or_fail(void* p, std::size_t n) {
+  void* q = std::realloc(p, n);
+  return n == 0 ? q : checked(q);  // realloc to 0 bytes may return null: not a failure
+}
+void* gmp_realloc_or_fail(void* p, std::size_t, std::size_t n) { return realloc_or_fail(p, n); }
 void gmp_free(void* p, std::size_t) { std::free(p); }
 }  // namespace
 

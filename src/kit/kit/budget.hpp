@@ -38,8 +38,12 @@ struct ProcessBudget {
 ProcessBudget parse_budget(const std::string& seconds, const std::string& gib);
 
 /// Applies `b` to this process (once; a second call replaces the timer and the limit). `program`
-/// starts the give-up lines (e.g. "dfchaos").
+/// starts the give-up lines (e.g. "dfchaos"). A lower address-space limit already in force
+/// (ulimit -v) is kept, and the give-up line names it instead.
 void apply_process_budget(const std::string& program, const ProcessBudget& b);
+
+/// Disarms the timer of the time budget (once the answer is computed: its printing is not cut).
+void stop_time_budget();
 
 /// Whether the memory part of a budget is enforced in this build (false under AddressSanitizer).
 bool memory_budget_applies();

@@ -82,6 +82,10 @@ struct Experiment {
   int main(const std::string& name, int argc, char** argv) const;
   /// The declaration as JSON (`--describe`).
   Json describe(const std::string& name) const;
+
+ private:
+  /// main() before its check that stdout received everything.
+  int run_main(const std::string& name, int argc, char** argv) const;
 };
 
 }  // namespace dfchaos::kit

@@ -2,7 +2,9 @@
 /// @brief Template definitions of grid.hpp (included by it).
 #pragma once
 
+#include <atomic>
 #include <exception>
+#include <new>
 
 namespace dfchaos::kit {
 
@@ -11,11 +13,15 @@ std::vector<CellResult<R>> sweep_list(const std::vector<T>& items, const std::fu
   const long long n = static_cast<long long>(items.size());
   std::vector<CellResult<R>> out(items.size());
   Progress progress(label, n);
+  std::atomic<bool> out_of_memory{false};  // not a failure of a cell; an exception cannot leave the region
 #pragma omp parallel for schedule(dynamic, 1)
   for (long long k = 0; k < n; ++k) {
+    if (out_of_memory.load()) continue;
     auto& cell = out[static_cast<std::size_t>(k)];
     try {
       cell.value = f(items[static_cast<std::size_t>(k)]);
+    } catch (const std::bad_alloc&) {
+      out_of_memory.store(true);
     } catch (const std::exception& e) {
       cell.failed = true;
       cell.error = e.what();
@@ -23,6 +29,7 @@ std::vector<CellResult<R>> sweep_list(const std::vector<T>& items, const std::fu
     progress.step();
   }
   progress.done();
+  if (out_of_memory.load()) throw std::bad_alloc();
   return out;
 }
 

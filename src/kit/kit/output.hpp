@@ -25,7 +25,8 @@ namespace dfchaos::kit {
 std::filesystem::path unique_temporary(const std::filesystem::path& path);
 
 /// Makes SIGINT, SIGTERM and SIGHUP remove every temporary file registered (TemporaryFileGuard)
-/// before the process ends by the signal as it would have (the same status). A signal that is
+/// before the process ends by the signal as it would have (the same status), and ignores SIGXFSZ
+/// (a write beyond a file-size limit then fails with EFBIG: one line, exit 1). A signal that is
 /// ignored when this is called (e.g. SIGHUP under nohup) stays ignored. Idempotent. SIGKILL
 /// cannot be caught: what it leaves (a `.tmp.*` beside the target) is never taken for an output
 /// and is removed by the next run that uses the same place (sweep checkpoints), or by hand.
@@ -58,6 +59,19 @@ inline constexpr int kMaxGuardedTemporaries = 256;
 /// written beside and renamed into place, which would replace a device by a file), or when the
 /// chain of links is longer than 40.
 std::filesystem::path output_target(const std::filesystem::path& path, const std::string& option);
+
+/// Flushes everything written to standard output (C stdio and iostreams) and returns 0 when it all
+/// reached its destination, else the errno of the failure (a full disk, a closed descriptor or pipe).
+/// Every program of the project calls it before exiting: a failed write is never a success.
+int stdout_failure();
+
+/// The message with every line break made a space: an error is printed on one line.
+std::string one_line(std::string msg);
+
+/// Whether a failure with this errno, when creating an output, means the path itself is unusable
+/// (bad input, exit 2: no such directory, no permission, a read-only file system, a name too long,
+/// a loop of links) rather than a failed write (exit 1).
+bool is_bad_path_errno(int err);
 
 /// A file-system failure while writing outputs. `bad_path()` is true when the output location
 /// itself is unusable (not a directory, not creatable: bad input, exit 2) and false when writing

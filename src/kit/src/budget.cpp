@@ -67,12 +67,8 @@ bool memory_budget_applies() {
 
 void apply_process_budget(const std::string& program, const ProcessBudget& b) {
   const std::string t = program + ": gave up: the time budget of " + shortest(b.seconds) + " s ran out (--max-seconds raises it)\n";
-  g_memory_text = "the memory budget of " + shortest(b.gib) + " GiB ran out (--max-memory raises it)";
-  const std::string m = program + ": gave up: " + g_memory_text + "\n";
   g_time_length = std::min(t.size(), sizeof g_time_line);
   std::memcpy(g_time_line, t.data(), g_time_length);
-  g_memory_length = std::min(m.size(), sizeof g_memory_line);
-  std::memcpy(g_memory_line, m.data(), g_memory_length);
 
   struct sigaction sa {};
   sa.sa_handler = on_time_budget;
@@ -84,15 +80,28 @@ void apply_process_budget(const std::string& program, const ProcessBudget& b) {
   if (timer.it_value.tv_sec == 0 && timer.it_value.tv_usec == 0) timer.it_value.tv_usec = 1;
   ::setitimer(ITIMER_REAL, &timer, nullptr);
 
-  if (memory_budget_applies()) {
-    rlimit lim{};
-    if (::getrlimit(RLIMIT_AS, &lim) == 0) {
-      const rlim_t want = static_cast<rlim_t>(b.gib * 1073741824.0);
-      if (lim.rlim_max == RLIM_INFINITY || want < lim.rlim_max) lim.rlim_cur = want;
-      else lim.rlim_cur = lim.rlim_max;  // a lower hard limit set from outside stays in force
+  // The memory budget, unless a lower limit is already in force (ulimit -v): that one stays, and
+  // the give-up line names it.
+  g_memory_text = "the memory budget of " + shortest(b.gib) + " GiB ran out (--max-memory raises it)";
+  rlimit lim{};
+  if (::getrlimit(RLIMIT_AS, &lim) == 0) {
+    const rlim_t want = static_cast<rlim_t>(b.gib * 1073741824.0);
+    if (lim.rlim_cur != RLIM_INFINITY && lim.rlim_cur < want) {
+      g_memory_text = "the address-space limit of " + shortest(static_cast<double>(lim.rlim_cur) / 1073741824.0) +
+                      " GiB set outside dfchaos (ulimit -v) ran out";
+    } else if (memory_budget_applies()) {
+      lim.rlim_cur = want;
       ::setrlimit(RLIMIT_AS, &lim);
     }
   }
+  const std::string m = program + ": gave up: " + g_memory_text + "\n";
+  g_memory_length = std::min(m.size(), sizeof g_memory_line);
+  std::memcpy(g_memory_line, m.data(), g_memory_length);
+}
+
+void stop_time_budget() {
+  itimerval off{};
+  ::setitimer(ITIMER_REAL, &off, nullptr);
 }
 
 std::string memory_budget_line() { return g_memory_text; }

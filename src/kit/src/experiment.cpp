@@ -4,6 +4,7 @@
 
 #include <climits>
 #include <cstdio>
+#include <cstring>
 #include <stdexcept>
 
 #include "dfchaos/errors.hpp"
@@ -61,6 +62,17 @@ Json Experiment::describe(const std::string& name) const {
 
 int Experiment::main(const std::string& name, int argc, char** argv) const {
   remove_temporaries_on_signals();
+  const int status = run_main(name, argc, argv);
+  // What went to stdout (--describe, --help) must have reached it: a failed write is not a success.
+  const int err = stdout_failure();
+  if (err != 0) {
+    std::fprintf(stderr, "%s: error: cannot write the output: %s\n", name.c_str(), std::strerror(err));
+    return status == 2 ? 2 : 1;
+  }
+  return status;
+}
+
+int Experiment::run_main(const std::string& name, int argc, char** argv) const {
   std::string help_footer = "Exit status: 0 every claim it asserts holds, 1 one fails (or a bounded search gave up, or writing failed), 2 bad input.";
   CLI::App app{name + ": " + title};
   app.footer(help_footer);
@@ -98,10 +110,7 @@ int Experiment::main(const std::string& name, int argc, char** argv) const {
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::string msg = e.what();
-    for (auto& ch : msg)
-      if (ch == '\n') ch = ' ';
-    std::fprintf(stderr, "%s: error: %s\n", name.c_str(), msg.c_str());
+    std::fprintf(stderr, "%s: error: %s\n", name.c_str(), one_line(e.what()).c_str());
     return 2;
   }
   if (describe_only) {
@@ -138,13 +147,13 @@ int Experiment::main(const std::string& name, int argc, char** argv) const {
     }
     return out.finish();
   } catch (const InvalidParameter& e) {
-    std::fprintf(stderr, "%s: error: %s\n", name.c_str(), e.what());
+    std::fprintf(stderr, "%s: error: %s\n", name.c_str(), one_line(e.what()).c_str());
     return 2;
   } catch (const GaveUp& e) {
-    std::fprintf(stderr, "%s: gave up: %s\n", name.c_str(), e.what());
+    std::fprintf(stderr, "%s: gave up: %s\n", name.c_str(), one_line(e.what()).c_str());
     return 1;
   } catch (const OutputError& e) {
-    std::fprintf(stderr, "%s: error: %s\n", name.c_str(), e.what());
+    std::fprintf(stderr, "%s: error: %s\n", name.c_str(), one_line(e.what()).c_str());
     return e.bad_path() ? 2 : 1;
   } catch (const std::bad_alloc&) {
     std::fprintf(stderr, "%s: error: out of memory (no output written)\n", name.c_str());

@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <csignal>
+#include <iostream>
 #include <mutex>
 
 #include <atomic>
@@ -29,7 +30,12 @@ fs::path unique_temporary(const fs::path& path) {
   static const unsigned long tag = std::random_device{}();
   char buf[96];
   std::snprintf(buf, sizeof buf, ".tmp.%ld.%lu.%lx", static_cast<long>(::getpid()), counter++, tag);
-  return fs::path(path.string() + buf);
+  // Within NAME_MAX (255) even for a target whose own name is close to it: its name is shortened.
+  constexpr std::size_t kNameMax = 255;
+  std::string name = path.filename().string();
+  const std::size_t suffix = std::strlen(buf);
+  if (name.size() + suffix > kNameMax) name.resize(kNameMax > suffix ? kNameMax - suffix : 0);
+  return path.parent_path() / (name + buf);
 }
 
 namespace {
@@ -50,6 +56,28 @@ extern "C" void remove_guarded_and_reraise(int sig) {
 
 }  // namespace
 
+int stdout_failure() {
+  errno = 0;
+  std::cout.flush();  // synced with stdio: flushes stdout too
+  const int stream_errno = errno;
+  const bool stream_ok = static_cast<bool>(std::cout);
+  errno = 0;
+  const bool stdio_ok = std::fflush(stdout) == 0 && !std::ferror(stdout);
+  if (stream_ok && stdio_ok) return 0;
+  if (stream_errno != 0) return stream_errno;
+  return errno != 0 ? errno : EIO;  // EIO: the error flag was set by an earlier write
+}
+
+std::string one_line(std::string msg) {
+  for (auto& ch : msg)
+    if (ch == '\n' || ch == '\r') ch = ' ';
+  return msg;
+}
+
+bool is_bad_path_errno(int err) {
+  return err == ENOTDIR || err == ENOENT || err == EACCES || err == EROFS || err == EISDIR || err == EPERM || err == ENAMETOOLONG || err == ELOOP;
+}
+
 void remove_guarded_temporaries() {
   for (auto& s : g_slots)
     if (s.state.load() == 2) ::unlink(s.path);  // async-signal-safe
@@ -58,6 +86,9 @@ void remove_guarded_temporaries() {
 void remove_temporaries_on_signals() {
   static std::once_flag once;
   std::call_once(once, [] {
+    // Beyond a file-size limit (ulimit -f) a write then fails with EFBIG and takes the ordinary
+    // error path (one line, exit 1, temporary removed) instead of killing the process.
+    ::signal(SIGXFSZ, SIG_IGN);
     for (int sig : {SIGINT, SIGTERM, SIGHUP}) {
       struct sigaction old {};
       if (::sigaction(sig, nullptr, &old) != 0 || old.sa_handler == SIG_IGN) continue;
@@ -99,6 +130,8 @@ fs::path output_target(const fs::path& path, const std::string& option) {
     if (ec) throw OutputError(option + ": cannot read the symbolic link " + p.string() + " (" + ec.message() + ")", true);
     p = to.is_absolute() ? to : p.parent_path() / to;
   }
+  if (p.filename().string().size() > 255)  // NAME_MAX: the file could never be created
+    throw OutputError(option + ": " + path.string().substr(0, 60) + "...: a file name longer than 255 bytes", true);
   const fs::file_status st = fs::status(p, ec);
   if (fs::exists(st) && !fs::is_regular_file(st)) {
     const char* kind = fs::is_directory(st) ? "a directory" : fs::is_character_file(st) || fs::is_block_file(st) ? "a device"
@@ -115,8 +148,7 @@ void write_file(const fs::path& tmp, const std::string& content) {
   const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
   if (fd < 0) {
     const int err = errno;
-    const bool bad_path = err == ENOTDIR || err == ENOENT || err == EACCES || err == EROFS || err == EISDIR || err == EPERM || err == ENAMETOOLONG || err == ELOOP;
-    throw OutputError("cannot create " + tmp.parent_path().string() + "/" + tmp.filename().string() + ": " + std::strerror(err), bad_path);
+    throw OutputError("cannot create " + tmp.parent_path().string() + "/" + tmp.filename().string() + ": " + std::strerror(err), is_bad_path_errno(err));
   }
   std::size_t done = 0;
   while (done < content.size()) {

@@ -1,6 +1,7 @@
 #include "sweep/cell.hpp"
 
 #include <exception>
+#include <new>
 #include <optional>
 
 #include "dfchaos/covering.hpp"
@@ -29,6 +30,8 @@ template <class F>
 void guarded(CellValues& v, const char* name, F&& f) {
   try {
     f();
+  } catch (const std::bad_alloc&) {
+    throw;  // memory ran out: not a property of the cell (compute_rows ends the run)
   } catch (const std::exception& e) {
     v.status = CellStatus::Error;
     v.error += (v.error.empty() ? "" : "; ") + std::string(name) + ": " + e.what();

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cinttypes>
 #include <cstdio>
+#include <sstream>
 #include <stdexcept>
 
 #include "dfchaos/errors.hpp"
@@ -59,7 +60,7 @@ Checkpoint::Checkpoint(const fs::path& file, std::string header, const Shard& sh
     throw InvalidParameter(kOption, dir_.string() + " is in use by another run (one run per FILE at a time)");
   const fs::path header_path = dir_ / kHeaderFile;
   if (fresh || !fs::exists(header_path, ec)) {
-    write_file_atomically(header_path, header_);
+    write_file_atomically(header_path, header_, kOption);
   } else if (read_file(kOption, header_path) != header_) {
     throw InvalidParameter(kOption, dir_.string() + " holds an interrupted run of another spec, build or shard; "
                                                     "rerun that command, or remove the directory to start afresh");
@@ -104,25 +105,34 @@ long long Checkpoint::done_positions() const {
 
 std::string Checkpoint::read_chunk(const fs::path& path, const Interval& c) const {
   const std::string text = read_file(kOption, path);
+  const std::string advice = " (remove this chunk file and rerun: only its cells are computed again)";
   Seal seal;
-  const std::string_view rows = check_text_seal(kOption, path.string(), text, seal);
-  if (seal.rows != c.size()) throw InvalidParameter(kOption, path.string() + " is damaged (its seal counts " + std::to_string(seal.rows) + " rows, its name " + std::to_string(c.size()) + ")");
-  std::size_t at = 0;
-  for (long long p = c.begin; p < c.end; ++p) {
-    const std::size_t nl = rows.find('\n', at);
-    const std::string problem = nl == std::string_view::npos ? "missing" : row_problem(rows.substr(at, nl - at), shard_.cell(p), columns_);
-    if (!problem.empty())
-      throw InvalidParameter(kOption, path.string() + " is damaged (row of cell " + std::to_string(shard_.cell(p)) + ": " + problem + ")");
-    at = nl + 1;
+  std::string_view body;
+  try {
+    body = check_text_seal(kOption, path.string(), text, seal);
+  } catch (const InvalidParameter& e) {
+    throw InvalidParameter(kOption, std::string(e.what()).substr(e.parameter().size() + 2) + advice);
   }
-  if (at != rows.size()) throw InvalidParameter(kOption, path.string() + " is damaged (extra text)");
-  return std::string(rows);
+  if (body.substr(0, header_.size()) != header_)
+    throw InvalidParameter(kOption, path.string() + " is a chunk of another run (its header differs: spec, build or shard)" + advice);
+  const std::string rows(body.substr(header_.size()));
+  if (seal.rows != c.size())
+    throw InvalidParameter(kOption, path.string() + " is damaged (its seal counts " + std::to_string(seal.rows) + " rows, its name " + std::to_string(c.size()) + ")" + advice);
+  std::istringstream in(rows);
+  try {
+    check_rows(kOption, path.string(), in, shard_, c.begin, c.size(), columns_);
+  } catch (const InvalidParameter& e) {
+    throw InvalidParameter(kOption, std::string(e.what()).substr(e.parameter().size() + 2) + advice);
+  }
+  if (static_cast<std::size_t>(in.tellg()) != rows.size()) throw InvalidParameter(kOption, path.string() + " is damaged (extra text)" + advice);
+  return rows;
 }
 
 void Checkpoint::save(const Interval& chunk, std::string_view rows) {
-  std::string text(rows);
-  text += seal_line(chunk.size(), kit::sha256_hex(rows));
-  write_file_atomically(dir_ / chunk_name(chunk), text);
+  std::string text = header_;
+  text += rows;
+  text += seal_line(chunk.size(), kit::sha256_hex(text));
+  write_file_atomically(dir_ / chunk_name(chunk), text, kOption);
   insert(chunk);
 }
 
@@ -130,7 +140,7 @@ void Checkpoint::assemble() {
   if (!complete()) throw std::logic_error("Checkpoint::assemble before every chunk is done");
   {
     // Every chunk is read back and checked again: a chunk damaged since it was saved is refused.
-    AtomicFile out(file_);
+    AtomicFile out(file_, kOption);
     Sealer sealer;
     out.write(header_);
     sealer.add(header_, 0);

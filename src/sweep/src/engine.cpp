@@ -1,5 +1,8 @@
 #include "sweep/engine.hpp"
 
+#include <atomic>
+#include <new>
+
 #include "sweep/cell.hpp"
 
 namespace dfchaos::sweep {
@@ -7,12 +10,19 @@ namespace dfchaos::sweep {
 std::vector<std::string> compute_rows(const Spec& spec, const std::vector<long long>& cells, kit::Progress* progress) {
   std::vector<std::string> rows(cells.size());
   const long long n = static_cast<long long>(cells.size());
+  std::atomic<bool> out_of_memory{false};  // an exception cannot leave a parallel region
 #pragma omp parallel for schedule(dynamic, 1)
   for (long long k = 0; k < n; ++k) {
+    if (out_of_memory.load()) continue;
     const auto i = static_cast<std::size_t>(k);
-    rows[i] = format_row(spec, evaluate_cell(spec, cells[i]));  // never throws for a cell's failure
+    try {
+      rows[i] = format_row(spec, evaluate_cell(spec, cells[i]));  // never throws for a cell's failure
+    } catch (const std::bad_alloc&) {
+      out_of_memory.store(true);
+    }
     if (progress) progress->step();
   }
+  if (out_of_memory.load()) throw std::bad_alloc();  // the chunk is not delivered: the run gives up (exit 1)
   return rows;
 }
 

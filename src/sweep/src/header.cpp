@@ -118,24 +118,35 @@ std::string row_problem(std::string_view row, long long index, const std::vector
   return "";
 }
 
+void check_rows(const std::string& option, const std::string& what, std::istream& in, const Shard& shard, long long first,
+                long long count, const std::vector<std::string>& columns, Sealer* rows_seen) {
+  std::string row;
+  for (long long p = first; p < first + count; ++p) {
+    if (!std::getline(in, row) || in.eof())  // every row ends in '\n'
+      throw InvalidParameter(option, what + " has " + std::to_string(p - first) + " of its " + std::to_string(count) + " rows (incomplete)");
+    const std::string problem = row_problem(row, shard.cell(p), columns);
+    if (!problem.empty())
+      throw InvalidParameter(option, what + ": row " + std::to_string(p - first + 1) + " is not a valid row of cell " + std::to_string(shard.cell(p)) +
+                                         " (" + problem + ")");
+    if (rows_seen) {
+      row += '\n';
+      rows_seen->add(row, 1);
+    }
+  }
+}
+
 CheckedFile check_sweep_file(const std::string& option, const std::string& file, std::istream& in) {
-  const SealedFile sealed = check_file_seal(option, file);
+  const SealedFile sealed = check_file_seal(option, file, in);
   CheckedFile c;
   c.header = read_header(option, file, in);
   c.first_row = in.tellg();
+  c.seal = sealed.seal;
   const Shard shard = c.header.shard.value_or(Shard{});
   const long long rows = shard.size(c.header.cells);
   if (sealed.seal.rows != rows)
     throw InvalidParameter(option, file + " is damaged (its seal counts " + std::to_string(sealed.seal.rows) + " rows, shard " +
                                        shard.canonical() + " of " + std::to_string(c.header.cells) + " cells has " + std::to_string(rows) + ")");
-  std::string row;
-  for (long long p = 0; p < rows; ++p) {
-    if (!std::getline(in, row) || static_cast<std::uintmax_t>(in.tellg()) > sealed.body_bytes)
-      throw InvalidParameter(option, file + " has " + std::to_string(p) + " of the " + std::to_string(rows) + " rows of shard " + shard.canonical() + " (incomplete)");
-    const std::string problem = row_problem(row, shard.cell(p), c.header.columns);
-    if (!problem.empty())
-      throw InvalidParameter(option, file + ": row " + std::to_string(p + 1) + " is not a valid row of cell " + std::to_string(shard.cell(p)) + " (" + problem + ")");
-  }
+  check_rows(option, file, in, shard, 0, rows, c.header.columns);
   if (static_cast<std::uintmax_t>(in.tellg()) != sealed.body_bytes)
     throw InvalidParameter(option, file + " has more rows than the " + std::to_string(rows) + " of shard " + shard.canonical());
   in.clear();

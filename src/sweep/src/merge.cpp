@@ -22,6 +22,7 @@ constexpr const char* kOption = "sweep-merge";
 constexpr rlim_t kSpareDescriptors = 64;
 
 std::unique_ptr<std::ifstream> open(const std::string& file) {
+  require_regular_file(kOption, file);  // before opening: a FIFO would block the open
   auto in = std::make_unique<std::ifstream>(file, std::ios::binary);
   if (!*in) throw InvalidParameter(kOption, "cannot read " + file + ": " + std::strerror(errno));
   return in;
@@ -49,12 +50,14 @@ void merge_shards(const std::vector<std::string>& files, Stream& out) {
   std::vector<ParsedHeader> headers;
   std::vector<std::unique_ptr<std::ifstream>> in;
   std::vector<std::streampos> first_row;
+  std::vector<Seal> seals;
   std::vector<long long> by_shard;  // file number of each shard index, -1 while missing
   for (std::size_t f = 0; f < files.size(); ++f) {
     in.push_back(open(files[f]));
     const CheckedFile checked = check_sweep_file(kOption, files[f], *in.back());
     headers.push_back(checked.header);
     first_row.push_back(checked.first_row);
+    seals.push_back(checked.seal);
     const ParsedHeader& h = headers.back();
     if (!h.shard) throw InvalidParameter(kOption, files[f] + " is not a shard file (no '" + std::string(kShardPrefix) + "i/N' line)");
     if (h.common != headers[0].common)
@@ -77,9 +80,17 @@ void merge_shards(const std::vector<std::string>& files, Stream& out) {
   out.write(headers[0].common);
   sealer.add(headers[0].common, 0);
   const std::size_t n = by_shard.size();
+  // Each shard is digested again as it is copied: a shard rewritten in place since pass 1 is
+  // caught before the output gets its seal.
+  std::vector<std::unique_ptr<Sealer>> again;
   for (std::size_t f = 0; f < files.size(); ++f) {
+    again.push_back(std::make_unique<Sealer>());
     in[f]->clear();
-    in[f]->seekg(first_row[f]);
+    in[f]->seekg(0);
+    std::string head(static_cast<std::size_t>(first_row[f]), '\0');
+    if (!in[f]->read(head.data(), static_cast<std::streamsize>(head.size())))
+      throw kit::OutputError("sweep-merge: " + files[f] + " changed while being merged", false);
+    again[f]->add(head, 0);
   }
   std::string row, buffer;
   constexpr std::size_t kFlushBytes = 1 << 20;
@@ -91,15 +102,19 @@ void merge_shards(const std::vector<std::string>& files, Stream& out) {
     buffered = 0;
   };
   for (long long k = 0; k < cells; ++k) {
-    auto& src = *in[static_cast<std::size_t>(by_shard[static_cast<std::size_t>(k) % n])];
-    if (!std::getline(src, row) || !row_problem(row, k, headers[0].columns).empty())
-      throw kit::OutputError("sweep-merge: a shard file changed while being merged", false);
+    const auto f = static_cast<std::size_t>(by_shard[static_cast<std::size_t>(k) % n]);
+    if (!std::getline(*in[f], row) || !row_problem(row, k, headers[0].columns).empty())
+      throw kit::OutputError("sweep-merge: " + files[f] + " changed while being merged", false);
+    row += '\n';
+    again[f]->add(row, 1);
     buffer += row;
-    buffer += '\n';
     ++buffered;
     if (buffer.size() >= kFlushBytes) flush();
   }
   flush();
+  for (std::size_t f = 0; f < files.size(); ++f)
+    if (again[f]->line() != seal_line(seals[f].rows, seals[f].sha256))
+      throw kit::OutputError("sweep-merge: " + files[f] + " changed while being merged (no seal written)", false);
   out.write(sealer.line());
 }
 

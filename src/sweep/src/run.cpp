@@ -50,12 +50,13 @@ Run::Run(RunOptions options) : o_(std::move(options)) {
     if (!fs::exists(Checkpoint::directory(file), ec) && fs::exists(file, ec)) {
       // A finished run: its output is in place (written atomically). Accept it only if it is the
       // complete, undamaged output of this run: sealed, this header, every row well-formed.
+      require_regular_file("resume", file);  // before opening: a FIFO would block the open
       std::ifstream in(file, std::ios::binary);
       try {
         (void)check_sweep_file("resume", file.string(), in);
       } catch (const InvalidParameter& e) {
         const std::string why = std::string(e.what()).substr(e.parameter().size() + 2);  // after "resume: "
-        throw InvalidParameter("resume", why + "; it cannot be resumed (its chunks are gone): remove it to compute it again");
+        throw InvalidParameter("resume", why + "; it cannot be resumed (no FILE.chunks/ beside it): remove it to compute it again");
       }
       std::string head(header.size(), '\0');
       in.clear();

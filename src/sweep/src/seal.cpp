@@ -1,15 +1,10 @@
 #include "sweep/seal.hpp"
 
-#include <cerrno>
-#include <cstring>
-#include <fstream>
 #include <vector>
 
 #include "dfchaos/errors.hpp"
 
 namespace dfchaos::sweep {
-
-namespace fs = std::filesystem;
 
 namespace {
 constexpr std::string_view kSealMiddle = " rows, sha256 ";
@@ -54,23 +49,20 @@ void Sealer::add(std::string_view text, long long rows) {
   rows_ += rows;
 }
 
-SealedFile check_file_seal(const std::string& option, const fs::path& path) {
-  std::error_code ec;
-  const fs::file_status st = fs::status(path, ec);
-  if (ec || !fs::exists(st)) throw InvalidParameter(option, "cannot read " + path.string() + ": no such file");
-  if (!fs::is_regular_file(st)) throw InvalidParameter(option, path.string() + " is not a regular file (a sweep file is read twice: give a file, not a pipe or device)");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InvalidParameter(option, "cannot read " + path.string() + ": " + std::strerror(errno));
-  const std::uintmax_t size = fs::file_size(path, ec);
-  if (ec) throw InvalidParameter(option, "cannot read " + path.string() + ": " + ec.message());
-  const std::string incomplete = path.string() + " is incomplete (it does not end in its '" + std::string(kSealPrefix) +
-                                 "...' line: cut short, or still being written)";
+SealedFile check_file_seal(const std::string& option, const std::string& file, std::istream& in) {
+  const std::string incomplete = file + " has no seal (it does not end in a '" + std::string(kSealPrefix) +
+                                 "...' line: cut short, still being written, or written by a dfchaos older than seals)";
+  in.clear();
+  in.seekg(0, std::ios::end);
+  const std::streamoff end = in.tellg();
+  if (!in || end < 0) throw InvalidParameter(option, "cannot read " + file);
+  const auto size = static_cast<std::uintmax_t>(end);
   // The tail, where the seal line must be.
   const std::uintmax_t tail_size = std::min<std::uintmax_t>(size, kMaxSealLine + 2);
   std::string tail(static_cast<std::size_t>(tail_size), '\0');
   in.seekg(static_cast<std::streamoff>(size - tail_size));
   in.read(tail.data(), static_cast<std::streamsize>(tail.size()));
-  if (!in) throw InvalidParameter(option, "cannot read " + path.string());
+  if (!in) throw InvalidParameter(option, "cannot read " + file);
   if (tail.empty() || tail.back() != '\n') throw InvalidParameter(option, incomplete);
   std::size_t start = last_line_start(tail);
   if (start == std::string_view::npos || (start == 0 && tail_size < size)) throw InvalidParameter(option, incomplete);
@@ -84,17 +76,18 @@ SealedFile check_file_seal(const std::string& option, const fs::path& path) {
   for (std::uintmax_t left = body; left > 0;) {
     const std::size_t n = static_cast<std::size_t>(std::min<std::uintmax_t>(left, block.size()));
     in.read(block.data(), static_cast<std::streamsize>(n));
-    if (!in) throw InvalidParameter(option, "cannot read " + path.string() + " (it changed while being read?)");
+    if (!in) throw InvalidParameter(option, "cannot read " + file + " (it changed while being read?)");
     digest.update(std::string_view(block.data(), n));
     left -= n;
   }
   if (digest.hex() != seal->sha256)
-    throw InvalidParameter(option, path.string() + " is damaged (its bytes do not match the sha256 of its '" + std::string(kSealPrefix) + "...' line)");
+    throw InvalidParameter(option, file + " is damaged (its bytes do not match the sha256 of its '" + std::string(kSealPrefix) + "...' line)");
+  in.seekg(0);
   return SealedFile{*seal, body};
 }
 
 std::string_view check_text_seal(const std::string& option, const std::string& what, std::string_view text, Seal& seal) {
-  const std::string incomplete = what + " is incomplete (it does not end in its '" + std::string(kSealPrefix) + "...' line)";
+  const std::string incomplete = what + " has no seal (it does not end in a '" + std::string(kSealPrefix) + "...' line: cut short)";
   if (text.empty() || text.back() != '\n') throw InvalidParameter(option, incomplete);
   const std::size_t start = last_line_start(text);
   if (start == std::string_view::npos) throw InvalidParameter(option, incomplete);

@@ -17,7 +17,7 @@ void Spec::validate() const {
   if (q_over_a.size() < 1 || b_over_a.size() < 1) throw InvalidParameter("q-range", "both ranges are required");
   q_over_a.require_within("q-range", 0, INFINITY, "every q/a must be positive and finite");
   for (double r : {q_over_a[0], q_over_a[q_over_a.size() - 1]})
-    if (!std::isnormal(r)) throw InvalidParameter("q-range", "every q/a must be a normal number (not subnormal)", r);
+    if (!std::isnormal(r)) throw InvalidParameter("q-range", "every q/a a normal number (not subnormal)", r);
   b_over_a.require_within("b-range", 0, 0.5, "every b/a must lie in (0, 1/2), where t2 and t3 exist");
   // The axes are monotone: the smallest b/a is at one end.
   const double b_least = std::min(b_over_a[0], b_over_a[b_over_a.size() - 1]);

@@ -28,13 +28,12 @@ void StdoutStream::commit() {
     throw kit::OutputError(std::string("cannot write the output: ") + std::strerror(errno), false);
 }
 
-AtomicFile::AtomicFile(const fs::path& path)
-    : path_(kit::output_target(path, "out")), tmp_(kit::unique_temporary(path_)), guard_(tmp_) {
+AtomicFile::AtomicFile(const fs::path& path, const std::string& option)
+    : path_(kit::output_target(path, option)), tmp_(kit::unique_temporary(path_)), guard_(tmp_) {
   file_ = std::fopen(tmp_.c_str(), "wx");  // exclusive: never reuses a name
   if (!file_) {
     const int err = errno;
-    const bool bad_path = err == ENOTDIR || err == ENOENT || err == EACCES || err == EROFS || err == EISDIR || err == EPERM || err == ENAMETOOLONG || err == ELOOP;
-    throw kit::OutputError("out: cannot create a file beside " + path_.string() + ": " + std::strerror(err), bad_path);
+    throw kit::OutputError(option + ": cannot create a file beside " + path_.string() + ": " + std::strerror(err), kit::is_bad_path_errno(err));
   }
 }
 
@@ -62,13 +61,21 @@ void AtomicFile::commit() {
   guard_.release();
 }
 
-void write_file_atomically(const fs::path& path, std::string_view content) {
-  AtomicFile f(path);
+void write_file_atomically(const fs::path& path, std::string_view content, const std::string& option) {
+  AtomicFile f(path, option);
   f.write(content);
   f.commit();
 }
 
+void require_regular_file(const std::string& option, const fs::path& path) {
+  std::error_code ec;
+  const fs::file_status st = fs::status(path, ec);
+  if (!fs::exists(st)) throw InvalidParameter(option, "cannot read " + path.string() + ": no such file");
+  if (!fs::is_regular_file(st)) throw InvalidParameter(option, path.string() + " is not a regular file (a sweep file or chunk is; not a pipe, FIFO, device or directory)");
+}
+
 std::string read_file(const std::string& option, const fs::path& path) {
+  require_regular_file(option, path);
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InvalidParameter(option, "cannot read " + path.string() + ": " + std::strerror(errno));
   std::ostringstream s;

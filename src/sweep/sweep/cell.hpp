@@ -36,7 +36,8 @@ struct CellValues {
 
 /// Computes the observables of cell `index` of `spec`. Never throws for a failure of the cell:
 /// each group (covering; superstable; the orbit behind lyapunov, rate and period) that throws is
-/// recorded in `error` and its values stay NaN; the others are kept.
+/// recorded in `error` and its values stay NaN; the others are kept. Running out of memory is not
+/// a failure of the cell (another run, with more memory, would answer): std::bad_alloc passes.
 CellValues evaluate_cell(const Spec& spec, long long index);
 
 /// The row of a cell: the spec's columns, tab-separated, numbers in %.17g, ending in '\n'.

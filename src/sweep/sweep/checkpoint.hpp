@@ -4,8 +4,9 @@
 ///
 /// Layout: `header` (the output header of the run: spec, build and shard), `lock` (held with
 /// flock while a run uses the directory: two runs never share it), and one
-/// `chunk-BEGIN-END.tsv` per chunk of positions [BEGIN, END) of the shard, holding their rows and
-/// a seal line (seal.hpp: the row count and the SHA-256 of the rows). Every chunk is checked when
+/// `chunk-BEGIN-END.tsv` per chunk of positions [BEGIN, END) of the shard, holding the run's
+/// header, their rows and a seal line (seal.hpp: the row count and the SHA-256 of the header and
+/// rows, so that a chunk is tied to its run). Every chunk is checked when
 /// the directory is opened and again when the output is assembled: an incomplete or damaged chunk
 /// is refused, never merged.
 /// A chunk file appears only complete (written to a unique temporary, then renamed): a run killed

@@ -14,7 +14,8 @@ namespace dfchaos::sweep {
 
 /// The rows of the given cells, in the given order, computed by OpenMP threads (dynamic schedule:
 /// the cost of a cell varies a lot); one step of `progress` (if any) per cell. Deterministic: the
-/// rows do not depend on the thread count.
+/// rows do not depend on the thread count. @throws std::bad_alloc when memory ran out in a cell
+/// (after the other threads stopped taking cells; no row of the chunk is returned).
 std::vector<std::string> compute_rows(const Spec& spec, const std::vector<long long>& cells, kit::Progress* progress);
 
 /// A whole run on this machine: every chunk of `run` computed by compute_rows and delivered.

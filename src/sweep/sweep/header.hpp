@@ -24,6 +24,7 @@
 #include <string_view>
 #include <vector>
 
+#include "sweep/seal.hpp"
 #include "sweep/shard.hpp"
 #include "sweep/spec.hpp"
 
@@ -60,10 +61,18 @@ ParsedHeader read_header(const std::string& option, const std::string& file, std
 /// field "-" exactly when the status is not error, and no control character anywhere.
 std::string row_problem(std::string_view row, long long index, const std::vector<std::string>& columns);
 
+/// Reads `count` rows from `in`, which must be the rows of positions first .. first + count - 1
+/// of `shard` under `columns`, each ending in '\n' and well-formed (row_problem); adds each (with
+/// its '\n') to `rows_seen` if given. @throws InvalidParameter naming `option` and `what` at the
+/// first row that is missing or not well-formed.
+void check_rows(const std::string& option, const std::string& what, std::istream& in, const Shard& shard, long long first,
+                long long count, const std::vector<std::string>& columns, Sealer* rows_seen = nullptr);
+
 /// A whole sweep file read back and checked.
 struct CheckedFile {
   ParsedHeader header;       ///< its header
   std::streampos first_row;  ///< where its rows begin
+  Seal seal;                 ///< its seal (checked against its bytes)
 };
 
 /// Checks the whole sweep file `file`, opened as `in`: its seal (seal.hpp: complete and undamaged),

@@ -12,7 +12,7 @@
 #pragma once
 
 #include <cstdint>
-#include <filesystem>
+#include <istream>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -57,11 +57,12 @@ struct SealedFile {
   std::uintmax_t body_bytes;  ///< the bytes above the seal line (where the seal line starts)
 };
 
-/// Checks the seal of the regular file `path` (symbolic links followed): it ends in a seal line
-/// and the digest of every byte above that line is the one stated. Reads the file once.
-/// @throws InvalidParameter naming `option`: not a regular file, cannot be read, no seal
-///         ("incomplete"), or a digest that does not match ("damaged").
-SealedFile check_file_seal(const std::string& option, const std::filesystem::path& path);
+/// Checks the seal of the file open as `in` (named `file` in errors): it ends in a seal line and the
+/// digest of every byte above that line is the one stated. Reads it once through `in`, so that
+/// the bytes checked are those the caller goes on to read; leaves `in` at its start.
+/// @throws InvalidParameter naming `option`: cannot be read, no seal ("incomplete" or written by
+///         a dfchaos older than seals), or a digest that does not match ("damaged").
+SealedFile check_file_seal(const std::string& option, const std::string& file, std::istream& in);
 
 /// The same for a text in memory (a checkpoint chunk): returns the text above the seal line and
 /// sets `seal`. `what` names the text in the errors. @throws InvalidParameter naming `option`.

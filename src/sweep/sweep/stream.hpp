@@ -39,7 +39,8 @@ class AtomicFile final : public Stream {
  public:
   /// Creates the temporary beside the target of `path`. @throws kit::OutputError (bad_path() true
   /// when the target is not a regular file, or its directory does not exist or cannot be written).
-  explicit AtomicFile(const std::filesystem::path& path);
+  /// `option` names the path in errors ("out", "resume").
+  explicit AtomicFile(const std::filesystem::path& path, const std::string& option = "out");
   ~AtomicFile() override;
   AtomicFile(const AtomicFile&) = delete;
   AtomicFile& operator=(const AtomicFile&) = delete;
@@ -54,9 +55,14 @@ class AtomicFile final : public Stream {
 };
 
 /// Writes `content` to `path` atomically (an AtomicFile written and committed at once).
-void write_file_atomically(const std::filesystem::path& path, std::string_view content);
+void write_file_atomically(const std::filesystem::path& path, std::string_view content, const std::string& option = "out");
 
-/// The whole content of a file. @throws InvalidParameter naming `option` if it cannot be read.
+/// Requires `path` to be a regular file (symbolic links followed), checked before it is opened: a
+/// FIFO would block the open, a device never end. @throws InvalidParameter naming `option`.
+void require_regular_file(const std::string& option, const std::filesystem::path& path);
+
+/// The whole content of a regular file. @throws InvalidParameter naming `option` if it is not one
+/// or cannot be read.
 std::string read_file(const std::string& option, const std::filesystem::path& path);
 
 }  // namespace dfchaos::sweep
