@@ -1,5 +1,6 @@
 #include "sweep/seal.hpp"
 
+#include <sstream>
 #include <vector>
 
 #include "dfchaos/errors.hpp"
@@ -87,17 +88,10 @@ SealedFile check_file_seal(const std::string& option, const std::string& file, s
 }
 
 std::string_view check_text_seal(const std::string& option, const std::string& what, std::string_view text, Seal& seal) {
-  const std::string incomplete = what + " has no seal (it does not end in a '" + std::string(kSealPrefix) + "...' line: cut short)";
-  if (text.empty() || text.back() != '\n') throw InvalidParameter(option, incomplete);
-  const std::size_t start = last_line_start(text);
-  if (start == std::string_view::npos) throw InvalidParameter(option, incomplete);
-  const auto parsed = parse_seal_line(text.substr(start, text.size() - start - 1));
-  if (!parsed) throw InvalidParameter(option, incomplete);
-  const std::string_view body = text.substr(0, start);
-  if (kit::sha256_hex(body) != parsed->sha256)
-    throw InvalidParameter(option, what + " is damaged (its bytes do not match the sha256 of its '" + std::string(kSealPrefix) + "...' line)");
-  seal = *parsed;
-  return body;
+  std::istringstream in{std::string(text)};  // one check for files and texts: check_file_seal's
+  const SealedFile sealed = check_file_seal(option, what, in);
+  seal = sealed.seal;
+  return text.substr(0, static_cast<std::size_t>(sealed.body_bytes));
 }
 
 }  // namespace dfchaos::sweep
