@@ -20,9 +20,6 @@ long double QuadraticPlusHarmonic::value_at(long double s, double phi) const {
 long double QuadraticPlusHarmonic::slope_at(long double s, double phi) const {
   return 2 * alpha * s + (beta + beta_tail) + static_cast<long double>(A * std::cos(phi) - B * std::sin(phi));
 }
-long double QuadraticPlusHarmonic::curvature_at(double phi) const {
-  return 2 * alpha - static_cast<long double>(A * std::sin(phi) + B * std::cos(phi));
-}
 
 namespace {
 
@@ -75,16 +72,6 @@ int inflection_phases_into(const QuadraticPlusHarmonic& f, double out[2]) {
   if (out[1] < out[0]) std::swap(out[0], out[1]);
   return 2;
 }
-
-}  // namespace
-
-std::vector<double> QuadraticPlusHarmonic::inflection_phases() const {
-  double buf[2];
-  const int n = inflection_phases_into(*this, buf);
-  return std::vector<double>(buf, buf + n);
-}
-
-namespace {
 
 /// Roots of alpha s^2 + beta s + k = 0 (alpha > 0), ascending; none if the discriminant is negative.
 bool quadratic_roots(long double alpha, long double beta, long double k, long double& r1, long double& r2) {

@@ -9,7 +9,7 @@
 ///    \f$\beta = q - 2b\f$, \f$A = 0\f$, \f$B = a\f$, with \f$f'' = -a\cos t\f$.
 ///
 /// **Why no root is missed.** \f$f'' = 2\alpha - A\sin t - B\cos t\f$ vanishes at no more than two
-/// phases per period, known in closed form (inflection_phases()). Between consecutive inflection
+/// phases per period, known in closed form (inflection_phases_into() in roots.cpp). Between consecutive inflection
 /// instants \f$f'\f$ is monotone, so it has at most one zero there, which splits the piece into at
 /// most two sub-pieces on which \f$f\f$ itself is monotone. On a monotone sub-piece \f$f\f$ has a
 /// zero iff its end values differ in sign, and the zero is unique: a bracketing solver finds it.
@@ -24,7 +24,6 @@
 
 #include <limits>
 #include <optional>
-#include <vector>
 
 #include "dfchaos/phase.hpp"
 
@@ -78,14 +77,10 @@ struct QuadraticPlusHarmonic {
   long double value_at(long double s, double phi) const;
   /// \f$f' = 2\alpha s + \beta + A\cos\varphi - B\sin\varphi\f$ (direct long-double evaluation).
   long double slope_at(long double s, double phi) const;
-  /// \f$f'' = 2\alpha - A\sin\varphi - B\cos\varphi\f$.
-  long double curvature_at(double phi) const;
   /// \f$f\f$ at an instant, with the polynomial re-centred there in double-double (see above).
   long double value(const Instant& t) const;
   /// \f$f'\f$ at an instant, re-centred as value().
   long double slope(const Instant& t) const;
-  /// The phases in \f$[0, 2\pi)\f$ where \f$f''\f$ changes sign (zero, one or two), ascending.
-  std::vector<double> inflection_phases() const;
 };
 
 /// The first instant after the origin at which \f$f\f$ reaches 0 from below.

@@ -66,20 +66,6 @@ void check_itinerary_orbit(const Parameters& p, const InverseBranch (&g)[2], Iti
 }
 }  // namespace detail
 
-ItineraryOrbit realise_word(const Parameters& p, const InverseBranch (&g)[2], const std::string& word) {
-  if (word.empty() || word.find_first_not_of("01") != std::string::npos) throw InvalidParameter("word", "a non-empty word over {0, 1}");
-  ItineraryOrbit o;
-  o.word = word;
-  o.x.assign(word.size(), 0.0);
-  double y = 0.5 * (*p.t2() + g[0].top);
-  for (std::size_t j = word.size(); j-- > 0;) {
-    y = inverse(p, g[word[j] == '1' ? 1 : 0], y);
-    o.x[j] = y;
-  }
-  detail::check_itinerary_orbit(p, g, o, false);
-  return o;
-}
-
 ItineraryOrbit periodic_orbit(const Parameters& p, const InverseBranch (&g)[2], const std::string& word) {
   if (word.empty() || word.find_first_not_of("01") != std::string::npos) throw InvalidParameter("word", "a non-empty word over {0, 1}");
   ItineraryOrbit o;

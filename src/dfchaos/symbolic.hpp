@@ -49,11 +49,9 @@ struct ItineraryOrbit {
   double precision_floor = 0;
 };
 
-/// A point whose orbit follows `word` (n letters) through \f$K_0, K_1\f$: \f$g_{w_0}\circ\dots\circ g_{w_{n-1}}(y_0)\f$.
-ItineraryOrbit realise_word(const Parameters& p, const InverseBranch (&g)[2], const std::string& word);
-
-/// Visits every word of length n over {0, 1} with the orbit that realises it (as realise_word, all
-/// from the same end point \f$y_0\f$), sharing suffixes: \f$x_w = g_{w_0}(x_{w_1\dots})\f$, so the cost is
+/// Visits every word of length n over {0, 1} with a point whose orbit follows it through
+/// \f$K_0, K_1\f$, \f$x_w = g_{w_0}\circ\dots\circ g_{w_{n-1}}(y_0)\f$ (all from the same end point
+/// \f$y_0\f$), sharing suffixes: \f$x_w = g_{w_0}(x_{w_1\dots})\f$, so the cost is
 /// \f$2^{n+1}\f$ inverse evaluations instead of \f$n 2^n\f$. `visit` receives each checked orbit.
 template <class Visit>
 void for_each_word(const Parameters& p, const InverseBranch (&g)[2], int n, Visit&& visit);

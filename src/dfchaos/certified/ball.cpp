@@ -158,24 +158,6 @@ std::string Ball::rad_str() const {
   return buf;
 }
 
-std::string Ball::interval_str(long digits) const {
-  // Outward rounding: the decimal ends are computed as balls and their own outer ends taken.
-  Ball lo = lower_ball(), hi = upper_ball();
-  auto out = [&](const Ball& v, bool down) {
-    // Print with `digits` digits and then nudge outward by one unit in the last place.
-    char* s = arb_get_str(v.x_, digits, ARB_STR_NO_RADIUS);
-    std::string t(s);
-    flint_free(s);
-    Ball d = Ball::decimal(t);
-    if (down ? arb_le(d.x_, v.x_) : arb_ge(d.x_, v.x_)) return t;
-    // One digit more, widened: fall back to a %.17g of the outward double.
-    char buf[40];
-    std::snprintf(buf, sizeof buf, "%.17g", down ? v.lower() : v.upper());
-    return std::string(buf);
-  };
-  return "[" + out(lo, true) + ", " + out(hi, false) + "]";
-}
-
 Ball operator+(const Ball& x, const Ball& y) { Ball r; arb_add(r.get(), x.get(), y.get(), g_prec); return r; }
 Ball operator-(const Ball& x, const Ball& y) { Ball r; arb_sub(r.get(), x.get(), y.get(), g_prec); return r; }
 Ball operator*(const Ball& x, const Ball& y) { Ball r; arb_mul(r.get(), x.get(), y.get(), g_prec); return r; }
@@ -197,13 +179,6 @@ Ball cot(const Ball& x) { Ball r; arb_cot(r.get(), x.get(), g_prec); return r; }
 Ball abs(const Ball& x) { Ball r; arb_abs(r.get(), x.get()); return r; }
 Ball max(const Ball& x, const Ball& y) { Ball r; arb_max(r.get(), x.get(), y.get(), g_prec); return r; }
 Ball min(const Ball& x, const Ball& y) { Ball r; arb_min(r.get(), x.get(), y.get(), g_prec); return r; }
-
-bool intersect(const Ball& x, const Ball& y, Ball& z) {
-  Ball r;
-  if (!arb_intersection(r.get(), x.get(), y.get(), g_prec)) return false;
-  z = r;
-  return true;
-}
 
 std::string fmt17(double x) {
   char buf[40];

@@ -93,8 +93,6 @@ class Ball {
   std::string mid_str(long digits = 40) const;
   /// The radius in decimal, rounded up, 3 digits.
   std::string rad_str() const;
-  /// The lower and upper ends in decimal with `digits` digits, rounded outward: "[lo, hi]".
-  std::string interval_str(long digits = 17) const;
 
  private:
   arb_t x_;
@@ -121,8 +119,6 @@ Ball cot(const Ball& x);   ///< \f$\cot x\f$
 Ball abs(const Ball& x);   ///< \f$|x|\f$
 Ball max(const Ball& x, const Ball& y);  ///< pointwise maximum
 Ball min(const Ball& x, const Ball& y);  ///< pointwise minimum
-/// The intersection of two balls (hull of it); false (and z unchanged) if provably disjoint.
-bool intersect(const Ball& x, const Ball& y, Ball& z);
 
 /// Certainly \f$x < y\f$ for all points.
 inline bool lt(const Ball& x, const Ball& y) { return arb_lt(x.get(), y.get()); }
