@@ -1,12 +1,19 @@
 #include "dfchaos/return_map.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <stdexcept>
+#include <string>
 
 #include "dfchaos/errors.hpp"
 #include "dfchaos/regime_chain.hpp"
 
 namespace dfchaos {
+
+namespace {
+constexpr int kMaxTransitions = 8;  ///< regime changes of one step of T before it gives up
+}  // namespace
 
 const char* scenario_name(Scenario s) {
   switch (s) {
@@ -23,14 +30,22 @@ const char* scenario_name(Scenario s) {
 }
 
 namespace {
-Scenario scenario_of(const std::string& chain) {
-  if (chain == "f>p>f") return Scenario::A;
-  if (chain == "f>p>s>f") return Scenario::B;
-  if (chain == "f>p>s>p>s>f") return Scenario::C;
-  if (chain == "f>p>s>p>f") return Scenario::D;
-  if (chain == "f>s>p>s>f") return Scenario::Cprime;
-  if (chain == "f>s>p>f") return Scenario::Dprime;
-  if (chain == "f>f") return Scenario::Grazing;
+/// The scenario of Section 3 whose chain of regimes entered after the first flight is
+/// `after_flight[0..n)`.
+Scenario scenario_of(const Regime* after_flight, int n) {
+  using R = Regime;
+  struct Row { Scenario scenario; std::initializer_list<Regime> chain; };
+  static const Row rows[] = {
+      {Scenario::A, {R::Progression, R::Free}},
+      {Scenario::B, {R::Progression, R::Stop, R::Free}},
+      {Scenario::C, {R::Progression, R::Stop, R::Progression, R::Stop, R::Free}},
+      {Scenario::D, {R::Progression, R::Stop, R::Progression, R::Free}},
+      {Scenario::Cprime, {R::Stop, R::Progression, R::Stop, R::Free}},
+      {Scenario::Dprime, {R::Stop, R::Progression, R::Free}},
+      {Scenario::Grazing, {R::Free}},
+  };
+  for (const Row& row : rows)
+    if (std::equal(row.chain.begin(), row.chain.end(), after_flight, after_flight + n)) return row.scenario;
   return Scenario::Other;
 }
 }  // namespace
@@ -45,9 +60,10 @@ MapStep return_map_step(const Parameters& p, double theta) {
 
   MechanicalState s{Instant::at_phase(theta), Regime::Free, 0.0, 0.0, 0.0};
   step.chain = "f";
+  Regime after_flight[kMaxTransitions];  // the regimes entered after the first flight
   int restarts_from_t0 = 0;
   // A chain has at most 5 transitions (scenario C); anything longer repeats for ever.
-  for (int n = 0; n < 8; ++n) {
+  for (int n = 0; n < kMaxTransitions; ++n) {
     const auto tr = next_transition(p, s);
     if (!tr) throw std::logic_error("return_map_step: a regime of the map never ends (a bug)");
     step.pieces += tr->pieces;
@@ -65,17 +81,18 @@ MapStep return_map_step(const Parameters& p, double theta) {
                    "): the progression from rest at t0 stops again before t2, so it repeats every period");
     step.chain += '>';
     step.chain += regime_code(tr->to);
+    after_flight[n] = tr->to;
     if (tr->to == Regime::Progression) ++step.progressions;
     s = tr->after();
     if (s.regime == Regime::Free) {
       step.end = s.t;
       step.T = s.t.phase;
       step.elapsed = static_cast<double>(elapsed(Instant::at_phase(theta), s.t));
-      step.scenario = scenario_of(step.chain);
+      step.scenario = scenario_of(after_flight, n + 1);
       return step;
     }
   }
-  throw GaveUp("return map at theta=" + format_double(theta) + ": no return to free flight within 8 regime changes");
+  throw GaveUp("return map at theta=" + format_double(theta) + ": no return to free flight within " + std::to_string(kMaxTransitions) + " regime changes");
 }
 
 long long t1_branch(const Parameters& p, const MapStep& step) { return maxima_between(p, step.theta, step.hit.t1); }
