@@ -20,6 +20,11 @@
 /// root, and it is skipped in one step. Likewise \f$f \ge \alpha s^2 + \beta s + \gamma - R\f$ bounds
 /// where the root must already have occurred. For a free flight of length \f$\sim (a/b)|\cos\theta|\f$
 /// only \f$O(1)\f$ periods at each end are scanned.
+///
+/// **Where each step is.** first_upcrossing() (roots.cpp) is the driver, in the order above: the
+/// envelope and the pieces come from roots/piecewise.hpp (with f's exact evaluation on a piece),
+/// an origin at rest from roots/rest_start.hpp, and the search of one monotone piece from
+/// roots/piece_solver.hpp, which ends in solve_increasing() (roots_impl.hpp).
 #pragma once
 
 #include <limits>
