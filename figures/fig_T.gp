@@ -2,7 +2,7 @@
 # lemma3_return_map. Left: Lemma 1 holds (b/a = 0.01, q/a = 0.85); right: it fails (q/a = 0.7).
 # Grey: theta2, where the first progression ends (Eq. 17), wherever it is not T itself, unwrapped
 # into [t1, t0 + 2 pi): in [t1, t2) the mass stops until t2 (B), in [t3, t0 + 2 pi) it stops
-# until t0 and progresses again (C, D). The phases t0..t3 (closed form, DESIGN.md) are marked on
+# until t0 and progresses again (C, D). The phases t0..t3 (closed form, docs/architecture.md) are marked on
 # the T axis; T = theta (dashed) and theta = 3 pi / 2 (dotted) are drawn. Each panel's key lists
 # only the scenarios present in its data.
 load figdir."/style.gp"

@@ -290,7 +290,7 @@ def cases(cli, ratio, qa, n_random, seed):
         th = t2 + (t3 - t2) * rng.random()
         if t2 <= th < t3:
             out.append((th, "random"))
-    # the last doubles below t3, and phases 1e-15 .. 1e-9 below it (issue 12, item 1)
+    # the last doubles below t3, and phases 1e-15 .. 1e-9 below it (the t3 edge)
     th = t3
     for i in range(1, 7):
         th = math.nextafter(th, 0.0)

@@ -1,9 +1,9 @@
 #!/usr/bin/env python3
-"""Reliability of the tool's files, signals and budgets (issue 28), CTest `reliability` (label failure).
+"""Reliability of the tool's files, signals and budgets (docs/reliability.md), CTest `reliability` (label failure).
 
     reliability.py DFCHAOS [--sanitized] [--experiment EXPERIMENT]
 
-Part 1 runs each numbered case of issue 28 that concerns the tool (1-6, 8, 11) as a regression check.
+Part 1 runs one regression check per case of the contract in docs/reliability.md.
 Part 2 is the harness over files and processes, with the counts it printed:
   - a sweep file cut at every byte offset, then --resume: refused (exit 2, file untouched) or finished
     byte-identical to the full run; never "complete" with other bytes;
@@ -105,7 +105,7 @@ r = run("sweep-merge", "s0.tsv", "s1.tsv", "s2.tsv")
 check(r.returncode == 0 and r.stdout == full, "3 shards merge into the unsharded bytes")
 kfull = run("sweep", *K).stdout
 
-# ---- part 1: the numbered cases of issue 28 ----------------------------------------------------------
+# ---- part 1: the cases of the contract (docs/reliability.md) ----------------------------------------
 # 1. A truncated file, a header-only file, a header with garbage rows: never "already complete".
 header = full[: full.index(b"\n0\t") + 1]
 for name, data in [("truncated by two lines", b"\n".join(full.split(b"\n")[:-3]) + b"\n"), ("header only", header),

@@ -1,4 +1,4 @@
-// Randomised robustness harness (issue 12): seeded draws over the dfchaos tool's argument parsing,
+// Randomised robustness harness: seeded draws over the dfchaos tool's argument parsing,
 // driven in-process through dfchaos::cli::run, and over (a, b, q, theta) with edge values (t2, t3
 // and their neighbouring doubles, subnormals, huge values, b/a near its floor) through the library.
 // Every draw must end in one of three ways: success with finite output, a refusal (exit 2, exactly

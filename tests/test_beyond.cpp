@@ -22,7 +22,7 @@ namespace {
 
 using namespace dfchaos;
 
-constexpr double kPerturbedAtZeroTol = 1e-8;   // issue 6: integrated map at eps = 0 vs exact T
+constexpr double kPerturbedAtZeroTol = 1e-8;   // integrated map at eps = 0 vs exact T
 constexpr double kDerivativeRelTol = 1e-4;     // implicit derivative vs central differences
 constexpr double kFiberRelTol = 1e-9;          // penetration carried by T vs simulator
 

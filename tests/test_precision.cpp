@@ -1,4 +1,4 @@
-// Regression tier for issue 12 (wrong answers at the edges of precision), one test per bug, each
+// Regression tier for wrong answers at the edges of precision, one test per bug, each
 // failing on the code before the fix. The accuracy of T against a 40-digit reference is checked
 // by tests/precision_reference.py (CTest: precision_reference).
 #include <gtest/gtest.h>
@@ -28,7 +28,7 @@ long double F_ld(const Parameters& p, double theta) {
 }
 }  // namespace
 
-// Issue 12, item 1. Bug: every theta in [t3 - 3e-14, t3) gave scenario G with T = theta and elapsed
+// The t3 edge. Bug: every theta in [t3 - 3e-14, t3) gave scenario G with T = theta and elapsed
 // 0 (a spurious fixed point; `orbit` never advanced); and for theta in (t3 - 3e-8, t3) the contact
 // at 3 (t3 - theta) was skipped and T1 came out up to 1e-6 too late. Cause: from rest the gap is
 // F(theta) u^2/2 + a cos(theta) u^3/6 + ..., below rounding noise; the search took F(theta) < 2.8e-14
@@ -88,7 +88,7 @@ TEST(PrecisionRegression, ScaleInvarianceAtTinyAmplitude) {
   }
 }
 
-// Issue 12, item 3: below the documented floor b/a >= kMinMapRatio, T is refused naming b (it was
+// The floor: below the documented floor b/a >= kMinMapRatio, T is refused naming b (it was
 // printed with 17 digits and errors up to 0.05, or gave up after 20 million pieces).
 TEST(PrecisionRegression, ReturnMapRefusedBelowTheAccuracyFloor) {
   for (double ba : {1e-13, 1e-17, 1e-60}) {
@@ -106,7 +106,7 @@ TEST(PrecisionRegression, ReturnMapRefusedBelowTheAccuracyFloor) {
   EXPECT_NO_THROW(return_map_step(Parameters(3.0, 3 * kMinMapRatio, 2.55), 4.0));
 }
 
-// Issue 12, item 4: t0 or t-end beyond the int64 range of Instant::from_time overflowed and gave
+// The time range: t0 or t-end beyond the int64 range of Instant::from_time overflowed and gave
 // an empty event log with exit status 0.
 TEST(PrecisionRegression, SimulationTimesBeyondTheBoundAreRefused) {
   const Parameters p(1.0, 0.01, 0.85);
@@ -153,7 +153,7 @@ TEST(PrecisionRegression, PhaseOfLargeTimesIsExact) {
   }
 }
 
-// Issue 12, item 6: a subnormal a gave b/a = inf, q/a = inf in `info`; parameters are now limited
+// The parameter range: a subnormal a gave b/a = inf, q/a = inf in `info`; parameters are now limited
 // to [kMinParameter, kMaxParameter] (the motion depends only on b/a and q/a).
 TEST(PrecisionRegression, ParametersOutsideTheSafeRangeAreRefused) {
   for (double bad : {1e-320, 1e-200, 1e-101, 1e101, 1e300}) {
@@ -173,7 +173,7 @@ TEST(PrecisionRegression, ParametersOutsideTheSafeRangeAreRefused) {
   EXPECT_NO_THROW(Parameters(kMaxParameter, kMaxParameter, kMaxParameter));
 }
 
-// The double-double cosine behind the coefficient a cos(theta) of long flights (issue 12, item 2),
+// The double-double cosine behind the coefficient a cos(theta) of long flights,
 // against 50-digit mpmath values (hi + lo, the rounded head and the rounded remainder).
 TEST(DoubleDouble, CosineTo1e31AgainstMpmath) {
   struct Ref {

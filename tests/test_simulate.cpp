@@ -1,4 +1,4 @@
-// Issue 28.7: `dfchaos simulate` held every event (72 B) and sample (40 B) in memory before printing
+// `dfchaos simulate` once held every event (72 B) and sample (40 B) in memory before printing
 // them, so `--t-end 1e12 --max-events 1e8` needed about 8 GB and died of std::bad_alloc under
 // `ulimit -v 1500000`, and `--sample 1 --t-end 4.9e6` the same under 300 MB. The library now has a
 // streaming form of simulate() (a SimulationSink receives each event and sample as it is found) and
@@ -174,7 +174,7 @@ TEST(SimulateStreaming, RejectsBadInputBeforeAnyCallOfTheSink) {
   EXPECT_TRUE(r.calls.empty());
 }
 
-// ---- the tool in bounded memory (issue 28.7) ----------------------------------------------------
+// ---- the tool in bounded memory ------------------------------------------------------------------
 
 #if defined(__linux__) && !defined(DFCHAOS_TEST_ASAN)
 

@@ -26,7 +26,7 @@
 #include "t_evaluations.hpp"
 
 namespace {
-constexpr long long kDefaultN = 100;  ///< 100 x 100: the size issue 16 sets its per-cell targets at
+constexpr long long kDefaultN = 100;  ///< 100 x 100: the report's plane, at which docs/performance.md gives the per-cell cost
 constexpr long long kMaxN = 2000;     ///< as thm1_parameter_plane's bounds
 
 /// CPU seconds of this process so far (all threads).

@@ -1,4 +1,4 @@
-"""Failure tier, issue 28 (reliability): no object of the module exists in an unchecked state, and
+"""Failure tier (reliability): no object of the module exists in an unchecked state, and
 every keyword argument of every function is checked before any work, with one line naming it and
 the condition it breaks (dfchaos.InvalidParameter, a ValueError), or a TypeError for a wrong type.
 """
@@ -137,7 +137,7 @@ def test_search_counts_are_checked(search, name, value, condition):
 
 @pytest.mark.parametrize("search", SEARCHES, ids=SEARCH_IDS)
 def test_covering_work_budget_gives_up_before_any_work(search):
-    """Issue 28.6: at b/a = 1e-8, [t2, 3 pi/2] holds 1.6e7 branches of T1, more than the default
+    """At b/a = 1e-8, [t2, 3 pi/2] holds 1.6e7 branches of T1, more than the default
     budget: GaveUp at once, naming it; a larger max_branches is accepted (not run here)."""
     p = dfchaos.Parameters(1.0, 1e-8, 0.85)
     with pytest.raises(dfchaos.GaveUp, match="max_branches"):

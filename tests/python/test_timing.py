@@ -1,6 +1,6 @@
 """Timing tier: 10^6 phases through dfchaos.T against the bare C++ loop over the same phases
 (dfchaos._bench_T: T(p, theta[i]) in C++, no conversion, no result array). The ratio is printed
-(CTest runs this tier with -s, so it is in the test log), not asserted: the target of issue 17 is
+(CTest runs this tier with -s, so it is in the test log), not asserted: the target is
 at most 1.5, but timings on a shared machine vary.
 
 One parameter set (b/a = 1e-2, q/a = 0.85; the cost of T hardly depends on b/a), best of two

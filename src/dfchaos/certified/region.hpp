@@ -1,5 +1,5 @@
 /// @file region.hpp
-/// @brief Theorem 1 over parameter boxes (the moonshot of issue 14): tiles a band of the
+/// @brief Theorem 1 over parameter boxes: tiles a band of the
 /// \f$(q/a, b/a)\f$ plane by boxes on each of which Lemma 4's covering is proved for *every*
 /// parameter of the box (prove_covering over a ParamBox: the same J0, J1 for the whole box).
 ///

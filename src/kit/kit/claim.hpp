@@ -2,7 +2,7 @@
 /// @brief A claim checked by an experiment: what is claimed, where the paper says it (or that it is
 /// ours), the kind of evidence behind the verdict, the numbers the verdict rests on, and the verdict.
 ///
-/// Kinds of evidence (DESIGN.md §2), in decreasing strength:
+/// Kinds of evidence (docs/architecture.md), in decreasing strength:
 ///  - **certified**: proved in interval or ball arithmetic for the stated parameters;
 ///  - **analytic**: an identity or closed form, checked to rounding;
 ///  - **sampled**: a grid or scan in floating point — it can miss what lies between samples;
