@@ -3,6 +3,7 @@
 #include <flint/flint.h>
 #include <gmp.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -152,10 +153,27 @@ std::string Ball::mid_str(long digits) const {
   return take(arb_get_str(m.x_, digits, ARB_STR_NO_RADIUS));
 }
 
-std::string Ball::rad_str() const {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.3g", radius());
-  return buf;
+Ball::Printed Ball::printed(long digits) const {
+  Printed p{mid_str(digits), "0"};
+  // (Enough bits that the decimal midpoint is parsed far below its own last digit.)
+  const PrecisionScope scope(std::max(precision(), 4 * digits + 64));
+  // Every x of the ball lies within |x - m| <= e of the printed midpoint m (as a decimal ball:
+  // the decimal need not be a binary number).
+  const Ball e = abs(*this - Ball::decimal(p.mid));
+  double r = e.upper();
+  if (r == 0) return p;
+  // %.3g rounds to nearest, by at most half a unit in its third digit (0.5% relative): from
+  // r (1 + 1%) the printed radius is above r. Checked, and widened again if it were not.
+  for (int attempt = 0; attempt < 8; ++attempt) {
+    r *= 1.01;
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%.3g", r);
+    if (le(e, Ball::decimal(buf).lower_ball())) {  // every |x - m| <= the printed radius
+      p.rad = buf;
+      return p;
+    }
+  }
+  throw std::logic_error("Ball::printed: no enclosing radius found for " + str(20));
 }
 
 Ball operator+(const Ball& x, const Ball& y) { Ball r; arb_add(r.get(), x.get(), y.get(), g_prec); return r; }

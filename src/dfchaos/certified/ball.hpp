@@ -91,8 +91,15 @@ class Ball {
   std::string str(long digits = 20) const;
   /// The midpoint in decimal with `digits` significant digits (rounded to nearest).
   std::string mid_str(long digits = 40) const;
-  /// The radius in decimal, rounded up, 3 digits.
-  std::string rad_str() const;
+  /// A decimal ball \f$[m \pm r]\f$ that contains this ball: m is the midpoint rounded to `digits`
+  /// significant digits, and r (3 significant digits) is rounded up from
+  /// \f$|m - \mathrm{mid}| + \mathrm{rad}\f$, so that the rounding of the midpoint is paid for in
+  /// the radius. Checked in Arb before it is returned.
+  struct Printed {
+    std::string mid;  ///< the midpoint in decimal
+    std::string rad;  ///< the radius in decimal
+  };
+  Printed printed(long digits) const;
 
  private:
   arb_t x_;

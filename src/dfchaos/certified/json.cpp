@@ -31,7 +31,8 @@ std::string shortest_double(double x) {
 
 Json ball_json(const Ball& x, long digits) {
   Json j = Json::object();
-  j.set("mid", x.mid_str(digits)).set("rad", x.rad_str());
+  const Ball::Printed p = x.printed(digits);  // a decimal ball that encloses x
+  j.set("mid", p.mid).set("rad", p.rad);
   return j;
 }
 
