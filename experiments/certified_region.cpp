@@ -1,5 +1,5 @@
 /// @file certified_region.cpp
-/// @brief Issue 14, the moonshot: Theorem 1's covering (Lemma 4) proved over parameter *boxes*:
+/// @brief Theorem 1's covering (Lemma 4) proved over parameter *boxes*:
 /// every box of the output is a set of (b/a, q/a) on which, for every parameter, two disjoint
 /// certified covering segments J0, J1 exist (the same for the whole box). The band is tiled column by
 /// column in q/a, upwards in b/a, with boxes of width about c (b/a)^2 (certified_region in
@@ -21,7 +21,7 @@ using namespace dfchaos::certified;
 using namespace dfchaos::kit;
 
 const Experiment experiment{
-    .title = "Theorem 1 (Lemma 4) proved over boxes of parameters (issue 14)",
+    .title = "Theorem 1 (Lemma 4) proved over boxes of parameters",
     .paper = {"Theorem 1", "Lemma 4"},
     .tests = {"test_certified"},
     .options = {real("b-lo", 1.95e-3, "lower end of the band in b/a").range(1e-7, 0.2),

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# `dfchaos certify` (issue 14): exit 0 when proved, 1 when not proved (with JSON naming the failed
+# `dfchaos certify`: exit 0 when proved, 1 when not proved (with JSON naming the failed
 # step), 2 for bad input (one line on stderr naming the parameter, nothing on stdout).
 set -u
 cli=$1
