@@ -112,8 +112,9 @@ const Experiment experiment{
           out.macro("CertSinVarthetaZero", v.sine.mid_str(40));
           out.macro("CertVarthetaZeroDouble", shortest_double(v.value_double));
           out.macro("CertSinVarthetaZeroDouble", shortest_double(v.sine_double));
-          tex_row("Eq. (1)", "---", "$\\vartheta_0 = " + v.value.mid_str(22) + "\\ldots$, $\\sin\\vartheta_0 = " + v.sine.mid_str(22) + "\\ldots$ (radius " +
-                                        latex_number(v.value.rad_str()) + ")", "---");
+          const Ball::Printed v22 = v.value.printed(22), s22 = v.sine.printed(22);  // balls that enclose
+          tex_row("Eq. (1)", "---", "$\\vartheta_0 = " + v22.mid + "$, $\\sin\\vartheta_0 = " + s22.mid + "$ (radius " +
+                                        latex_number(v22.rad) + ", " + latex_number(s22.rad) + ")", "---");
         }
 
         // ---- the parameter points ------------------------------------------------------------------
@@ -133,7 +134,8 @@ const Experiment experiment{
             const Lemma1Proof l = certify_lemma1(Model(box));
             auto& c = certified_claim(out, std::string("cert.lemma1.") + pt.tag, "Lemma 1", statement_lemma1(box), to_json(box, l), l.verdict.proved, &l.verdict);
             c.parameter_object(params);
-            tl1.row({std::string(pt.tag), pt.q, pt.b, static_cast<long long>(l.verdict.proved), l.u_at_t2.mid(), l.t4.mid(), l.t4.radius()});
+            const auto [t4_mid, t4_rad] = l.t4.enclosing_doubles();
+            tl1.row({std::string(pt.tag), pt.q, pt.b, static_cast<long long>(l.verdict.proved), l.u_at_t2.mid(), t4_mid, t4_rad});
           }
           // Lemma 4.
           const auto t0 = Clock::now();
@@ -164,8 +166,8 @@ const Experiment experiment{
               all = all && p.verdict.proved;
               if (!p.verdict.proved && failed.empty()) failed = "m = " + std::to_string(m) + ": " + p.verdict.describe();
               per.push(to_json(cov, p));
-              tper.row({std::string(pt.tag), static_cast<long long>(m), p.word, static_cast<long long>(p.verdict.proved),
-                        p.orbit.empty() ? std::string("") : p.orbit[0].mid_str(25), p.orbit.empty() ? NAN : p.orbit[0].radius(),
+              const Ball::Printed x0 = p.orbit.empty() ? Ball::Printed{"", "nan"} : p.orbit[0].printed(25);  // encloses x_0
+              tper.row({std::string(pt.tag), static_cast<long long>(m), p.word, static_cast<long long>(p.verdict.proved), x0.mid, x0.rad,
                         p.log_multiplier.mid()});
             }
             const double secs = since(tp);
@@ -222,9 +224,11 @@ const Experiment experiment{
                                       to_json(1.0, r.b, p, seg), p.verdict.proved, &p.verdict);
             c.parameter_object(Json::object().set("a", 1.0).set("b", r.b));
             c.evidence("seconds", p.seconds);
-            for (const auto& z : p.z)
-              t.row({std::string(r.tag), r.b, std::string(r.l2 ? "L2" : "L0"), static_cast<long long>(z.k), z.z.mid(), z.z.radius(), z.t_star.mid(),
+            for (const auto& z : p.z) {
+              const auto [z_mid, z_rad] = z.z.enclosing_doubles();
+              t.row({std::string(r.tag), r.b, std::string(r.l2 ? "L2" : "L0"), static_cast<long long>(z.k), z_mid, z_rad, z.t_star.mid(),
                      z.verdict.proved ? z.jump.lower() : NAN});
+            }
             tex_row(std::string("Lemma 2 on ") + (r.l2 ? "L2" : "L0"), "(---, " + num(r.b) + ")",
                     p.verdict.proved ? "exactly " + std::to_string(p.z.size()) + " discontinuities, enclosed" : "not proved: " + latex_escape(p.verdict.step),
                     std::to_string(p.balls));

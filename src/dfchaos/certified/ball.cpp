@@ -153,6 +153,11 @@ std::string Ball::mid_str(long digits) const {
   return take(arb_get_str(m.x_, digits, ARB_STR_NO_RADIUS));
 }
 
+std::pair<double, double> Ball::enclosing_doubles() const {
+  const double m = mid();
+  return {m, abs(*this - Ball(m)).upper()};
+}
+
 Ball::Printed Ball::printed(long digits) const {
   Printed p{mid_str(digits), "0"};
   // (Enough bits that the decimal midpoint is parsed far below its own last digit.)

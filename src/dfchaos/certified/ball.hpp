@@ -15,6 +15,7 @@
 #include <arb.h>
 
 #include <string>
+#include <utility>
 
 namespace dfchaos::certified {
 
@@ -100,6 +101,9 @@ class Ball {
     std::string rad;  ///< the radius in decimal
   };
   Printed printed(long digits) const;
+  /// The ball as a double midpoint (the nearest double to the midpoint) and a double radius,
+  /// rounded up from \f$|m - \mathrm{ball}|\f$, so that \f$[m \pm r]\f$ contains the ball.
+  std::pair<double, double> enclosing_doubles() const;
 
  private:
   arb_t x_;
