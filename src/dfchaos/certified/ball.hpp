@@ -16,6 +16,8 @@
 
 #include <string>
 
+#include "dfchaos/model.hpp"
+
 namespace dfchaos::certified {
 
 /// Makes an allocation failure inside Arb, FLINT or GMP (which cannot throw: by default they
@@ -133,3 +135,9 @@ inline bool le(const Ball& x, const Ball& y) { return arb_le(x.get(), y.get()); 
 std::string fmt17(double x);
 
 }  // namespace dfchaos::certified
+
+/// \f$\pi\f$ in ball arithmetic, for the model's templates (dfchaos/model.hpp).
+template <>
+struct dfchaos::model::Constants<dfchaos::certified::Ball> {
+  static dfchaos::certified::Ball pi() { return dfchaos::certified::Ball::pi(); }  ///< \f$\pi\f$
+};
