@@ -208,4 +208,22 @@ S progression_velocity_from_rest(const S& a, const S& two_c, const S& t_s, const
   return -(a * (cos(t) - cos(t_s))) + two_c * (t - t_s);
 }
 
+// ---- the symmetric tangencies (Eq. 14 with theta_1 + theta = pi mod 2 pi) ----------------------
+
+/// \f$h(z) = 2z - (a/b)\cos z\f$: a start \f$z\f$ whose flight touches the delimiter tangentially at
+/// \f$\theta_1 = \pi - z \pmod{2\pi}\f$ solves \f$h(z) = (2k+1)\pi\f$ (Eqs. 11 and 14 with \f$b\f$
+/// eliminated; next_hit.hpp, symmetric_tangencies()). Decreasing on \f$(t_2, t_3)\f$.
+template <class S>
+S symmetric_tangency_h(const S& a_over_b, const S& z) {
+  using std::cos;
+  return 2.0 * z - a_over_b * cos(z);
+}
+
+/// The flight \f$s = \theta_1 - z = -(a/b)\cos z\f$ of a symmetric tangency from \f$z\f$.
+template <class S>
+S symmetric_tangency_flight(const S& a_over_b, const S& z) {
+  using std::cos;
+  return -(a_over_b * cos(z));
+}
+
 }  // namespace dfchaos::model
