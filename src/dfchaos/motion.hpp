@@ -21,6 +21,11 @@ const char* regime_code(Regime r);
 /// \f[ x(t) = -a\sin t + k s^2 + (v_s + a\cos t_s)s + x_s + a\sin t_s, \qquad
 ///     \dot x(t) = v_s + 2ks - a(\cos t - \cos t_s). \f]
 /// (Eq. 7 is the velocity with \f$k = c\f$, \f$t_s = t_0\f$, \f$v_s = 0\f$.)
+///
+/// The accurate form of the plain formulas of model.hpp (model::G1 for a free flight from rest,
+/// model::progression_velocity_from_rest for a progression from rest): the elapsed time \f$s\f$ is
+/// formed from two Instants in long double and the forcing is evaluated at phases, so that flights
+/// of many periods keep their digits. test_model checks that the two forms agree.
 struct HarmonicMotion {
   double a;        ///< forcing amplitude \f$a\f$
   double k;        ///< half the constant force of the regime: \f$b\f$ (free) or \f$c\f$ (progression)

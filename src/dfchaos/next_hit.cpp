@@ -6,6 +6,7 @@
 
 #include "dfchaos/bisect.hpp"
 #include "dfchaos/errors.hpp"
+#include "dfchaos/model.hpp"
 #include "dfchaos/motion.hpp"
 
 namespace dfchaos {
@@ -153,7 +154,7 @@ namespace {
 struct TangencyRange {
   double lo, hi, r;
   long long k_lo = 0, k_hi = -1;
-  double h(double th) const { return 2 * th - r * std::cos(th); }
+  double h(double th) const { return model::symmetric_tangency_h(r, th); }
 };
 TangencyRange tangency_range(const Parameters& p, double lo, double hi) {
   require_theta(p, lo, "lo");
@@ -181,7 +182,7 @@ std::vector<SymmetricTangency> symmetric_tangencies(const Parameters& p, double 
     const auto [a, b] = bisect([&](double m) { return t.h(m) >= target; }, t.lo, t.hi, {.max_iterations = 200, .rel_tol = 2 * DBL_EPSILON});
     const double z = 0.5 * (a + b);
     if (z < t.lo || z > t.hi) continue;
-    out.push_back(SymmetricTangency{z, -t.r * std::cos(z), k});
+    out.push_back(SymmetricTangency{z, model::symmetric_tangency_flight(t.r, z), k});
   }
   return out;
 }

@@ -18,7 +18,9 @@ namespace dfchaos {
 /// \f$G_1(\theta, \cdot)\f$ of Eq. (11) as a QuadraticPlusHarmonic with origin \f$\theta\f$ (turn 0).
 QuadraticPlusHarmonic G1_function(const Parameters& p, double theta);
 
-/// \f$G_1(\theta, t)\f$ (Eq. 11) at an instant \f$t\f$ (turn counted from \f$\theta\f$'s turn 0).
+/// \f$G_1(\theta, t)\f$ (Eq. 11) at an instant \f$t\f$ (turn counted from \f$\theta\f$'s turn 0): the
+/// accurate form of model::G1 (the polynomial re-centred at \f$t\f$ as the root search evaluates it,
+/// roots.hpp); test_model checks that the two agree.
 double G1(const Parameters& p, double theta, const Instant& t);
 /// \f$\partial G_1/\partial t = 2b(t-\theta) - a\cos t + a\cos\theta\f$: the velocity; its zero at a
 /// root of \f$G_1\f$ is the tangency condition (14).

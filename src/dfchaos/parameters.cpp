@@ -12,6 +12,7 @@
 
 #include "dfchaos/double_double.hpp"
 #include "dfchaos/errors.hpp"
+#include "dfchaos/model.hpp"
 #include "dfchaos/phase.hpp"
 
 namespace dfchaos {
@@ -73,20 +74,17 @@ Parameters::Parameters(double a, double b, double q) : a_(a), b_(b), q_(q) {
   require_in_range("a", a);
   require_in_range("b", b);
   require_in_range("q", q);
-  const double w = (q - 2 * b) / a;
-  if (std::fabs(w) < 1) {
-    const double s = std::asin(w);
-    t0_ = wrap_phase(s);
-    t1_ = pi - s;
+  if (std::fabs((q - 2 * b) / a) < 1) {
+    t0_ = wrap_phase(model::t0(a, b, q));  // the arcsine lies in (-pi/2, pi/2): t0 up to a turn
+    t1_ = model::t1(a, b, q);
   }
   if (2 * b < a) {
-    const double s = std::asin(2 * b / a);
-    t2_ = pi + s;
-    t3_ = two_pi - s;
+    t2_ = model::t2(a, b);
+    t3_ = model::t3(a, b);
   }
 }
 
-double Parameters::F(double t) const { return a_ * std::sin(t) + 2 * b_; }
+double Parameters::F(double t) const { return model::F(a_, b_, t); }
 
 double Parameters::t2_required() const {
   if (!t2_) throw InvalidParameter("b", "0 < b < a/2 (otherwise F never vanishes and there is no free flight)", b_);

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "dfchaos/errors.hpp"
+#include "dfchaos/model.hpp"
 #include "dfchaos/regime_chain.hpp"
 
 namespace dfchaos {
@@ -101,8 +102,11 @@ double T(const Parameters& p, double theta) { return return_map_step(p, theta).T
 
 double G2(const Parameters& p, double theta, const Instant& theta1, const Instant& theta2) {
   const Instant start = Instant::at_phase(theta);
-  const long double s1 = elapsed(start, theta1), s21 = elapsed(theta1, theta2);
-  return static_cast<double>(2.0L * p.b() * s1 + p.a() * std::cos(theta) + 2.0L * p.c() * s21 - p.a() * std::cos(theta2.phase));
+  // In long double, with the elapsed times of the instants and the cosines at their phases.
+  const long double a = p.a(), b = p.b(), q = p.q();
+  return static_cast<double>(model::G2_from_start(a, b, model::two_c(b, q), std::cos(static_cast<long double>(theta)),
+                                                  elapsed(start, theta1), elapsed(theta1, theta2),
+                                                  static_cast<long double>(theta2.phase)));
 }
 
 }  // namespace dfchaos

@@ -17,6 +17,8 @@
 #include <string>
 #include <utility>
 
+#include "dfchaos/model.hpp"
+
 namespace dfchaos::certified {
 
 /// Makes an allocation failure inside Arb, FLINT or GMP (which cannot throw: by default they
@@ -140,3 +142,9 @@ inline bool le(const Ball& x, const Ball& y) { return arb_le(x.get(), y.get()); 
 std::string fmt17(double x);
 
 }  // namespace dfchaos::certified
+
+/// \f$\pi\f$ in ball arithmetic, for the model's templates (dfchaos/model.hpp).
+template <>
+struct dfchaos::model::Constants<dfchaos::certified::Ball> {
+  static dfchaos::certified::Ball pi() { return dfchaos::certified::Ball::pi(); }  ///< \f$\pi\f$
+};

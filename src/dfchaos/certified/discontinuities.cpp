@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "dfchaos/certified/oracle.hpp"
+#include "dfchaos/model.hpp"
 
 namespace dfchaos::certified {
 
@@ -51,7 +52,7 @@ DiscontinuityProof prove_discontinuities(double a, double b, const Ball& lo, con
   r.hi = hi.upper();
   if (!lt(m.t2, Ball(r.lo)) || !lt(Ball(r.hi), m.t3)) return finish(Verdict::fail("Lemma 2: L inside (t2, t3)", "b/a too large for this segment"));
   const Ball ab = m.a / m.b;
-  auto h = [&](const Ball& z) { return 2.0 * z - ab * cos(z); };
+  auto h = [&](const Ball& z) { return model::symmetric_tangency_h(ab, z); };
   // Odd multiples of pi in h(L): h decreases.
   const Ball h_lo = h(Ball(r.hi)), h_hi = h(Ball(r.lo));
   const Ball pi = m.pi;
@@ -82,7 +83,7 @@ DiscontinuityProof prove_discontinuities(double a, double b, const Ball& lo, con
     Tangency t;
     t.k = k;
     t.z = Ball::hull(zl, zh);
-    t.flight = -(ab * cos(t.z));
+    t.flight = model::symmetric_tangency_flight(ab, t.z);
     t.t_star = t.z + t.flight;
     if (!t.flight.is_positive()) return finish(Verdict::fail("Lemma 2: tangency", "flight not positive at k = " + std::to_string(k)));
     r.z.push_back(t);

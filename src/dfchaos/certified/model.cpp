@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "dfchaos/errors.hpp"
+#include "dfchaos/model.hpp"
 
 namespace dfchaos::certified {
 
@@ -24,14 +25,13 @@ Model::Model(const ParamBox& box) : box_(box) {
   b_hi = Ball(box.b_hi);
   q_lo = Ball(box.q_lo);
   q_hi = Ball(box.q_hi);
-  two_c = 2.0 * b - q;
+  two_c = model::two_c(b, q);
   pi = Ball::pi();
   two_pi = 2.0 * pi;
-  t0 = asin((q - 2.0 * b) / a);
-  t1 = pi - t0;
-  const Ball as = asin(2.0 * b / a);
-  t2 = pi + as;
-  t3 = two_pi - as;
+  t0 = model::t0(a, b, q);
+  t1 = model::t1(a, b, q);
+  t2 = model::t2(a, b);
+  t3 = model::t3(a, b);
   t2_at_b_lo = t2_of(b_lo);
   t2_at_b_hi = t2_of(b_hi);
 }
@@ -44,8 +44,8 @@ Verdict Model::admissible() const {
   return Verdict::ok();
 }
 
-Ball Model::F(const Ball& t) const { return a * sin(t) + 2.0 * b; }
+Ball Model::F(const Ball& t) const { return model::F(a, b, t); }
 
-Ball Model::t2_of(const Ball& bb) const { return pi + asin(2.0 * bb / a); }
+Ball Model::t2_of(const Ball& bb) const { return model::t2(a, bb); }
 
 }  // namespace dfchaos::certified

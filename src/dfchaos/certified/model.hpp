@@ -29,7 +29,7 @@ struct ParamBox {
 
 /// The balls of one parameter box, computed once.
 ///
-/// Phases (Section 2, DESIGN.md §3): \f$t_0 = \arcsin((q-2b)/a)\f$, \f$t_1 = \pi - t_0\f$,
+/// Phases (Section 2), the ball instantiations of dfchaos/model.hpp: \f$t_0 = \arcsin((q-2b)/a)\f$, \f$t_1 = \pi - t_0\f$,
 /// \f$t_2 = \pi + \arcsin(2b/a)\f$, \f$t_3 = 2\pi - \arcsin(2b/a)\f$, each enclosed over the box.
 class Model {
  public:

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "dfchaos/certified/oracle.hpp"
+#include "dfchaos/model.hpp"
 
 namespace dfchaos::certified {
 
@@ -51,7 +52,7 @@ Verdict StartSet::valid(const Model& m) const {
   } else if (!le(m.t2_at_b_hi, lo)) {
     return Verdict::fail("start set", "t2 <= theta not proved at theta = " + lo.mid_str(17));
   }
-  const Ball t3_hi = m.two_pi - asin(2.0 * m.b_hi / m.a);
+  const Ball t3_hi = model::t3(m.a, m.b_hi);
   if (!lt(hi, t3_hi)) return Verdict::fail("start set", "theta < t3 not proved at theta = " + hi.mid_str(17));
   return Verdict::ok();
 }
@@ -65,16 +66,9 @@ std::string StartSet::describe() const {
 
 // ---- G1 -----------------------------------------------------------------------------------------
 
-Ball G1(const Model& m, const Ball& theta, const Ball& t, const Ball& b) {
-  const Ball s = t - theta;
-  Ball st, ct;
-  sin_cos(theta, st, ct);
-  return b * sqr(s) - m.a * sin(t) + m.a * ct * s + m.a * st;
-}
+Ball G1(const Model& m, const Ball& theta, const Ball& t, const Ball& b) { return model::G1(m.a, b, theta, t); }
 
-Ball dG1_dt(const Model& m, const Ball& theta, const Ball& t, const Ball& b) {
-  return 2.0 * b * (t - theta) - m.a * cos(t) + m.a * cos(theta);
-}
+Ball dG1_dt(const Model& m, const Ball& theta, const Ball& t, const Ball& b) { return model::dG1_dt(m.a, b, theta, t); }
 
 namespace {
 
@@ -82,9 +76,9 @@ namespace {
 class FlightGap final : public NegativityTarget {
  public:
   FlightGap(const Model& m, const Ball& theta, const Ball& b) : m_(m), theta_(theta), b_(b) { sin_cos(theta, st_, ct_); }
-  Ball value(const Ball& s) const override { return b_ * sqr(s) - m_.a * sin(theta_ + s) + m_.a * ct_ * s + m_.a * st_; }
-  Ball slope(const Ball& s) const override { return 2.0 * b_ * s - m_.a * cos(theta_ + s) + m_.a * ct_; }
-  Ball curvature(const Ball& s) const override { return 2.0 * b_ + m_.a * sin(theta_ + s); }
+  Ball value(const Ball& s) const override { return model::G1_from_start(m_.a, b_, st_, ct_, s, theta_ + s); }
+  Ball slope(const Ball& s) const override { return model::dG1_dt_from_start(m_.a, b_, ct_, s, theta_ + s); }
+  Ball curvature(const Ball& s) const override { return model::F(m_.a, b_, theta_ + s); }
   bool envelope_negative(const Ball& lo, const Ball& hi) const override {
     // U(s) = b s^2 + a s cos(theta) + a sin(theta) + a >= G1, convex in s.
     auto U = [&](const Ball& s) { return b_ * sqr(s) + m_.a * ct_ * s + m_.a * st_ + m_.a; };
@@ -101,8 +95,8 @@ class FlightGap final : public NegativityTarget {
 class MinusVelocity final : public NegativityTarget {
  public:
   MinusVelocity(const Model& m, const Ball& theta, const Ball& b) : m_(m), theta_(theta), b_(b), ct_(cos(theta)) {}
-  Ball value(const Ball& t) const override { return -(2.0 * b_ * (t - theta_) - m_.a * cos(t) + m_.a * ct_); }
-  Ball slope(const Ball& t) const override { return -(2.0 * b_ + m_.a * sin(t)); }
+  Ball value(const Ball& t) const override { return -model::dG1_dt_from_start(m_.a, b_, ct_, t - theta_, t); }
+  Ball slope(const Ball& t) const override { return -model::F(m_.a, b_, t); }
   Ball curvature(const Ball& t) const override { return -(m_.a * cos(t)); }
   std::string variable() const override { return "t"; }
 

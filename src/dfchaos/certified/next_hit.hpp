@@ -72,9 +72,9 @@ struct StartSet {
   std::string describe() const;
 };
 
-/// \f$G_1(\theta, t; b)\f$ of Eq. (11) (a fixed by the model).
+/// \f$G_1(\theta, t; b)\f$ of Eq. (11) (a fixed by the model): model::G1 in ball arithmetic.
 Ball G1(const Model& m, const Ball& theta, const Ball& t, const Ball& b);
-/// \f$\partial_t G_1 = 2b(t-\theta) - a\cos t + a\cos\theta\f$: the velocity of the mass.
+/// \f$\partial_t G_1 = 2b(t-\theta) - a\cos t + a\cos\theta\f$: the velocity of the mass (model::dG1_dt).
 Ball dG1_dt(const Model& m, const Ball& theta, const Ball& t, const Ball& b);
 
 /// The departure step: \f$G_1(\theta,\theta+s;b) < 0\f$ for \f$s \in (0, s_0]\f$, every start of `set`

@@ -4,11 +4,12 @@
 #include <vector>
 
 #include "dfchaos/certified/oracle.hpp"
+#include "dfchaos/model.hpp"
 
 namespace dfchaos::certified {
 
 Ball G2(const Model& m, const Ball& theta, const Ball& theta1, const Ball& t, const Ball& b, const Ball& q) {
-  return 2.0 * b * (theta1 - theta) + m.a * cos(theta) + (2.0 * b - q) * (t - theta1) - m.a * cos(t);
+  return model::G2(m.a, b, q, theta, theta1, t);
 }
 
 namespace {
@@ -17,11 +18,9 @@ namespace {
 class Velocity final : public NegativityTarget {
  public:
   Velocity(const Model& m, const Ball& theta, const Ball& theta1, const Ball& b, const Ball& q, double sign)
-      : m_(m), sign_(sign), two_c_(2.0 * b - q) {
-    base_ = 2.0 * b * (theta1 - theta) + m.a * cos(theta) - two_c_ * theta1;  // G2 = base + 2c t - a cos t
-  }
-  Ball value(const Ball& t) const override { return sign_ * (base_ + two_c_ * t - m_.a * cos(t)); }
-  Ball slope(const Ball& t) const override { return sign_ * (two_c_ + m_.a * sin(t)); }
+      : m_(m), sign_(sign), two_c_(model::two_c(b, q)), base_(model::G2_constant(m.a, b, two_c_, theta, theta1)) {}
+  Ball value(const Ball& t) const override { return sign_ * model::G2_shifted(m_.a, two_c_, base_, t); }
+  Ball slope(const Ball& t) const override { return sign_ * model::forcing(m_.a, two_c_, t); }
   Ball curvature(const Ball& t) const override { return sign_ * (m_.a * cos(t)); }
   std::string variable() const override { return "t"; }
 
@@ -34,8 +33,8 @@ class Velocity final : public NegativityTarget {
 /// \f$t \mapsto a\sin t + 2b - q\f$ (the slope of G2 in t).
 class Acceleration final : public NegativityTarget {
  public:
-  Acceleration(const Model& m, const Ball& b, const Ball& q) : m_(m), two_c_(2.0 * b - q) {}
-  Ball value(const Ball& t) const override { return m_.a * sin(t) + two_c_; }
+  Acceleration(const Model& m, const Ball& b, const Ball& q) : m_(m), two_c_(model::two_c(b, q)) {}
+  Ball value(const Ball& t) const override { return model::forcing(m_.a, two_c_, t); }
   Ball slope(const Ball& t) const override { return m_.a * cos(t); }
   Ball curvature(const Ball& t) const override { return -(m_.a * sin(t)); }
   std::string variable() const override { return "t"; }
@@ -186,10 +185,7 @@ StopArcProof certify_stop_arc(const Model& m, const StartSet& set, const T1Proof
 // ---- Lemma 1 --------------------------------------------------------------------------------------
 
 Ball lemma1_velocity_at_t2(const Ball& a, const Ball& b, const Ball& q) {
-  const Ball pi = Ball::pi();
-  const Ball t0 = asin((q - 2.0 * b) / a);
-  const Ball t2 = pi + asin(2.0 * b / a);
-  return -(a * (cos(t2) - cos(t0))) + (2.0 * b - q) * (t2 - t0);
+  return model::progression_velocity_from_rest(a, model::two_c(b, q), model::t0(a, b, q), model::t2(a, b));
 }
 
 namespace {
@@ -197,7 +193,7 @@ namespace {
 /// Refines t4 in [t1, t2] for a point box by bisection on the sign of u (decreasing there).
 Ball enclose_t4(const Model& m) {
   Ball lo = m.t1.lower_ball(), hi = m.t2.upper_ball();
-  auto u = [&](const Ball& t) { return -(m.a * (cos(t) - cos(m.t0))) + m.two_c * (t - m.t0); };
+  auto u = [&](const Ball& t) { return model::progression_velocity_from_rest(m.a, m.two_c, m.t0, t); };
   for (int it = 0; it < 200; ++it) {
     const Ball mid = ((lo + hi) * 0.5).mid_ball();
     const Ball v = u(mid);

@@ -29,7 +29,7 @@
 
 namespace dfchaos::certified {
 
-/// \f$G_2(\theta, \theta_1, t; b, q)\f$ of Eq. (17).
+/// \f$G_2(\theta, \theta_1, t; b, q)\f$ of Eq. (17): model::G2 in ball arithmetic.
 Ball G2(const Model& m, const Ball& theta, const Ball& theta1, const Ball& t, const Ball& b, const Ball& q);
 
 /// The certified end of the first progression.

@@ -109,11 +109,11 @@ bool derivative_T(const Model& m, const StartSet& set, const TProof& t, Ball& dT
   const Ball th = set.hull(m);
   const Ball& th1 = t.t1.enclosure;
   const Ball& th2 = t.theta2.enclosure;
-  const Ball F_theta = m.a * sin(th) + 2.0 * m.b;
+  const Ball F_theta = m.F(th);
   const Ball v1 = dG1_dt(m, th, th1, m.b);
   if (!v1.is_positive()) return false;
   const Ball dth1 = F_theta * (th1 - th) / v1;
-  const Ball den = m.a * sin(th2) + 2.0 * m.b - m.q;
+  const Ball den = m.F(th2) - m.q;
   if (!den.is_negative()) return false;
   dT = (F_theta - m.q * dth1) / den;
   return dT.is_finite();

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "dfchaos/certified/vartheta0.hpp"
+#include "dfchaos/model.hpp"
 #include "dfchaos/superstable.hpp"
 
 namespace dfchaos::certified {
@@ -204,7 +205,7 @@ Theorem2Counterexample prove_theorem2_counterexample(double a, double b, double 
     r.verdict = Verdict::fail("Theorem 2 counterexample: (22)", "theta2(t2) mod 2pi = " + r.theta2_phase.str(12));
     return r;
   }
-  auto u = [&](const Ball& t) { return -(m.a * (cos(t) - cos(m.t0))) + m.two_c * (t - m.t0); };
+  auto u = [&](const Ball& t) { return model::progression_velocity_from_rest(m.a, m.two_c, m.t0, t); };
   r.u_at_t2 = u(m.t2);
   r.u_at_t3 = u(m.t3);
   if (!r.u_at_t2.is_positive() || !r.u_at_t3.is_negative()) {

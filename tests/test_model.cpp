@@ -1,0 +1,139 @@
+// The model's formulas (dfchaos/model.hpp) in their three arithmetics:
+//  - the core's accurate forms (the gap G1 as a QuadraticPlusHarmonic re-centred in double-double,
+//    the motions of HarmonicMotion with long-double elapsed times) agree with the plain templates
+//    evaluated in long double, at many phases and elapsed times;
+//  - the ball instantiation encloses the long-double one (the same formula in both arithmetics);
+//  - the switching phases of Parameters and of the certified Model are the templates' values.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "dfchaos/certified/ball.hpp"
+#include "dfchaos/certified/model.hpp"
+#include "dfchaos/model.hpp"
+#include "dfchaos/motion.hpp"
+#include "dfchaos/next_hit.hpp"
+#include "dfchaos/return_map.hpp"
+#include "test_support.hpp"
+
+using namespace dfchaos;
+using certified::Ball;
+
+namespace {
+
+// Relative agreement of the accurate and the plain forms, measured against the size of the terms
+// of the formula (b s^2 + a |s| + 2a for G1): both are far more accurate than this at the elapsed
+// times drawn here (up to 10^4, where a long-double s is resolved to 1e-15).
+constexpr long double kRelTol = 1e-13L;
+// Draws of (b/a, q/a, theta), and elapsed times per draw.
+constexpr int kDraws = 400;
+const std::vector<double> kElapsed = {1e-3, 0.37, 1.0, 2.9, 7.5, 31.0, 250.0, 4096.5};
+
+/// The instant theta + s in theta's turn numbering, and the same time as a long double.
+struct Time {
+  Instant at;
+  long double t;
+};
+Time time_after(double theta, double s) {
+  const Instant at = Instant::from_time(theta + s);
+  return {at, theta + elapsed(Instant::at_phase(theta), at)};
+}
+
+}  // namespace
+
+TEST(ModelFormulas, GapOfTheCoreAgreesWithThePlainFormula) {
+  test_support::Drawer draw(1e-4, 0.3, 0.6, 0.99);
+  long checked = 0;
+  for (int i = 0; i < kDraws; ++i) {
+    const auto d = draw.next();
+    const Parameters p(1.0, d.b, d.q);
+    const long double a = 1.0L, b = d.b, th = d.theta;
+    for (double s : kElapsed) {
+      const Time t = time_after(d.theta, s);
+      const long double S = t.t - th;
+      const long double scale = b * S * S + a * std::fabs(S) + 2 * a;
+      // G1 (Eq. 11): the re-centred evaluation of the search against the plain template.
+      EXPECT_NEAR(G1(p, d.theta, t.at), model::G1(a, b, th, t.t), kRelTol * scale) << p.describe() << " theta=" << d.theta << " s=" << s;
+      // dG1/dt: the search's slope, and the free motion's velocity (Eq. 3 from rest).
+      const long double v = model::dG1_dt(a, b, th, t.t), vscale = 2 * b * std::fabs(S) + 2 * a;
+      EXPECT_NEAR(dG1_dt(p, d.theta, t.at), v, kRelTol * vscale) << p.describe() << " theta=" << d.theta << " s=" << s;
+      const FreeMotion free(p, Instant::at_phase(d.theta), 0.0, 0.0);
+      EXPECT_NEAR(free.velocity(t.at), v, kRelTol * vscale);
+      EXPECT_NEAR(free.position(t.at), model::G1(a, b, th, t.t), kRelTol * scale);
+      ++checked;
+    }
+  }
+  EXPECT_EQ(checked, kDraws * static_cast<long>(kElapsed.size()));
+}
+
+TEST(ModelFormulas, ProgressionOfTheCoreAgreesWithThePlainFormula) {
+  test_support::Drawer draw(1e-4, 0.3, 0.6, 0.99);
+  for (int i = 0; i < kDraws; ++i) {
+    const auto d = draw.next();
+    const Parameters p(1.0, d.b, d.q);
+    ASSERT_TRUE(p.t0());
+    const long double a = 1.0L, b = d.b, q = d.q, t0 = *p.t0();
+    const ProgressionMotion prog(p, Instant::at_phase(*p.t0()), 0.0, 0.0);
+    for (double s : kElapsed) {
+      const Time t = time_after(*p.t0(), s);
+      const long double S = t.t - t0;
+      // Eq. (7): the progression from rest at t0.
+      EXPECT_NEAR(prog.velocity(t.at), model::progression_velocity_from_rest(a, model::two_c(b, q), t0, t.t),
+                  kRelTol * (std::fabs(2 * b - q) * std::fabs(S) + 2 * a))
+          << p.describe() << " s=" << s;
+    }
+    // Eq. (17) in its two forms: from the start, and shifted by the constant of a search.
+    const long double th = d.theta, th1 = th + 3.7L, t = th1 + 1.3L, c2 = model::two_c(b, q);
+    EXPECT_NEAR(model::G2(a, b, q, th, th1, t), model::G2_shifted(a, c2, model::G2_constant(a, b, c2, th, th1), t), 1e-15L * (1 + th1));
+    // G2 at t = theta1 is the impact velocity dG1/dt(theta, theta1).
+    EXPECT_NEAR(model::G2(a, b, q, th, th1, th1), model::dG1_dt(a, b, th, th1), 1e-15L * (1 + th1));
+  }
+}
+
+TEST(ModelFormulas, BallsEncloseTheLongDoubleValues) {
+  test_support::Drawer draw(1e-4, 0.3, 0.6, 0.99);
+  auto encloses = [](const Ball& x, long double v, long double scale) {
+    const long double tol = 1e-17L * scale;  // the long-double evaluation's own rounding
+    return x.lower() - tol <= v && v <= x.upper() + tol;
+  };
+  for (int i = 0; i < kDraws; ++i) {
+    const auto d = draw.next();
+    const Ball a(1.0), b(d.b), q(d.q), th(d.theta);
+    const long double al = 1.0L, bl = d.b, ql = d.q, thl = d.theta;
+    EXPECT_TRUE(encloses(model::t0(a, b, q), model::t0(al, bl, ql), 8));
+    EXPECT_TRUE(encloses(model::t1(a, b, q), model::t1(al, bl, ql), 8));
+    EXPECT_TRUE(encloses(model::t2(a, b), model::t2(al, bl), 8));
+    EXPECT_TRUE(encloses(model::t3(a, b), model::t3(al, bl), 8));
+    for (double s : {0.25, 3.0, 40.0}) {
+      const long double tl = thl + s;
+      const Ball t = th + Ball(s);
+      EXPECT_TRUE(encloses(model::G1(a, b, th, t), model::G1(al, bl, thl, tl), 4 + bl * s * s + s)) << d.theta << " " << s;
+      EXPECT_TRUE(encloses(model::dG1_dt(a, b, th, t), model::dG1_dt(al, bl, thl, tl), 4 + bl * s));
+      EXPECT_TRUE(encloses(model::G2(a, b, q, th, t, t + Ball(1.5)), model::G2(al, bl, ql, thl, tl, tl + 1.5L), 4 + s));
+      EXPECT_TRUE(encloses(model::F(a, b, t), model::F(al, bl, tl), 4));
+    }
+  }
+}
+
+TEST(ModelFormulas, BothLayersTakeTheirPhasesFromTheTemplates) {
+  test_support::Drawer draw(1e-6, 0.45, 0.3, 0.99);
+  for (int i = 0; i < kDraws; ++i) {
+    const auto d = draw.next();
+    const Parameters p(1.0, d.b, d.q);
+    ASSERT_TRUE(p.t0() && p.t2());
+    // Parameters: the double instantiation, t0 reduced to [0, 2 pi).
+    EXPECT_EQ(*p.t0(), wrap_phase(model::t0(1.0, d.b, d.q)));
+    EXPECT_EQ(*p.t1(), model::t1(1.0, d.b, d.q));
+    EXPECT_EQ(*p.t2(), model::t2(1.0, d.b));
+    EXPECT_EQ(*p.t3(), model::t3(1.0, d.b));
+    EXPECT_EQ(p.F(d.theta), d.b * 2 + std::sin(d.theta));
+    // The certified Model at the point: balls that contain the doubles.
+    const certified::Model m(certified::ParamBox::point(1.0, d.b, d.q));
+    EXPECT_TRUE(m.t0.contains(model::t0(Ball(1.0), Ball(d.b), Ball(d.q))));
+    EXPECT_LE(m.t2.lower(), *p.t2() + 4e-16);
+    EXPECT_GE(m.t2.upper(), *p.t2() - 4e-16);
+    EXPECT_LE(m.t3.lower(), *p.t3() + 8e-16);
+    EXPECT_GE(m.t3.upper(), *p.t3() - 8e-16);
+  }
+}
