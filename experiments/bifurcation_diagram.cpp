@@ -120,7 +120,7 @@ const Experiment experiment{
           const MapDerivative d = map_derivative(p, c.step);
           if (d.flat || !std::isfinite(d.dT)) continue;
           const double h = 1e-6 / std::max(1.0, std::fabs(d.dT));
-          if (th - h < t2 || th + h >= t3) continue;
+          if (!p.in_map_domain(th - h) || !p.in_map_domain(th + h)) continue;
           const LabelledStep lo = continuity_label(p, th - h), hi = continuity_label(p, th + h);
           if (!(lo.label == c.label) || !(hi.label == c.label) || lo.step.scenario != Scenario::A || hi.step.scenario != Scenario::A) continue;
           const double dT_fd = (hi.step.T - lo.step.T) / (2 * h);

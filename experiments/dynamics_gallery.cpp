@@ -13,6 +13,7 @@
 #include "dfchaos/invariant_density.hpp"
 #include "dfchaos/map_derivative.hpp"
 #include "dfchaos/next_hit.hpp"
+#include "dfchaos/orbit.hpp"
 #include "dfchaos/return_map.hpp"
 #include "dfchaos/simulator.hpp"
 #include "kit/experiment.hpp"
@@ -79,15 +80,9 @@ const Experiment experiment{
       const double t2 = *p.t2(), t3 = *p.t3();
 
       // ---- the time history: from rest at the delimiter at a phase on the attractor
-      double theta0 = t2 + 0.3 * (t3 - t2);
-      for (long long n = 0; n < transient; ++n) theta0 = T(p, theta0);
+      const double theta0 = T_power(p, t2 + 0.3 * (t3 - t2), transient);
       double span = 0;  // a time span that surely holds n_steps switches (the map's own steps, doubled)
-      double th_map = theta0;
-      for (int n = 0; n < n_steps; ++n) {
-        const MapStep s = return_map_step(p, th_map);
-        span += s.elapsed;
-        th_map = s.T;
-      }
+      for (const MapStep& s : Orbit(p, theta0, n_steps)) span += s.elapsed;
       SimulationOptions events_only;
       events_only.max_events = 100 * n_steps + 100;
       const Simulation probe = simulate(p, 0, 0, 0, theta0, theta0 + 2 * span + 20, events_only);
@@ -182,14 +177,13 @@ const Experiment experiment{
       double v_min = INFINITY;
       long long grazing = 0, not_progression = 0;
       {
-        double th = theta0;
-        for (long long n = 0; n < n_impacts; ++n) {
-          const MapStep s = return_map_step(p, th);
+        const Orbit orbit(p, theta0, n_impacts);
+        for (auto it = orbit.begin(); it != orbit.end(); ++it) {
+          const MapStep& s = *it;
           if (s.hit.hit_velocity == 0) ++grazing;
           else v_min = std::min(v_min, s.hit.hit_velocity);
           if (s.hit.hit_velocity > 0 && s.chain.rfind("f>p", 0) != 0) ++not_progression;
-          impacts.row({n, th, s.hit.t1.phase, s.hit.hit_velocity, s.hit.theta1 - th, std::string(scenario_name(s.scenario)), s.T});
-          th = s.T;
+          impacts.row({it.n(), s.theta, s.hit.t1.phase, s.hit.hit_velocity, s.hit.theta1 - s.theta, std::string(scenario_name(s.scenario)), s.T});
         }
       }
       run.table("impacts", impacts);
@@ -274,20 +268,19 @@ const Experiment experiment{
       const double kLostAt = 52 * std::log(2.0);
       long long lost_after = -1, flat_after = -1;
       {
-        double x = t2, log_growth = 0;
-        for (long long k = 0; k < kFollow; ++k) {
-          const MapStep st = return_map_step(p, x);
-          const MapDerivative d = map_derivative(p, st);
+        double log_growth = 0;
+        const Orbit orbit(p, t2, kFollow);
+        for (auto it = orbit.begin(); it != orbit.end(); ++it) {
+          const MapDerivative d = map_derivative(p, *it);
           if (d.flat) {
-            flat_after = k + 1;
+            flat_after = it.n() + 1;
             break;
           }
           log_growth += std::log(std::fabs(d.dT));
           if (!(log_growth <= kLostAt)) {  // (also a NaN derivative at a grazing)
-            lost_after = k + 1;
+            lost_after = it.n() + 1;
             break;
           }
-          x = st.T;
         }
       }
       const bool collapsed = h1.first_t2 >= 0 && h2.first_t2 >= 0;

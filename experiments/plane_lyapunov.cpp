@@ -15,6 +15,7 @@
 #include <utility>
 #include <vector>
 
+#include "dfchaos/errors.hpp"
 #include "dfchaos/parameters.hpp"
 #include "dfchaos/superstable.hpp"
 #include "kit/experiment.hpp"
@@ -30,11 +31,6 @@ namespace {
 constexpr long long kCycleMaxPeriod = 1000;
 /// The shift for the second check of a cycle's verdict (1000 times below stop_cycle's error per step).
 constexpr double kNudge = 1e-12;
-std::string g17(double x) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.17g", x);
-  return buf;
-}
 }  // namespace
 
 const Experiment experiment{
@@ -49,7 +45,7 @@ const Experiment experiment{
       const long long n = run.count_int("n");
       sweep::Spec spec;
       spec.a = 1;
-      spec.q_over_a = sweep::Range::parse("q-range", g17(sin_vartheta0()) + ":1:" + std::to_string(n) + ":mid");
+      spec.q_over_a = sweep::Range::parse("q-range", format_double(sin_vartheta0()) + ":1:" + std::to_string(n) + ":mid");
       spec.b_over_a = sweep::Range::parse("b-range", "1e-4:0.1:" + std::to_string(n) + ":log");
       spec.observables = sweep::ObservableSet::parse("observables", "lyapunov");
       spec.validate();

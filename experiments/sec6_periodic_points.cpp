@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "dfchaos/errors.hpp"
-#include "dfchaos/return_map.hpp"
+#include "dfchaos/orbit.hpp"
 #include "dfchaos/symbolic.hpp"
 #include "kit/experiment.hpp"
 #include "kit/format.hpp"
@@ -56,9 +56,7 @@ const Experiment experiment{
         // rounding of p stays below the step tolerance.
         double literal = NAN;
         if (orb.log_expansion + std::log(4e-16) < std::log(kStepTol)) {
-          double y = orb.x[0];
-          for (int k = 0; k < m; ++k) y = T(p, y);
-          literal = std::fabs(y - orb.x[0]);
+          literal = std::fabs(T_power(p, orb.x[0], m) - orb.x[0]);
         }
         t.row({static_cast<long long>(m), orb.x[0], orb.max_step_residual, static_cast<long long>(orb.itinerary_ok), orb.min_separation,
                orb.log_expansion, literal});

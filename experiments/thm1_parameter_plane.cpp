@@ -12,9 +12,9 @@
 #include <set>
 
 #include "dfchaos/covering.hpp"
-#include "dfchaos/superstable.hpp"
 #include "kit/experiment.hpp"
 #include "kit/grid.hpp"
+#include "sweep/cell.hpp"
 
 using namespace dfchaos;
 using namespace dfchaos::kit;
@@ -43,20 +43,20 @@ const Experiment experiment{
       const int every_q = std::min(every, nq), every_b = std::min(every, nb);  // at least one row and column checked
       const double s0 = sin_vartheta0();
       const Axis q_axis = Axis::centres(s0, 1, nq), b_axis = Axis::log_ratio(1e-4, 1000.0, nb);
-      const auto cells = sweep<PlaneCell>(
+      const auto cells = kit::sweep<PlaneCell>(
           q_axis, b_axis,
           [every_q, every_b](const Cell2& c) {
             const Parameters p(1.0, c.y, c.x);
             PlaneCell r;
             CoveringSearchStats stats;
-            const Lemma4Covering cov = lemma4_covering(p, CoveringSearch::branchwise(), &stats);
+            const Lemma4Covering cov = sweep::plane_covering(p, kDefaultMaxCoveringBranches, &stats);
             r.fallbacks = stats.dense_fallbacks;
             r.covering = cov.holds;
             if (c.i % every_q == every_q / 2 && c.j % every_b == every_b / 2) r.dense = lemma4_covering(p).holds;
             r.J0_lo = cov.holds ? cov.J0.lo : NAN;
             r.J1_lo = cov.holds ? cov.J1.lo : NAN;
-            const SuperstableCheck s = superstable_check(p, 400);
-            r.superstable = s.fixed && s.epsilon > 0;
+            const sweep::PlaneSuperstable s = sweep::plane_superstable(p, 400);
+            r.superstable = s.superstable;
             r.epsilon = s.epsilon;
             return r;
           },

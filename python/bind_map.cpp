@@ -8,6 +8,7 @@
 #include "dfchaos/errors.hpp"
 #include "dfchaos/limits.hpp"
 #include "dfchaos/next_hit.hpp"
+#include "dfchaos/orbit.hpp"
 #include "dfchaos/return_map.hpp"
 
 namespace dfchaos::python {
@@ -73,9 +74,7 @@ py::object step(const Parameters& p, const py::handle& theta) {
 py::dict orbit(const Parameters& p, double theta0, long long steps) {
   p.require_return_map();
   finite("theta0", theta0);
-  const double t2 = p.t2_required(), t3 = p.t3_required();
-  if (!(theta0 >= t2 && theta0 < t3))  // the CLI's check, before any work
-    throw InvalidParameter("theta0", "t2 <= theta0 < t3 = [" + format_double(t2) + ", " + format_double(t3) + ")", theta0);
+  p.require_in_map_domain(theta0, "theta0");  // before any work, as the CLI
   if (steps < 1 || steps > kMaxOrbitSteps)
     throw InvalidParameter("steps", "1 <= steps <= " + std::to_string(kMaxOrbitSteps), static_cast<double>(steps));
   const std::vector<py::ssize_t> shape{static_cast<py::ssize_t>(steps)};
@@ -83,19 +82,17 @@ py::dict orbit(const Parameters& p, double theta0, long long steps) {
   StrColumn scenario(shape, kScenarioWidth);
   double *th = theta.mutable_data(), *el = elapsed.mutable_data(), *pe = penetration.mutable_data();
   double *ti = time.mutable_data(), *yy = y.mutable_data();
-  double current = theta0;
-  long double t = theta0, pos = 0;  // summed in long double, as the CLI does
+  const Orbit orbit(p, theta0, steps);
+  Orbit::iterator it;
   loop_without_gil(shape[0], [&](py::ssize_t n) {
-    const MapStep s = return_map_step(p, current);
-    th[n] = current;
-    scenario.set(n, scenario_name(s.scenario));
-    el[n] = s.elapsed;
-    pe[n] = s.penetration;
-    ti[n] = static_cast<double>(t);
-    yy[n] = static_cast<double>(pos);
-    t += s.elapsed;
-    pos += s.penetration;
-    current = s.T;
+    if (n == 0) it = orbit.begin();
+    else ++it;
+    th[n] = it->theta;
+    scenario.set(n, scenario_name(it->scenario));
+    el[n] = it->elapsed;
+    pe[n] = it->penetration;
+    ti[n] = static_cast<double>(it.time());
+    yy[n] = static_cast<double>(it.y());
   });
   py::dict d;
   d["theta"] = theta;

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdlib>
 
+#include "dfchaos/certified/bisect.hpp"
 #include "dfchaos/certified/json.hpp"
 #include "dfchaos/certified/region.hpp"
 #include "dfchaos/next_hit.hpp"
@@ -52,6 +53,25 @@ TEST(CertifiedBall, ExactDoublesAndCertainPredicates) {
   EXPECT_TRUE((i + 1.5).is_positive());
   EXPECT_TRUE(lt(Ball(1.0), Ball(2.0)));
   EXPECT_FALSE(lt(i, Ball(1.0)));
+}
+
+TEST(CertifiedBisect, EnclosesTheSignChangeAndStopsWhereTheSignIsNotProved) {
+  auto f = [](const Ball& x) { return Ball(2.0) - x * x; };  // > 0 at 1, < 0 at 2: the zero sqrt 2
+  // the ball holds the zero: f is proved positive at its lower end and negative at its upper end
+  auto holds_root = [&f](const Ball& z) { return f(z.lower_ball()).is_positive() && f(z.upper_ball()).is_negative(); };
+  const Ball z = enclose_sign_change(f, Ball(1.0), Ball(2.0), 200);
+  EXPECT_TRUE(holds_root(z));
+  EXPECT_TRUE(lt(z.upper_ball() - z.lower_ball(), Ball(1e-30)));  // 128-bit arithmetic: far below a double's ulp
+  const Ball z10 = enclose_sign_change(f, Ball(1.0), Ball(2.0), 10);  // 10 halvings of [1, 2]
+  EXPECT_TRUE(holds_root(z10));
+  EXPECT_NEAR(z10.upper() - z10.lower(), 1.0 / 1024, 1e-8);  // (a hull's radius is rounded up to 30 bits)
+  // lo on the right of hi
+  const Ball w = enclose_sign_change([&f](const Ball& x) { return -f(x); }, Ball(2.0), Ball(1.0), 200);
+  EXPECT_TRUE(holds_root(w));
+  // a function whose sign is never proved: nothing is halved
+  const Ball u = enclose_sign_change([](const Ball& x) { return Ball::hull(x - Ball(10.0), x + Ball(10.0)); }, Ball(1.0), Ball(2.0), 200);
+  EXPECT_NEAR(u.lower(), 1.0, 1e-8);
+  EXPECT_NEAR(u.upper(), 2.0, 1e-8);
 }
 
 TEST(CertifiedVartheta0, DigitsAndCorrectlyRoundedDoubles) {

@@ -272,4 +272,16 @@ TEST(Bisect, FindsTheBoundaryFromEitherSide) {
   // the iteration bound: 10 halvings of [0, 2] leave a bracket of 2/1024
   auto [lo3, hi3] = bisect([&](double x) { return x * x < 2; }, 0.0, 2.0, BisectStop{10, 0, 0});
   EXPECT_DOUBLE_EQ(hi3 - lo3, 2.0 / 1024);
+  // a predicate without an answer at a point (std::nullopt) ends the search with the bracket so far
+  int calls = 0;
+  auto [lo4, hi4] = bisect(
+      [&](double x) -> std::optional<bool> {
+        ++calls;
+        if (x > 1.2 && x < 1.3) return std::nullopt;
+        return x * x < 2;
+      },
+      0.0, 2.0);
+  EXPECT_EQ(calls, 3);  // midpoints 1 (holds), 1.5 (does not), 1.25 (no answer: the end)
+  EXPECT_EQ(lo4, 1.0);
+  EXPECT_EQ(hi4, 1.5);
 }

@@ -8,6 +8,7 @@
 #include "dfchaos/errors.hpp"
 #include "dfchaos/motion.hpp"
 #include "dfchaos/ode_map.hpp"
+#include "dfchaos/orbit.hpp"
 #include "dfchaos/progression_stop.hpp"
 #include "dfchaos/return_map.hpp"
 #include "test_support.hpp"
@@ -148,4 +149,58 @@ TEST(ReturnMap, RejectsParametersOutsideTheMapsDomain) {
   const Parameters p(1.0, 0.01, 0.85);
   EXPECT_THROW(return_map_step(p, 1.0), InvalidParameter);
   EXPECT_THROW(return_map_step(p, INFINITY), InvalidParameter);
+}
+
+TEST(MapDomain, IsTheHalfOpenArcFromT2ToT3) {
+  const Parameters p(1.0, 0.01, 0.85);
+  const double t2 = *p.t2(), t3 = *p.t3();
+  EXPECT_TRUE(p.in_map_domain(t2));
+  EXPECT_TRUE(p.in_map_domain(std::nextafter(t3, 0.0)));
+  EXPECT_FALSE(p.in_map_domain(t3));
+  EXPECT_FALSE(p.in_map_domain(std::nextafter(t2, 0.0)));
+  EXPECT_FALSE(p.in_map_domain(NAN));
+  EXPECT_FALSE(Parameters(1.0, 0.6, 0.9).in_map_domain(4.0));  // 2b > a: no t2, t3
+  try {
+    p.require_in_map_domain(t3, "theta0");
+    ADD_FAILURE() << "t3 accepted";
+  } catch (const InvalidParameter& e) {
+    EXPECT_EQ(e.parameter(), "theta0");
+    EXPECT_NE(std::string(e.what()).find("t2 <= theta0 < t3 = [" + format_double(t2) + ", " + format_double(t3) + ")"), std::string::npos)
+        << e.what();
+  }
+  try {
+    Parameters(1.0, 0.6, 0.9).require_in_map_domain(4.0);
+    ADD_FAILURE() << "a phase accepted without t2, t3";
+  } catch (const InvalidParameter& e) {
+    EXPECT_EQ(e.parameter(), "b");
+  }
+}
+
+TEST(Orbit, IsTheIterationOfTWithSummedTimeAndAdvance) {
+  const Parameters p(1.0, 0.01, 0.85);
+  const double theta0 = *p.t2() + 0.3 * (*p.t3() - *p.t2());
+  constexpr long long kSteps = 200;
+  double theta = theta0;  // the orbit by hand
+  long double time = theta0, y = 0;
+  long long count = 0;
+  const Orbit orbit(p, theta0, kSteps);
+  for (auto it = orbit.begin(); it != orbit.end(); ++it) {
+    const MapStep s = return_map_step(p, theta);
+    ASSERT_EQ(it.n(), count);
+    ASSERT_EQ(it->theta, theta);
+    ASSERT_EQ(it->T, s.T);
+    ASSERT_EQ(it->elapsed, s.elapsed);
+    ASSERT_EQ(it.time(), time);
+    ASSERT_EQ(it.y(), y);
+    time += s.elapsed;
+    y += s.penetration;
+    theta = s.T;
+    ++count;
+  }
+  EXPECT_EQ(count, kSteps);
+  EXPECT_EQ(T_power(p, theta0, kSteps), theta);
+  EXPECT_EQ(T_power(p, theta0, 0), theta0);
+  EXPECT_TRUE(Orbit(p, theta0, 0).begin() == Orbit(p, theta0, 0).end());
+  EXPECT_TRUE(Orbit(p, 1.0, 0).begin() == Orbit(p, 1.0, 0).end());  // nothing computed, nothing checked
+  EXPECT_THROW(Orbit(p, 1.0, 1).begin(), InvalidParameter);           // the first step checks theta0
 }

@@ -19,6 +19,7 @@
 #include "dfchaos/covering.hpp"
 #include "dfchaos/errors.hpp"
 #include "dfchaos/map_derivative.hpp"
+#include "dfchaos/orbit.hpp"
 #include "dfchaos/phase.hpp"
 #include "dfchaos/superstable.hpp"
 #include "kit/digest.hpp"
@@ -454,4 +455,10 @@ TEST(TEvaluations, CountsEveryEvaluation) {
   T(p, 4.0);
   return_map_step(p, 4.0);
   EXPECT_EQ(T_evaluations() - mid, 2);
+  const long long walk = T_evaluations();
+  for (const MapStep& s : Orbit(p, 4.0, 7)) (void)s;  // one evaluation per step, none past the last
+  EXPECT_EQ(T_evaluations() - walk, 7);
+  const long long power = T_evaluations();
+  T_power(p, 4.0, 5);
+  EXPECT_EQ(T_evaluations() - power, 5);
 }

@@ -6,13 +6,6 @@
 
 namespace dfchaos::cli {
 
-namespace {
-/// Rejects a phase outside [t2, t3).
-void require_in_arc(const std::string& name, double x, double t2, double t3) {
-  if (!(x >= t2 && x < t3)) throw InvalidParameter(name, "t2 <= " + name + " < t3 = [" + num(t2) + ", " + num(t3) + ")", x);
-}
-}  // namespace
-
 Command add_map(CLI::App& app) {
   auto* cmd = app.add_subcommand("map", "T1 and T at given phases of [t2, t3)");
   struct Opts {
@@ -55,7 +48,7 @@ Command add_map(CLI::App& app) {
             if (!o->grid.empty()) {
               const double lo = number("grid LO", o->grid[0]), hi = number("grid HI", o->grid[1]);
               const long long n = count("grid N", o->grid[2], 1, 10'000'000);
-              require_in_arc("grid LO", lo, t2, t3);
+              p.require_in_map_domain(lo, "grid LO");
               if (!(hi > lo && hi <= t3)) throw InvalidParameter("grid HI", "LO < HI <= t3 = " + num(t3), hi);
               th.reserve(static_cast<std::size_t>(n));
               for (long long i = 0; i < n; ++i) th.push_back(lo + (hi - lo) * static_cast<double>(i) / static_cast<double>(n));
@@ -67,7 +60,7 @@ Command add_map(CLI::App& app) {
               for (const auto& s : o->theta) th.push_back(number("theta", s));
             }
             if (th.empty()) throw InvalidParameter("theta", "give --theta X [X ...], --grid LO HI N or --arc N");
-            for (double x : th) require_in_arc("theta", x, t2, t3);  // every input checked before any output
+            for (double x : th) p.require_in_map_domain(x, "theta");  // every input checked before any output
             Writer w;
             w.row({"theta", "T1", "T", "scenario", "elapsed", "penetration"});
             for (double x : th) {

@@ -6,7 +6,7 @@
 #include "cli.hpp"
 #include "dfchaos/limits.hpp"
 #include "dfchaos/errors.hpp"
-#include "dfchaos/return_map.hpp"
+#include "dfchaos/orbit.hpp"
 
 namespace dfchaos::cli {
 
@@ -39,24 +39,18 @@ Command add_orbit(CLI::App& app) {
   return {cmd, [o] {
             const Parameters p = o->m.model();
             p.require_return_map();
-            const double t2 = p.t2_required(), t3 = p.t3_required();
             const double theta0 = number("theta0", o->theta0);
-            if (!(theta0 >= t2 && theta0 < t3))
-              throw InvalidParameter("theta0", "t2 <= theta0 < t3 = [" + num(t2) + ", " + num(t3) + ")", theta0);
+            p.require_in_map_domain(theta0, "theta0");
             const long long steps = count("steps", o->steps, 1, kMaxOrbitSteps);
             const bool progress = ::isatty(2) && steps >= 100000;
             const auto start = std::chrono::steady_clock::now();
             Writer w;
             w.row({"n", "theta", "scenario", "elapsed", "penetration", "time", "y"});
-            double theta = theta0;
-            long double time = theta0, y = 0;
-            for (long long n = 0; n < steps; ++n) {
-              const auto s = return_map_step(p, theta);
-              w.row({std::to_string(n), num(theta), scenario_name(s.scenario), num(s.elapsed), num(s.penetration),
-                     num(static_cast<double>(time)), num(static_cast<double>(y))});
-              time += s.elapsed;
-              y += s.penetration;
-              theta = s.T;
+            const Orbit orbit(p, theta0, steps);
+            for (auto it = orbit.begin(); it != orbit.end(); ++it) {
+              const long long n = it.n();
+              w.row({std::to_string(n), num(it->theta), scenario_name(it->scenario), num(it->elapsed), num(it->penetration),
+                     num(static_cast<double>(it.time())), num(static_cast<double>(it.y()))});
               if (progress && (n + 1) % 100000 == 0) {
                 const double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
                 std::fprintf(stderr, "\rorbit: %lld/%lld steps, about %.0f s left   ", n + 1, steps, sec / (n + 1) * (steps - n - 1));

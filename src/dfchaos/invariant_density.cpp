@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "dfchaos/errors.hpp"
-#include "dfchaos/return_map.hpp"
+#include "dfchaos/orbit.hpp"
 
 namespace dfchaos {
 
@@ -29,7 +29,7 @@ double OrbitHistogram::total_mass() const {
 OrbitHistogram orbit_histogram(const Parameters& p, double theta0, long long transient, long long steps, int bins) {
   p.require_return_map();
   const double t2 = p.t2_required(), t3 = p.t3_required();
-  if (!(theta0 >= t2 && theta0 < t3)) throw InvalidParameter("theta", "t2 <= theta < t3", theta0);
+  if (!p.in_map_domain(theta0)) throw InvalidParameter("theta", "t2 <= theta < t3", theta0);
   if (transient < 0 || transient > 1'000'000'000) throw InvalidParameter("transient", "0 <= transient <= 10^9", static_cast<double>(transient));
   if (steps < 1 || steps > 1'000'000'000) throw InvalidParameter("steps", "1 <= steps <= 10^9", static_cast<double>(steps));
   if (bins < 1 || bins > 1'000'000) throw InvalidParameter("bins", "1 <= bins <= 10^6", bins);
@@ -37,31 +37,34 @@ OrbitHistogram orbit_histogram(const Parameters& p, double theta0, long long tra
   h.lo = t2;
   h.hi = t3;
   h.counts.assign(static_cast<std::size_t>(bins), 0);
-  double theta = theta0;
   long long visits = 0;  // of t2, from theta0 on (the transient included)
-  auto note = [&](long long n) {  // theta is the point with index n from theta0
-    if (theta != t2) return;
-    if (visits == 0) h.first_t2 = n;
-    else if (visits == 1) h.t2_return = n - h.first_t2;
-    ++visits;
-  };
-  for (long long n = 0; n < transient; ++n) {
-    note(n);
-    theta = T(p, theta);
-  }
-  for (long long n = 0; n < steps; ++n) {
-    note(transient + n);
+  // theta is the point with index n from theta0: noted if it is t2, counted from index `transient` on
+  auto visit = [&](long long n, double theta) {
+    if (theta == t2) {
+      if (visits == 0) h.first_t2 = n;
+      else if (visits == 1) h.t2_return = n - h.first_t2;
+      ++visits;
+    }
+    if (n < transient) return;
     if (theta == t2) {
       ++h.at_t2;
-    } else if (theta >= t2 && theta < t3) {
+    } else if (p.in_map_domain(theta)) {
       // the bin of theta; rounding can put a point just below t3 into bin K: clamp
       const auto k = static_cast<long long>(std::floor((theta - t2) / (t3 - t2) * bins));
       ++h.counts[static_cast<std::size_t>(std::min<long long>(std::max<long long>(k, 0), bins - 1))];
     } else {
       ++h.outside;
     }
-    if (n + 1 < steps) theta = T(p, theta);
+  };
+  // the points theta_0 .. theta_{transient + steps - 1}: the steps from all but the last one
+  const long long points = transient + steps;
+  const Orbit orbit(p, theta0, points - 1);
+  double last = theta0;
+  for (auto it = orbit.begin(); it != orbit.end(); ++it) {
+    visit(it.n(), it->theta);
+    last = it->T;
   }
+  visit(points - 1, last);
   h.steps = steps;
   return h;
 }

@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "dfchaos/errors.hpp"
+#include "dfchaos/orbit.hpp"
 
 namespace dfchaos {
 
@@ -34,17 +35,18 @@ OrbitStatistics orbit_statistics(const Parameters& p, double theta0, long long t
   if (steps < 1 || steps > 1'000'000'000) throw InvalidParameter("steps", "1 <= steps <= 10^9", static_cast<double>(steps));
   if (keep < 0 || keep > steps) throw InvalidParameter("keep", "0 <= keep <= steps", keep);
   OrbitStatistics st;
-  double theta = theta0;
-  for (long long n = 0; n < transient; ++n) theta = T(p, theta);
+  const double theta = T_power(p, theta0, transient);
   const double t2 = p.t2_required();
   double log_sum = 0;
   long long first_t2 = -1;
-  for (long long n = 0; n < steps; ++n) {
-    if (theta == t2) {
+  const Orbit orbit(p, theta, steps);
+  for (auto it = orbit.begin(); it != orbit.end(); ++it) {
+    const MapStep& s = *it;
+    const long long n = it.n();
+    if (s.theta == t2) {
       if (first_t2 < 0) first_t2 = n;
       else if (st.period_of_t2 == 0) st.period_of_t2 = n - first_t2;
     }
-    const MapStep s = return_map_step(p, theta);
     const MapDerivative d = map_derivative(p, s);
     if (d.flat) {
       ++st.flat_steps;
@@ -54,7 +56,6 @@ OrbitStatistics orbit_statistics(const Parameters& p, double theta0, long long t
     st.elapsed += s.elapsed;
     st.penetration += s.penetration;
     if (n >= steps - keep) st.tail.push_back(s.theta);
-    theta = s.T;
   }
   st.steps = steps;
   st.lyapunov = st.flat_steps > 0 ? -std::numeric_limits<double>::infinity() : log_sum / static_cast<double>(steps);

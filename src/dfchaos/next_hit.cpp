@@ -11,14 +11,6 @@
 
 namespace dfchaos {
 
-namespace {
-void require_theta(const Parameters& p, double theta, const char* name = "theta") {
-  const double t2 = p.t2_required(), t3 = p.t3_required();
-  if (!std::isfinite(theta) || theta < t2 || theta >= t3)
-    throw InvalidParameter(name, "t2 <= " + std::string(name) + " < t3 = [" + format_double(t2) + ", " + format_double(t3) + ")", theta);
-}
-}  // namespace
-
 QuadraticPlusHarmonic G1_function(const Parameters& p, double theta) {
   return FreeMotion(p, Instant::at_phase(theta), 0.0, 0.0).gap(0.0);
 }
@@ -56,7 +48,7 @@ long long maxima_between(const Parameters& p, double theta, const Instant& t) {
 }
 
 NextHit next_hit(const Parameters& p, double theta) {
-  require_theta(p, theta);
+  p.require_in_map_domain(theta);
   const QuadraticPlusHarmonic g = G1_function(p, theta);
   const auto root = first_upcrossing(g);
   if (!root) throw std::logic_error("next_hit: a free flight with b > 0 always returns (a bug)");
@@ -70,8 +62,8 @@ NextHit next_hit(const Parameters& p, double theta) {
 }
 
 std::vector<GrazingPoint> grazing_points(const Parameters& p, double lo, double hi, int scan) {
-  require_theta(p, lo, "lo");
-  require_theta(p, hi, "hi");
+  p.require_in_map_domain(lo, "lo");
+  p.require_in_map_domain(hi, "hi");
   if (!(lo < hi)) throw InvalidParameter("hi", "lo < hi", hi);
   if (scan < 2) throw InvalidParameter("scan", "scan >= 2", scan);
 
@@ -157,8 +149,8 @@ struct TangencyRange {
   double h(double th) const { return model::symmetric_tangency_h(r, th); }
 };
 TangencyRange tangency_range(const Parameters& p, double lo, double hi) {
-  require_theta(p, lo, "lo");
-  require_theta(p, hi, "hi");
+  p.require_in_map_domain(lo, "lo");
+  p.require_in_map_domain(hi, "hi");
   TangencyRange t{lo, std::min(hi, 1.5 * pi), p.a() / p.b()};  // s = -(a/b) cos z > 0 needs cos z < 0
   if (!(t.lo < t.hi)) return t;
   // h decreases on (t2, t3): odd multiples of pi between h(hi) and h(lo).

@@ -84,9 +84,7 @@ void integrate_until(System& sys, double& t, double y[2], Event event, long& ste
 
 OdeMapStep ode_return_map_step(const Parameters& p, double theta, const OdeMapOptions& o) {
   p.require_return_map();
-  const double t2 = p.t2_required(), t3 = p.t3_required();
-  if (!std::isfinite(theta) || theta < t2 || theta >= t3)
-    throw InvalidParameter("theta", "t2 <= theta < t3", theta);
+  if (!p.in_map_domain(theta)) throw InvalidParameter("theta", "t2 <= theta < t3", theta);
   if (!(o.max_step > 0) || !(o.event_tol > 0)) throw InvalidParameter("max_step", "max_step > 0 and event_tol > 0");
   gsl_set_error_handler_off();
 

@@ -95,6 +95,12 @@ double Parameters::t3_required() const {
   return *t3_;
 }
 
+void Parameters::require_in_map_domain(double theta, const std::string& name) const {
+  const double t2 = t2_required(), t3 = t3_required();
+  if (!in_map_domain(theta))
+    throw InvalidParameter(name, "t2 <= " + name + " < t3 = [" + format_double(t2) + ", " + format_double(t3) + ")", theta);
+}
+
 void Parameters::require_return_map() const {
   if (!(2 * b_ < a_)) throw InvalidParameter("b", "0 < b < a/2 for the return map T (Eq. 2)", b_);
   if (!(q_ > 2 * b_)) throw InvalidParameter("q", "q > 2b for the return map T (otherwise progression need not stop)", q_);

@@ -88,6 +88,15 @@ class Parameters {
   double t2_required() const;
   double t3_required() const;  ///< \f$t_3\f$, demanded as t2_required()
 
+  /// Whether \f$\theta\f$ lies in \f$[t_2, t_3)\f$, the domain of the return map \f$T\f$ (Section 3):
+  /// the one place this interval is tested. False for a NaN and when \f$t_2, t_3\f$ do not exist.
+  bool in_map_domain(double theta) const { return t2_ && theta >= *t2_ && theta < *t3_; }
+
+  /// Demands \f$t_2 \le \theta < t_3\f$ (in_map_domain()); `name` is the parameter as the caller
+  /// spells it (`theta`, `theta0`, ...).
+  /// @throws InvalidParameter on `b` as t2_required(), then on `name`, stating the interval's bounds.
+  void require_in_map_domain(double theta, const std::string& name = "theta") const;
+
   /// Which assumptions of the paper hold.
   Assumptions assumptions() const;
 

@@ -55,9 +55,7 @@ MapStep return_map_step(const Parameters& p, double theta) {
   p.require_return_map();
   MapStep step;
   step.theta = theta;
-  const double t2 = p.t2_required(), t3 = p.t3_required();
-  if (!std::isfinite(theta) || theta < t2 || theta >= t3)
-    throw InvalidParameter("theta", "t2 <= theta < t3 = [" + format_double(t2) + ", " + format_double(t3) + ")", theta);
+  p.require_in_map_domain(theta);
 
   MechanicalState s{Instant::at_phase(theta), Regime::Free, 0.0, 0.0, 0.0};
   step.chain = "f";

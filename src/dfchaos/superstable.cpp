@@ -12,6 +12,7 @@
 #include "dfchaos/covering.hpp"
 #include "dfchaos/errors.hpp"
 #include "dfchaos/map_derivative.hpp"
+#include "dfchaos/orbit.hpp"
 
 namespace dfchaos {
 
@@ -144,12 +145,11 @@ namespace {
 /// theta +- r for it and every smaller one (0 if already 1e-14 fails). Probes outside [t2, t3) are
 /// skipped (theta = t2 is the left end of the domain); a probe that throws ends the arc.
 double stop_arc_radius(const Parameters& p, double theta, double image) {
-  const double t2 = p.t2_required(), t3 = p.t3_required();
   double radius = 0;
   for (int j = -14; j <= -2; ++j) {
     const double r = std::pow(10.0, j);
     for (const double x : {theta - r, theta + r}) {
-      if (!(x >= t2 && x < t3)) continue;
+      if (!p.in_map_domain(x)) continue;
       try {
         const MapStep s = return_map_step(p, x);
         if (!map_derivative(p, s).flat || s.T != image) return radius;
@@ -167,11 +167,10 @@ double stop_arc_radius(const Parameters& p, double theta, double image) {
 /// Whether T keeps the continuity label and the scenario of theta at theta +- r (points outside
 /// [t2, t3) skipped; a throw counts as a change).
 bool same_branch_around(const Parameters& p, double theta, double r) {
-  const double t2 = p.t2_required(), t3 = p.t3_required();
   try {
     const LabelledStep at = continuity_label(p, theta);
     for (const double x : {theta - r, theta + r}) {
-      if (!(x >= t2 && x < t3)) continue;
+      if (!p.in_map_domain(x)) continue;
       const LabelledStep there = continuity_label(p, x);
       if (!(there.label == at.label) || there.step.scenario != at.step.scenario) return false;
     }
@@ -193,8 +192,9 @@ constexpr double kLostAt = 1e-3;
 long long first_visit(const Parameters& p, double theta, double target, long long max_steps) {
   p.require_return_map();
   if (max_steps < 1 || max_steps > 10'000'000) throw InvalidParameter("max_steps", "1 <= max_steps <= 10^7", static_cast<double>(max_steps));
-  for (long long n = 1; n <= max_steps; ++n)
-    if ((theta = T(p, theta)) == target) return n;
+  const Orbit orbit(p, theta, max_steps);
+  for (auto it = orbit.begin(); it != orbit.end(); ++it)
+    if (it->T == target) return it.n() + 1;  // it->T is theta_{n+1}
   return 0;
 }
 
@@ -202,18 +202,17 @@ bool stop_cycle_survives_shift(const Parameters& p, const StopCycle& c, double h
   p.require_return_map();
   if (c.period < 1 || c.period > 10'000'000) throw InvalidParameter("period", "1 <= period <= 10^7", static_cast<double>(c.period));
   if (!(h > 0 && h < 1e-3)) throw InvalidParameter("h", "0 < h < 1e-3", h);
-  const double t2 = p.t2_required(), t3 = p.t3_required();
+  const double t3 = p.t3_required();
   const double base = c.period == 1 ? c.image : T(p, c.image);
   const double start = base + h < t3 ? base + h : base - h;  // shifted to the side inside [t2, t3)
-  if (!(start >= t2 && start < t3)) return false;             // no room on either side: not passed
+  if (!p.in_map_domain(start)) return false;                  // no room on either side: not passed
   const long long rest = c.period == 1 ? 1 : c.period - 1;
   return first_visit(p, start, c.image, rest) == rest;
 }
 
 StopCycle stop_cycle(const Parameters& p, double image, long long max_steps, double step_error) {
   p.require_return_map();
-  const double t2 = p.t2_required(), t3 = p.t3_required();
-  if (!(image >= t2 && image < t3)) throw InvalidParameter("image", "t2 <= image < t3", image);
+  if (!p.in_map_domain(image)) throw InvalidParameter("image", "t2 <= image < t3", image);
   if (max_steps < 1 || max_steps > 10'000'000) throw InvalidParameter("max_steps", "1 <= max_steps <= 10^7", static_cast<double>(max_steps));
   if (!(step_error > 0 && step_error < 1e-3)) throw InvalidParameter("step_error", "0 < step_error < 1e-3", step_error);
   constexpr double inf = std::numeric_limits<double>::infinity();
@@ -221,9 +220,12 @@ StopCycle stop_cycle(const Parameters& p, double image, long long max_steps, dou
   std::vector<std::pair<double, long long>> images{{image, 0}};
   StopCycle c;
   double margin = inf;
-  double theta = image, error = step_error;
-  for (long long k = 1; k <= max_steps; ++k) {
-    const MapStep s = return_map_step(p, theta);
+  double error = step_error;
+  const Orbit orbit(p, image, max_steps);
+  for (auto it = orbit.begin(); it != orbit.end(); ++it) {
+    const MapStep& s = *it;
+    const double theta = s.theta;
+    const long long k = it.n() + 1;
     const MapDerivative d = map_derivative(p, s);
     if (d.flat) {
       ++c.stops;
@@ -249,7 +251,6 @@ StopCycle stop_cycle(const Parameters& p, double image, long long max_steps, dou
       }
       error = std::isfinite(d.dT) && error < kLostAt ? std::fabs(d.dT) * error + step_error : inf;
     }
-    theta = s.T;
   }
   c.margin = c.period > 0 ? margin : 0.0;
   c.resolved = c.period > 0 && c.margin >= kStopCycleSafety;

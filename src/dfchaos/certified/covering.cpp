@@ -6,6 +6,7 @@
 #include <limits>
 #include <exception>
 
+#include "dfchaos/bisect.hpp"
 #include "dfchaos/certified/oracle.hpp"
 #include "dfchaos/covering.hpp"
 #include "dfchaos/phase.hpp"
@@ -30,23 +31,18 @@ double walk(const Parameters& p, const dfchaos::ContinuityLabel& label, double f
     if (out) y = dir > 0 ? std::nextafter(kThreeHalvesPi, 0.0) : std::nextafter(t2, 4.0);
     const LabelledStep l = continuity_label(p, y);
     if (!(l.label == label)) {
-      double good = x, bad = y;
-      for (int it = 0; it < 60; ++it) {
-        const double mid = 0.5 * (good + bad);
-        const LabelledStep lm = continuity_label(p, mid);
-        if (lm.label == label && !reached(lm.step)) good = mid; else bad = mid;
-      }
+      const auto [good, bad] = bisect(
+          [&](double mid) {
+            const LabelledStep lm = continuity_label(p, mid);
+            return lm.label == label && !reached(lm.step);
+          },
+          x, y, {.max_iterations = 60});
       const LabelledStep lb = continuity_label(p, bad);
       if (lb.label == label && reached(lb.step)) return bad;  // reached before the run ends
       return from + 0.5 * (good - from);
     }
     if (reached(l.step)) {
-      double lo = x, hi = y;
-      for (int it = 0; it < 80; ++it) {
-        const double mid = 0.5 * (lo + hi);
-        if (reached(continuity_label(p, mid).step)) hi = mid; else lo = mid;
-      }
-      return hi;
+      return bisect([&](double mid) { return !reached(continuity_label(p, mid).step); }, x, y, {.max_iterations = 80}).second;
     }
     if (out) return x;
     x = y;
@@ -84,10 +80,7 @@ double move_t2(const Parameters& p, const dfchaos::CoveringSegment& s) {
     h *= 1.5;
     y = x + dir * h;
   }
-  for (int it = 0; it < 60; ++it) {  // x on the plateau, y off it
-    const double mid = 0.5 * (x + y);
-    if (on_plateau(mid)) x = mid; else y = mid;
-  }
+  x = bisect(on_plateau, x, y, {.max_iterations = 60}).first;  // x on the plateau, y off it
   return s.theta_at_t2 + 0.5 * (x - s.theta_at_t2);
 }
 
@@ -113,11 +106,7 @@ double plateau_middle(const Parameters& p, double th, double scale, double& widt
       h *= 1.6;
       y = x + dir * h;
     }
-    for (int it = 0; it < 12; ++it) {
-      const double mid = 0.5 * (x + y);
-      if (on(mid)) x = mid; else y = mid;
-    }
-    ends[side] = x;
+    ends[side] = bisect(on, x, y, {.max_iterations = 12}).first;
   }
   width = ends[1] - ends[0];
   return 0.5 * (ends[0] + ends[1]);
@@ -173,11 +162,7 @@ std::vector<Candidate> track_candidates(double a, double b, double q, const std:
           }
           if (!found) continue;
         }
-        for (int it = 0; it < 30; ++it) {
-          const double mid = 0.5 * (x + y);
-          if (return_map_step(p, mid).T >= target) x = mid; else y = mid;
-        }
-        n.theta_top = x;
+        n.theta_top = bisect([&](double mid) { return return_map_step(p, mid).T >= target; }, x, y, {.max_iterations = 30}).first;
       }
       if (!out.empty() && !(out.back().hi() < n.lo())) continue;
       if (n.lo() < *p.t2() || n.hi() > kThreeHalvesPi) continue;

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "dfchaos/certified/bisect.hpp"
 #include "dfchaos/certified/oracle.hpp"
 #include "dfchaos/model.hpp"
 
@@ -72,17 +73,9 @@ DiscontinuityProof prove_discontinuities(double a, double b, const Ball& lo, con
   for (auto it = ks.rbegin(); it != ks.rend(); ++it) {
     const long long k = *it;
     const Ball target = Ball(static_cast<double>(2 * k + 1)) * pi;
-    Ball zl(r.lo), zh(r.hi);
-    for (int i = 0; i < 400; ++i) {
-      const Ball mid = ((zl + zh) * 0.5).mid_ball();
-      const Ball v = h(mid) - target;
-      if (v.is_positive()) zl = mid;
-      else if (v.is_negative()) zh = mid;
-      else break;
-    }
     Tangency t;
     t.k = k;
-    t.z = Ball::hull(zl, zh);
+    t.z = enclose_sign_change([&](const Ball& z) { return h(z) - target; }, Ball(r.lo), Ball(r.hi), 400);
     t.flight = model::symmetric_tangency_flight(ab, t.z);
     t.t_star = t.z + t.flight;
     if (!t.flight.is_positive()) return finish(Verdict::fail("Lemma 2: tangency", "flight not positive at k = " + std::to_string(k)));

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "dfchaos/bisect.hpp"
 #include "dfchaos/certified/oracle.hpp"
 
 namespace dfchaos::certified {
@@ -23,14 +24,14 @@ struct Mat {
 
 /// Floating inverse branch of T on a certified segment: the x between the ends with T(x) = y.
 double inverse_branch(const ParamBox& box, const SegmentProof& J, double y) {
-  double a = J.theta_top, c = J.theta_t2;  // T(a) >= 3pi/2 >= y >= t2 = T(c)
-  for (int it = 0; it < 200 && a != c; ++it) {
-    const double mid = 0.5 * (a + c);
-    if (mid == a || mid == c) break;
-    const auto s = oracle::step(box.a, box.b_lo, box.q_lo, mid);
-    if (!s) break;
-    if (s->T >= y) a = mid; else c = mid;
-  }
+  // T(theta_top) >= 3pi/2 >= y >= t2 = T(theta_t2); a step the oracle cannot take ends the search
+  const auto [a, c] = bisect(
+      [&](double mid) -> std::optional<bool> {
+        const auto s = oracle::step(box.a, box.b_lo, box.q_lo, mid);
+        if (!s) return std::nullopt;
+        return s->T >= y;
+      },
+      J.theta_top, J.theta_t2);
   return 0.5 * (a + c);
 }
 

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <vector>
 
+#include "dfchaos/certified/bisect.hpp"
 #include "dfchaos/certified/oracle.hpp"
 #include "dfchaos/model.hpp"
 
@@ -192,16 +193,8 @@ namespace {
 
 /// Refines t4 in [t1, t2] for a point box by bisection on the sign of u (decreasing there).
 Ball enclose_t4(const Model& m) {
-  Ball lo = m.t1.lower_ball(), hi = m.t2.upper_ball();
   auto u = [&](const Ball& t) { return model::progression_velocity_from_rest(m.a, m.two_c, m.t0, t); };
-  for (int it = 0; it < 200; ++it) {
-    const Ball mid = ((lo + hi) * 0.5).mid_ball();
-    const Ball v = u(mid);
-    if (v.is_positive()) lo = mid;
-    else if (v.is_negative()) hi = mid;
-    else break;
-  }
-  return Ball::hull(lo, hi);
+  return enclose_sign_change(u, m.t1.lower_ball(), m.t2.upper_ball(), 200);
 }
 
 }  // namespace
@@ -272,11 +265,7 @@ Lemma1Bound lemma1_b0_lower_bound(double a, double q, double resolution, int max
       if (!u_at(b).is_negative()) { lo = prev; hi = b; break; }
       prev = b;
     }
-    for (int it = 0; it < 200 && hi - lo > 1e-17 * hi; ++it) {
-      const double mid = 0.5 * (lo + hi);
-      if (u_at(mid).is_negative()) lo = mid; else hi = mid;
-    }
-    r.b_float = lo;
+    r.b_float = bisect([&](double b) { return u_at(b).is_negative(); }, lo, hi, {.max_iterations = 200, .rel_tol = 1e-17}).first;
   }
   double b_low = r.b_float * (1 - resolution);
   for (int attempt = 0; attempt < 20; ++attempt, b_low *= 0.9) {

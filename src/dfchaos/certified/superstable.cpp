@@ -5,6 +5,7 @@
 #include <cmath>
 #include <vector>
 
+#include "dfchaos/certified/bisect.hpp"
 #include "dfchaos/certified/vartheta0.hpp"
 #include "dfchaos/model.hpp"
 #include "dfchaos/superstable.hpp"
@@ -213,15 +214,7 @@ Theorem2Counterexample prove_theorem2_counterexample(double a, double b, double 
     return r;
   }
   // t4 by bisection on the sign of u in [t2, t3] (u decreasing there).
-  Ball lo = m.t2.upper_ball(), hi = m.t3.lower_ball();
-  for (int it = 0; it < 200; ++it) {
-    const Ball mid = ((lo + hi) * 0.5).mid_ball();
-    const Ball v = u(mid);
-    if (v.is_positive()) lo = mid;
-    else if (v.is_negative()) hi = mid;
-    else break;
-  }
-  r.T = Ball::hull(lo, hi);
+  r.T = enclose_sign_change(u, m.t2.upper_ball(), m.t3.lower_ball(), 200);
   r.verdict = Verdict::ok();
   return r;
 }

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "dfchaos/certified/bisect.hpp"
+
 namespace dfchaos::certified {
 
 double correctly_rounded(const Ball& x) {
@@ -23,14 +25,9 @@ Vartheta0 certify_vartheta0(long bits) {
     r.verdict = Verdict::fail("Eq. (1): sign change", "f(1/2) < 0 < f(1) not proved");
     return r;
   }
-  for (int it = 0; it < 4 * bits; ++it) {
-    const Ball mid = ((lo + hi) * 0.5).mid_ball();
-    const Ball fm = f(mid);
-    if (fm.is_negative()) lo = mid;
-    else if (fm.is_positive()) hi = mid;
-    else break;  // the midpoint is within rounding of the root: the bracket is as narrow as it gets
-  }
-  r.value = Ball::hull(lo, hi);
+  // f > 0 at hi, f < 0 at lo; the search stops where the midpoint is within rounding of the root
+  // (the bracket is then as narrow as it gets)
+  r.value = enclose_sign_change(f, hi, lo, static_cast<int>(4 * bits));
   r.sine = sin(r.value);
   r.value_double = correctly_rounded(r.value);
   r.sine_double = correctly_rounded(r.sine);

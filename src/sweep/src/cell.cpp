@@ -9,7 +9,7 @@
 #include "dfchaos/map_derivative.hpp"
 #include "dfchaos/parameters.hpp"
 #include "dfchaos/phase.hpp"
-#include "dfchaos/return_map.hpp"
+#include "dfchaos/orbit.hpp"
 #include "dfchaos/superstable.hpp"
 
 namespace dfchaos::sweep {
@@ -40,11 +40,9 @@ void guarded(CellValues& v, const char* name, F&& f) {
 
 /// The smallest k in 1..max with |T^k(e) - e| <= tol on the circle, 0 if none.
 long long cycle_period(const Parameters& p, double e, const PeriodSettings& s) {
-  double theta = e;
-  for (long long k = 1; k <= s.max; ++k) {
-    theta = T(p, theta);
-    if (circle_distance(theta, e) <= s.tol) return k;
-  }
+  const Orbit orbit(p, e, s.max);
+  for (auto it = orbit.begin(); it != orbit.end(); ++it)
+    if (circle_distance(it->T, e) <= s.tol) return it.n() + 1;  // it->T is T^(n+1)(e)
   return 0;
 }
 
@@ -56,6 +54,17 @@ std::string one_field(std::string text) {
 }
 
 }  // namespace
+
+Lemma4Covering plane_covering(const Parameters& p, long long max_branches, CoveringSearchStats* stats) {
+  CoveringSearch search = CoveringSearch::branchwise();
+  search.max_branches = max_branches;
+  return lemma4_covering(p, search, stats);
+}
+
+PlaneSuperstable plane_superstable(const Parameters& p, int scan) {
+  const SuperstableCheck s = superstable_check(p, scan);
+  return {.superstable = s.fixed && s.epsilon > 0, .epsilon = s.epsilon};
+}
 
 CellValues evaluate_cell(const Spec& spec, long long index) {
   CellValues v;
@@ -72,15 +81,11 @@ CellValues evaluate_cell(const Spec& spec, long long index) {
     return v;
   }
   if (obs.has(Observable::Covering))
-    guarded(v, "covering", [&] {
-      CoveringSearch search = CoveringSearch::branchwise();
-      search.max_branches = spec.covering_max_branches;
-      v.covering = lemma4_covering(p, search).holds ? 1 : 0;
-    });
+    guarded(v, "covering", [&] { v.covering = plane_covering(p, spec.covering_max_branches).holds ? 1 : 0; });
   if (obs.has(Observable::Superstable))
     guarded(v, "superstable", [&] {
-      const SuperstableCheck s = superstable_check(p, static_cast<int>(spec.superstable_scan));
-      v.superstable = s.fixed && s.epsilon > 0 ? 1 : 0;
+      const PlaneSuperstable s = plane_superstable(p, static_cast<int>(spec.superstable_scan));
+      v.superstable = s.superstable ? 1 : 0;
       v.epsilon = s.epsilon;
     });
   if (obs.needs_orbit())
@@ -96,7 +101,7 @@ CellValues evaluate_cell(const Spec& spec, long long index) {
         v.stop_image = st.last_stop_image;
         if (obs.has(Observable::Period)) end = T(p, st.tail.back());  // the tail holds T^(total - 1)(theta0)
       } else {
-        for (long long n = 0; n < total; ++n) end = T(p, end);
+        end = T_power(p, theta0, total);
       }
       if (obs.has(Observable::Period)) v.period = static_cast<double>(cycle_period(p, end, spec.period));
     });
