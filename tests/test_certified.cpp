@@ -11,7 +11,7 @@
 #include <cmath>
 #include <cstdlib>
 
-#include "dfchaos/certified/json.hpp"
+#include "certify/json.hpp"
 #include "dfchaos/certified/region.hpp"
 #include "dfchaos/next_hit.hpp"
 #include "dfchaos/progression_stop.hpp"
@@ -20,6 +20,7 @@
 
 using namespace dfchaos;
 using namespace dfchaos::certified;
+using namespace dfchaos::certify;
 
 namespace {
 
