@@ -3,6 +3,7 @@
 /// checks and the same records as `dfchaos certify`, returned as a dict.
 #include <pybind11/stl.h>
 
+#include <cmath>
 #include <optional>
 #include <utility>
 #include <variant>
@@ -25,7 +26,33 @@ certify::Range range(const char* name, const NumberOrBox& v) {
   return certify::Range{l, finite(name, hi)};
 }
 
-py::dict certify_py(const std::string& what, double a, std::optional<NumberOrBox> b, std::optional<NumberOrBox> q, int period,
+/// The record as Python objects: objects become dicts (keys in order), arrays lists, non-finite
+/// numbers None (as they are written: null).
+py::object to_python(const kit::Json::Value& v) {
+  switch (v.type()) {
+    case kit::Json::Value::value_t::boolean: return py::bool_(v.get<bool>());
+    case kit::Json::Value::value_t::number_integer: return py::int_(v.get<long long>());
+    case kit::Json::Value::value_t::number_unsigned: return py::int_(v.get<unsigned long long>());
+    case kit::Json::Value::value_t::number_float: {
+      const double d = v.get<double>();
+      return std::isfinite(d) ? py::object(py::float_(d)) : py::object(py::none());
+    }
+    case kit::Json::Value::value_t::string: return py::str(v.get_ref<const std::string&>());
+    case kit::Json::Value::value_t::array: {
+      py::list l;
+      for (const auto& x : v) l.append(to_python(x));
+      return l;
+    }
+    case kit::Json::Value::value_t::object: {
+      py::dict d;
+      for (auto it = v.begin(); it != v.end(); ++it) d[py::str(it.key())] = to_python(it.value());
+      return d;
+    }
+    default: return py::none();
+  }
+}
+
+py::object certify_py(const std::string& what, double a, std::optional<NumberOrBox> b, std::optional<NumberOrBox> q, int period,
                     const std::string& segment, std::optional<std::pair<double, double>> window) {
   certify::Request r;
   r.what = what;
@@ -40,8 +67,7 @@ py::dict certify_py(const std::string& what, double a, std::optional<NumberOrBox
     py::gil_scoped_release nogil;
     c = certify::certify(r);
   }
-  py::dict d = py::module_::import("json").attr("loads")(c.record.dump(2));
-  return d;
+  return to_python(c.record.value());
 }
 
 }  // namespace
