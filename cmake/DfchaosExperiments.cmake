@@ -25,7 +25,7 @@ function(dfchaos_add_experiments dir)
     # Inside the dfchaos build every experiment may also use the certified layer and the sweep
     # engine (static libraries: what an experiment does not use is not linked in), so that a new
     # experiment is one file whatever it calls.
-    foreach(extra IN ITEMS dfchaos_certified dfchaos_sweep)
+    foreach(extra IN ITEMS dfchaos_certified dfchaos_certify dfchaos_sweep)
       if(TARGET ${extra})
         target_link_libraries(${name} PRIVATE ${extra})
       endif()

@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "dfchaos/certified/json.hpp"
+#include "certify/json.hpp"
 #include "dfchaos/superstable.hpp"
 #include "kit/experiment.hpp"
 #include "kit/format.hpp"
@@ -23,6 +23,7 @@
 
 using namespace dfchaos;
 using namespace dfchaos::certified;
+using namespace dfchaos::certify;
 using namespace dfchaos::kit;
 
 

@@ -1,13 +1,14 @@
 /// @file bind_certify.cpp
-/// @brief dfchaos.certify: the certified layer (issue 14) from Python — the same requests and the
-/// same JSON records as `dfchaos certify`, returned as a dict.
+/// @brief dfchaos.certify: the certified statements (certify/certify.hpp) from Python, with the same
+/// checks and the same records as `dfchaos certify`, returned as a dict.
 #include <pybind11/stl.h>
 
+#include <cmath>
 #include <optional>
 #include <utility>
 #include <variant>
 
-#include "certify.hpp"
+#include "certify/certify.hpp"
 #include "convert.hpp"
 #include "dfchaos/errors.hpp"
 
@@ -15,31 +16,58 @@ namespace dfchaos::python {
 
 namespace {
 
-/// A parameter as the CLI spells it: "X", or "LO:HI" for a box, with 17 significant digits.
-std::string spelled(const char* name, const std::variant<double, std::pair<double, double>>& v) {
-  if (const double* x = std::get_if<double>(&v)) return format_double(finite(name, *x));
+/// A number, or a box given as (lo, hi); each end must be finite.
+using NumberOrBox = std::variant<double, std::pair<double, double>>;
+
+certify::Range range(const char* name, const NumberOrBox& v) {
+  if (const double* x = std::get_if<double>(&v)) return certify::Range::point(finite(name, *x));
   const auto& [lo, hi] = std::get<std::pair<double, double>>(v);
-  return format_double(finite(name, lo)) + ":" + format_double(finite(name, hi));
+  const double l = finite(name, lo);
+  return certify::Range{l, finite(name, hi)};
 }
 
-py::dict certify_py(const std::string& what, double a, std::optional<std::variant<double, std::pair<double, double>>> b,
-                    std::optional<std::variant<double, std::pair<double, double>>> q, int period, const std::string& segment,
-                    std::optional<std::pair<double, double>> window) {
-  cli::CertifyOptions o;
-  o.what = what;
-  o.a = format_double(finite("a", a));
-  if (b) o.b = spelled("b", *b);
-  if (q) o.q = spelled("q", *q);
-  o.period = period;
-  o.segment = segment;
-  if (window) o.window = format_double(finite("window", window->first)) + ":" + format_double(finite("window", window->second));
-  cli::CertifyResult r;
+/// The record as Python objects: objects become dicts (keys in order), arrays lists, non-finite
+/// numbers None (as they are written: null).
+py::object to_python(const kit::Json::Value& v) {
+  switch (v.type()) {
+    case kit::Json::Value::value_t::boolean: return py::bool_(v.get<bool>());
+    case kit::Json::Value::value_t::number_integer: return py::int_(v.get<long long>());
+    case kit::Json::Value::value_t::number_unsigned: return py::int_(v.get<unsigned long long>());
+    case kit::Json::Value::value_t::number_float: {
+      const double d = v.get<double>();
+      return std::isfinite(d) ? py::object(py::float_(d)) : py::object(py::none());
+    }
+    case kit::Json::Value::value_t::string: return py::str(v.get_ref<const std::string&>());
+    case kit::Json::Value::value_t::array: {
+      py::list l;
+      for (const auto& x : v) l.append(to_python(x));
+      return l;
+    }
+    case kit::Json::Value::value_t::object: {
+      py::dict d;
+      for (auto it = v.begin(); it != v.end(); ++it) d[py::str(it.key())] = to_python(it.value());
+      return d;
+    }
+    default: return py::none();
+  }
+}
+
+py::object certify_py(const std::string& what, double a, std::optional<NumberOrBox> b, std::optional<NumberOrBox> q, int period,
+                    const std::string& segment, std::optional<std::pair<double, double>> window) {
+  certify::Request r;
+  r.what = what;
+  r.a = finite("a", a);
+  if (b) r.b = range("b", *b);
+  if (q) r.q = range("q", *q);
+  r.period = period;
+  r.segment = segment;
+  if (window) r.window = range("window", *window);
+  certify::Certificate c;
   {
     py::gil_scoped_release nogil;
-    r = cli::certify(o);
+    c = certify::certify(r);
   }
-  py::dict d = py::module_::import("json").attr("loads")(r.json);
-  return d;
+  return to_python(c.record.value());
 }
 
 }  // namespace

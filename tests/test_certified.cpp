@@ -11,8 +11,8 @@
 #include <cmath>
 #include <cstdlib>
 
+#include "certify/json.hpp"
 #include "dfchaos/certified/bisect.hpp"
-#include "dfchaos/certified/json.hpp"
 #include "dfchaos/certified/region.hpp"
 #include "dfchaos/next_hit.hpp"
 #include "dfchaos/progression_stop.hpp"
@@ -21,6 +21,7 @@
 
 using namespace dfchaos;
 using namespace dfchaos::certified;
+using namespace dfchaos::certify;
 
 namespace {
 

@@ -9,6 +9,8 @@
 
 #include <cmath>
 #include <filesystem>
+#include <limits>
+#include <stdexcept>
 #include <fstream>
 #include <sstream>
 
@@ -16,6 +18,7 @@
 #include "dfchaos/errors.hpp"
 #include "kit/claim.hpp"
 #include "kit/grid.hpp"
+#include "kit/json.hpp"
 #include "kit/options.hpp"
 #include "kit/output.hpp"
 #include "kit/table.hpp"
@@ -37,6 +40,31 @@ std::string read(const fs::path& p) {
   return s.str();
 }
 }  // namespace
+
+TEST(Json, DumpWritesKeysInOrderDoublesWith17DigitsAndNonFiniteAsNull) {
+  Json j = Json::object();
+  j.set("z", 0.1).set("a", 1.0).set("n", 3).set("inf", std::numeric_limits<double>::infinity());
+  j.set("s", std::string("q\"\\\n\t\x01")).set("list", Json::array().push(true).push(Json())).set("e", Json::object());
+  j.set("z", 1e-5);  // an existing key keeps its place
+  const std::string want =
+      "{\n"
+      "  \"z\": " + format_double(1e-5) + ",\n"
+      "  \"a\": 1,\n"
+      "  \"n\": 3,\n"
+      "  \"inf\": null,\n"
+      "  \"s\": \"q\\\"\\\\\\n\\t\\u0001\",\n"
+      "  \"list\": [\n"
+      "    true,\n"
+      "    null\n"
+      "  ],\n"
+      "  \"e\": {}\n"
+      "}\n";
+  EXPECT_EQ(j.dump(), want);
+  EXPECT_EQ(format_double(1e-5), "1.0000000000000001e-05");
+  EXPECT_EQ(Json::array().dump(0), "[]\n");
+  EXPECT_THROW(Json::array().set("k", 1), std::logic_error);
+  EXPECT_THROW(Json::object().push(1), std::logic_error);
+}
 
 TEST(Options, ParseNumberAcceptsNumbersAndRejectsTheRest) {
   EXPECT_EQ(parse_number("n", "400", true), 400);

@@ -10,7 +10,7 @@
 #include <map>
 #include <string>
 
-#include "dfchaos/certified/json.hpp"
+#include "certify/json.hpp"
 #include "kit/format.hpp"
 #include "kit/json.hpp"
 #include "kit/output.hpp"
@@ -19,6 +19,7 @@ namespace {
 
 using namespace dfchaos;
 using namespace dfchaos::certified;
+using namespace dfchaos::certify;
 using namespace dfchaos::kit;
 
 struct Point {

@@ -1,5 +1,5 @@
 /// @file certify.hpp
-/// @brief `dfchaos certify`: certified verdicts (issue 14) from the ball-arithmetic layer.
+/// @brief `dfchaos certify`: the options of the certified statements (certify/certify.hpp runs them).
 ///
 ///   dfchaos certify vartheta0
 ///   dfchaos certify lemma1          --a A --b B|LO:HI --q Q|LO:HI
@@ -37,15 +37,6 @@ struct CertifyOptions {
 
 /// Registers the `certify` subcommand on `app`, bound to `o`; returns it.
 CLI::App* add_certify(CLI::App& app, CertifyOptions& o);
-
-/// The outcome of a certify request: proved or not, and the JSON record (what `certify` prints).
-struct CertifyResult {
-  bool proved = false;  ///< the statement was proved in ball arithmetic
-  std::string json;     ///< the record: statement, enclosures, verdict, failed step (indented JSON)
-};
-
-/// Carries out a certify request. @throws InvalidParameter (one line naming the option) for bad input.
-CertifyResult certify(const CertifyOptions& o);
 
 /// Runs `certify` within its time and memory budget (--max-seconds, --max-memory; kit/budget.hpp):
 /// JSON on stdout; returns the exit status (0 proved, 1 not proved or a budget ran out, 2 bad input).

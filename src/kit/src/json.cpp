@@ -1,7 +1,6 @@
 #include "kit/json.hpp"
 
 #include <cmath>
-#include <cstdio>
 #include <stdexcept>
 
 #include "dfchaos/errors.hpp"
@@ -10,98 +9,62 @@ namespace dfchaos::kit {
 
 Json Json::array() {
   Json j;
-  j.v_ = std::make_shared<Array>();
+  j.v_ = Value::array();
   return j;
 }
 Json Json::object() {
   Json j;
-  j.v_ = std::make_shared<Object>();
+  j.v_ = Value::object();
   return j;
 }
 Json& Json::set(const std::string& key, Json value) {
-  auto* o = std::get_if<std::shared_ptr<Object>>(&v_);
-  if (!o) throw std::logic_error("Json::set on a non-object");
-  for (auto& kv : **o)
-    if (kv.first == key) {
-      kv.second = std::move(value);
-      return *this;
-    }
-  (*o)->emplace_back(key, std::move(value));
+  if (!v_.is_object()) throw std::logic_error("Json::set on a non-object");
+  v_[key] = std::move(value.v_);
   return *this;
 }
 Json& Json::push(Json value) {
-  auto* a = std::get_if<std::shared_ptr<Array>>(&v_);
-  if (!a) throw std::logic_error("Json::push on a non-array");
-  (*a)->push_back(std::move(value));
+  if (!v_.is_array()) throw std::logic_error("Json::push on a non-array");
+  v_.push_back(std::move(value.v_));
   return *this;
-}
-bool Json::is_object() const { return std::holds_alternative<std::shared_ptr<Object>>(v_); }
-
-bool Json::empty() const {
-  if (auto* o = std::get_if<std::shared_ptr<Object>>(&v_)) return (*o)->empty();
-  if (auto* a = std::get_if<std::shared_ptr<Array>>(&v_)) return (*a)->empty();
-  return false;
 }
 
 namespace {
-std::string escape(const std::string& s) {
-  std::string out = "\"";
-  for (char ch : s) {
-    switch (ch) {
-      case '"': out += "\\\""; break;
-      case '\\': out += "\\\\"; break;
-      case '\n': out += "\\n"; break;
-      case '\t': out += "\\t"; break;
-      default:
-        if (static_cast<unsigned char>(ch) < 0x20) {
-          char buf[8];
-          std::snprintf(buf, sizeof buf, "\\u%04x", ch);
-          out += buf;
-        } else {
-          out += ch;
-        }
-    }
-  }
-  return out + "\"";
-}
-}  // namespace
 
-void Json::dump_to(std::string& out, int indent, int depth) const {
+/// Writes v at nesting `depth`: arrays and objects laid out as nlohmann-json's indented dump, doubles
+/// with format_double, every other scalar (strings with their escapes) by nlohmann-json.
+void write(const Json::Value& v, std::string& out, int indent, int depth) {
   const std::string pad(static_cast<std::size_t>(indent * (depth + 1)), ' '), pad_end(static_cast<std::size_t>(indent * depth), ' ');
   const char* nl = indent > 0 ? "\n" : "";
-  if (std::holds_alternative<std::nullptr_t>(v_)) out += "null";
-  else if (auto* b = std::get_if<bool>(&v_)) out += *b ? "true" : "false";
-  else if (auto* d = std::get_if<double>(&v_)) out += std::isfinite(*d) ? format_double(*d) : "null";
-  else if (auto* i = std::get_if<long long>(&v_)) out += std::to_string(*i);
-  else if (auto* s = std::get_if<std::string>(&v_)) out += escape(*s);
-  else if (auto* a = std::get_if<std::shared_ptr<Array>>(&v_)) {
-    if ((*a)->empty()) { out += "[]"; return; }
-    out += "[";
+  if (v.is_number_float()) {
+    const double d = v.get<double>();
+    out += std::isfinite(d) ? format_double(d) : "null";
+  } else if (v.is_array() || v.is_object()) {
+    const bool object = v.is_object();
+    if (v.empty()) {
+      out += object ? "{}" : "[]";
+      return;
+    }
+    out += object ? "{" : "[";
     out += nl;
-    for (std::size_t k = 0; k < (*a)->size(); ++k) {
+    std::size_t k = 0;
+    for (auto it = v.begin(); it != v.end(); ++it, ++k) {
       out += pad;
-      (**a)[k].dump_to(out, indent, depth + 1);
-      if (k + 1 < (*a)->size()) out += ",";
+      if (object) out += Json::Value(it.key()).dump(-1, ' ', false, Json::Value::error_handler_t::replace) + (indent > 0 ? ": " : ":");
+      write(it.value(), out, indent, depth + 1);
+      if (k + 1 < v.size()) out += ",";
       out += nl;
     }
-    out += pad_end + "]";
-  } else if (auto* o = std::get_if<std::shared_ptr<Object>>(&v_)) {
-    if ((*o)->empty()) { out += "{}"; return; }
-    out += "{";
-    out += nl;
-    for (std::size_t k = 0; k < (*o)->size(); ++k) {
-      out += pad + escape((**o)[k].first) + (indent > 0 ? ": " : ":");
-      (**o)[k].second.dump_to(out, indent, depth + 1);
-      if (k + 1 < (*o)->size()) out += ",";
-      out += nl;
-    }
-    out += pad_end + "}";
+    out += pad_end + (object ? "}" : "]");
+  } else {
+    out += v.dump(-1, ' ', false, Json::Value::error_handler_t::replace);
   }
 }
+
+}  // namespace
 
 std::string Json::dump(int indent) const {
   std::string out;
-  dump_to(out, indent, 0);
+  write(v_, out, indent, 0);
   return out + "\n";
 }
 

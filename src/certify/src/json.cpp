@@ -1,9 +1,13 @@
-#include "dfchaos/certified/json.hpp"
+#include "certify/json.hpp"
+
+#include <algorithm>
 
 #include <cstdio>
 #include <cstdlib>
 
-namespace dfchaos::certified {
+namespace dfchaos::certify {
+
+using namespace dfchaos::certified;
 
 namespace {
 std::string params_text(const ParamBox& box) {
@@ -189,4 +193,4 @@ Json to_json(double a, double q, const WindowProof& w) {
   return j;
 }
 
-}  // namespace dfchaos::certified
+}  // namespace dfchaos::certify

@@ -1,0 +1,56 @@
+/// @file certify.hpp
+/// @brief The certified statements as requests with typed arguments: one call checks the input,
+/// runs the proof in ball arithmetic and returns the verdict with its JSON record.
+///
+/// This is what `dfchaos certify` and the Python function `dfchaos.certify` both call; neither
+/// builds option strings nor reads JSON back. The statements:
+///
+///   vartheta0        Eq. (1): the root vartheta0 of pi - x = cot(x/2) and its sine
+///   lemma1           Lemma 1 at a point or over a box of (b, q)
+///   b0               a certified lower bound of b0(q) (Lemma 1 for every smaller b)
+///   discontinuities  Lemma 2 on the segment L0 or L2, at a point (a, b)
+///   covering         Lemma 4 / Theorem 1 at a point or over a box of (b, q)
+///   periodic         Sections 6-7: a periodic point of minimal period m, at a point
+///   superstable      Theorem 2 at a point, or a window in b with both edges
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "kit/json.hpp"
+
+namespace dfchaos::certify {
+
+/// A parameter given either as one number (lo == hi) or as a box [lo, hi].
+struct Range {
+  double lo = 0;  ///< lower end
+  double hi = 0;  ///< upper end
+  static Range point(double x) { return Range{x, x}; }  ///< the degenerate range {x}
+};
+
+/// A request: the statement and its parameters (each statement reads only the ones it needs).
+struct Request {
+  std::string what;             ///< vartheta0, lemma1, b0, discontinuities, covering, periodic, superstable
+  double a = 1;                 ///< forcing amplitude a > 0
+  std::optional<Range> b;       ///< dry friction b (a box for lemma1 and covering)
+  std::optional<Range> q;       ///< constant force q (a box for lemma1 and covering)
+  int period = 0;               ///< periodic: the minimal period m, 1..64
+  std::string segment = "L0";   ///< discontinuities: L0 = [101pi/100, 3pi/2] or L2 = [101pi/100, 51pi/50]
+  std::optional<Range> window;  ///< superstable: a window [lo, hi] in b (floating estimate) to certify with its edges
+};
+
+/// The outcome of a request: proved or not, and the record that says what was proved.
+struct Certificate {
+  bool proved = false;  ///< the statement was proved in ball arithmetic
+  kit::Json record;     ///< statement, parameters, enclosures, verdict and on failure the failed step
+};
+
+/// Whether `what` names a statement. Lets a caller check the name before reading other input.
+/// @throws InvalidParameter naming "what" when it does not.
+void check_statement(const std::string& what);
+
+/// Checks the request and runs the proof. Every number must be finite with |x| <= kMaxParameter.
+/// @throws InvalidParameter (one line naming the parameter) for bad input, before any proof starts.
+Certificate certify(const Request& r);
+
+}  // namespace dfchaos::certify

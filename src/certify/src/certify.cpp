@@ -1,0 +1,112 @@
+#include "certify/certify.hpp"
+
+#include <cmath>
+
+#include "certify/json.hpp"
+#include "dfchaos/errors.hpp"
+#include "dfchaos/parameters.hpp"
+
+namespace dfchaos::certify {
+
+namespace {
+
+using namespace dfchaos::certified;
+
+/// x itself, after checking |x| <= kMaxParameter (which also refuses NaN). @throws InvalidParameter naming `name`.
+double bounded(const std::string& name, double x) {
+  if (!(std::fabs(x) <= kMaxParameter)) throw InvalidParameter(name, "|" + name + "| <= " + format_double(kMaxParameter), x);
+  return x;
+}
+
+/// r itself, after checking both ends (bounded) and lo <= hi.
+Range bounded(const std::string& name, const Range& r) {
+  bounded(name, r.lo);
+  if (r.lo == r.hi) return r;
+  bounded(name, r.hi);
+  if (!(r.lo <= r.hi))
+    throw InvalidParameter(name, "LO <= HI in LO:HI (got '" + format_double(r.lo) + ":" + format_double(r.hi) + "')");
+  return r;
+}
+
+/// The parameter box of a request, checked in the order a, b, q (the first bad one is named).
+ParamBox box_from(const Request& r, bool need_q, bool allow_box) {
+  const double a = bounded("a", r.a);
+  if (!(a > 0)) throw InvalidParameter("a", "a > 0", a);
+  if (!r.b) throw InvalidParameter("b", "required for certify " + r.what);
+  const auto [blo, bhi] = bounded("b", *r.b);
+  if (!(blo > 0)) throw InvalidParameter("b", "b > 0", blo);
+  if (!(2 * bhi < a)) throw InvalidParameter("b", "b < a/2", bhi);
+  double qlo = 0.5 * a + 2 * bhi, qhi = qlo;
+  if (need_q) {
+    if (!r.q) throw InvalidParameter("q", "required for certify " + r.what);
+    const Range q = bounded("q", *r.q);
+    qlo = q.lo;
+    qhi = q.hi;
+    if (!(qlo > 2 * bhi)) throw InvalidParameter("q", "q > 2b (every progression stops)", qlo);
+    if (!(qhi - 2 * blo < a)) throw InvalidParameter("q", "q - 2b < a (t0, t1 exist)", qhi);
+  }
+  if (!allow_box && (blo != bhi || qlo != qhi))
+    throw InvalidParameter(blo != bhi ? "b" : "q", "a single value (certify " + r.what + " works at a parameter point)");
+  return ParamBox{a, blo, bhi, qlo, qhi};
+}
+
+}  // namespace
+
+void check_statement(const std::string& what) {
+  for (const char* known : {"vartheta0", "lemma1", "b0", "discontinuities", "covering", "periodic", "superstable"})
+    if (what == known) return;
+  throw InvalidParameter("what", "one of vartheta0, lemma1, b0, discontinuities, covering, periodic, superstable (got '" + what + "')");
+}
+
+Certificate certify(const Request& r) {
+  check_statement(r.what);
+  if (r.what == "vartheta0") {
+    const Vartheta0 v = certify_vartheta0(200);
+    return {v.verdict.proved, to_json(v)};
+  }
+  if (r.what == "lemma1") {
+    const ParamBox box = box_from(r, true, true);
+    const Lemma1Proof p = certify_lemma1(Model(box));
+    return {p.verdict.proved, to_json(box, p)};
+  }
+  if (r.what == "b0") {
+    const double a = bounded("a", r.a);
+    if (!(a > 0)) throw InvalidParameter("a", "a > 0", a);
+    if (!r.q) throw InvalidParameter("q", "required for certify b0");
+    if (r.q->lo != r.q->hi) throw InvalidParameter("q", "a single value (certify b0 works at one q)");
+    const double q = bounded("q", r.q->lo);
+    if (!(q > 0 && q < a)) throw InvalidParameter("q", "0 < q < a", q);
+    const Lemma1Bound p = lemma1_b0_lower_bound(a, q);
+    return {p.verdict.proved, to_json(a, q, p)};
+  }
+  if (r.what == "discontinuities") {
+    const ParamBox box = box_from(r, false, false);
+    if (r.segment != "L0" && r.segment != "L2") throw InvalidParameter("segment", "L0 or L2 (got '" + r.segment + "')");
+    const bool l2 = r.segment == "L2";
+    const DiscontinuityProof p = prove_discontinuities(box.a, box.b_lo, L_101pi_100(), l2 ? L_51pi_50() : L_3pi_2());
+    return {p.verdict.proved, to_json(box.a, box.b_lo, p, l2 ? "L2 = [101pi/100, 51pi/50]" : "L0 = [101pi/100, 3pi/2]")};
+  }
+  if (r.what == "covering") {
+    const CoveringProof p = prove_covering(box_from(r, true, true));
+    return {p.verdict.proved, to_json(p)};
+  }
+  if (r.what == "periodic") {
+    const ParamBox box = box_from(r, true, false);
+    if (r.period < 1 || r.period > 64) throw InvalidParameter("period", "an integer 1 <= m <= 64", r.period);
+    const CoveringProof c = prove_covering(box);
+    const PeriodicProof p = prove_periodic(c, r.period);
+    return {p.verdict.proved, to_json(c, p)};
+  }
+  // superstable
+  const ParamBox box = box_from(r, true, false);
+  if (!r.window) {
+    const SuperstableProof p = prove_superstable(box.a, box.b_lo, box.q_lo);
+    return {p.verdict.proved, to_json(box.a, box.b_lo, box.q_lo, p)};
+  }
+  const auto [lo, hi] = bounded("window", *r.window);
+  if (!(lo > 0 && lo < hi && 2 * hi < box.a)) throw InvalidParameter("window", "0 < LO < HI < a/2", lo);
+  const WindowProof w = prove_window(box.a, box.q_lo, lo, hi);
+  return {w.verdict.proved, to_json(box.a, box.q_lo, w)};
+}
+
+}  // namespace dfchaos::certify

@@ -1,0 +1,122 @@
+#!/usr/bin/env python3
+"""The layers only point down: core <- kit <- certify, sweep <- cli, python, experiments.
+
+Two checks, each able to fail:
+  1. includes: every quoted #include of a file in a lower layer resolves to a header of the same or a
+     lower layer (core: src/dfchaos; kit: src/kit; certify: src/certify; sweep: src/sweep; the tool:
+     src/cli). A header is looked up as the compiler would: beside the including file, then in each
+     layer's include directory.
+  2. links: the direct link libraries of each library target (written by CMake at generate time into
+     the file given as the second argument, one `target=lib;lib;...` a line), followed transitively,
+     never reach a target of a higher or sibling layer; the Python module links no CLI library.
+
+usage: layering.py SOURCE_DIR LINKS_FILE
+"""
+import re
+import sys
+from pathlib import Path
+
+# Layer of each source folder and its include directory (relative to src/), lowest first.
+LAYERS = {"core": "dfchaos", "kit": "kit", "certify": "certify", "sweep": "sweep", "cli": "cli"}
+INCLUDE_DIRS = {"core": "", "kit": "kit", "certify": "certify", "sweep": "sweep", "cli": "cli"}
+# What each layer may use (itself included).
+ALLOWED = {
+    "core": {"core"},
+    "kit": {"core", "kit"},
+    "certify": {"core", "kit", "certify"},
+    "sweep": {"core", "kit", "sweep"},
+}
+# The CMake targets of each layer, and what each may link (transitively) among the project's targets.
+TARGET_LAYER = {
+    "dfchaos": "core", "dfchaos_certified": "core", "dfchaos_kit": "kit", "dfchaos_certify": "certify",
+    "dfchaos_sweep": "sweep", "dfchaos_cli_core": "cli", "dfchaos_python": "python",
+}
+TARGET_ALLOWED = dict(ALLOWED, cli={"core", "kit", "certify", "sweep", "cli"},
+                      python={"core", "kit", "certify", "sweep", "python"})
+
+INCLUDE = re.compile(r'^\s*#\s*include\s*"([^"]+)"')
+
+
+def layer_of(path, src):
+    rel = path.relative_to(src)
+    for layer, folder in LAYERS.items():
+        if rel.parts[0] == folder:
+            return layer
+    return None
+
+
+def resolve(name, including, src):
+    """The file a quoted include names, looked up beside the including file, then in each include directory."""
+    candidates = [including.parent / name] + [src / d / name for d in INCLUDE_DIRS.values()]
+    for c in candidates:
+        if c.is_file():
+            return c.resolve()
+    return None
+
+
+def check_includes(src):
+    problems = []
+    for layer, folder in LAYERS.items():
+        if layer not in ALLOWED:
+            continue
+        for f in sorted((src / folder).rglob("*")):
+            if f.suffix not in (".hpp", ".cpp", ".h"):
+                continue
+            for n, line in enumerate(f.read_text(errors="replace").splitlines(), 1):
+                m = INCLUDE.match(line)
+                if not m:
+                    continue
+                target = resolve(m.group(1), f, src)
+                if target is None:
+                    continue  # generated or third-party headers
+                used = layer_of(target, src)
+                if used is not None and used not in ALLOWED[layer]:
+                    problems.append(f"{f.relative_to(src.parent)}:{n}: the {layer} layer includes "
+                                    f"\"{m.group(1)}\" of the {used} layer")
+    return problems
+
+
+def check_links(links_file):
+    direct = {}
+    for line in Path(links_file).read_text().splitlines():
+        if "=" in line:
+            target, libs = line.split("=", 1)
+            direct[target] = [lib for lib in libs.split(";") if lib]
+    missing = [t for t in ("dfchaos", "dfchaos_kit", "dfchaos_certify", "dfchaos_sweep") if t not in direct]
+    if missing:
+        return [f"{links_file}: no link libraries written for {', '.join(missing)}"]
+    problems = []
+    for target, layer in TARGET_LAYER.items():
+        if target not in direct:
+            continue
+        seen, todo = set(), list(direct[target])
+        while todo:
+            lib = todo.pop()
+            name = lib.split("::")[-1] if lib.startswith("dfchaos::") else lib
+            name = {"dfchaos": "dfchaos", "kit": "dfchaos_kit", "sweep": "dfchaos_sweep"}.get(name, name)
+            if name in seen:
+                continue
+            seen.add(name)
+            todo += direct.get(name, [])
+            used = TARGET_LAYER.get(name)
+            if used is not None and used not in TARGET_ALLOWED[layer]:
+                problems.append(f"target {target} ({layer} layer) links {name} ({used} layer)")
+    return problems
+
+
+def main():
+    if len(sys.argv) != 3:
+        print(__doc__.strip().splitlines()[-1], file=sys.stderr)
+        return 2
+    src = Path(sys.argv[1]).resolve() / "src"
+    problems = check_includes(src) + check_links(sys.argv[2])
+    for p in problems:
+        print("FAIL:", p)
+    if problems:
+        return 1
+    print("ok: includes of src/dfchaos, src/kit, src/certify, src/sweep and the link libraries point down")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
