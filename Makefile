@@ -136,7 +136,7 @@ bench-snapshot: bench
 	   grep -v '^%' $(BUILD)/bench/bench.tex; } > paper/bench-snapshot.tex.tmp && mv paper/bench-snapshot.tex.tmp paper/bench-snapshot.tex
 	@echo "bench-snapshot: paper/bench-snapshot.tex (commit it)"
 
-# Issue 14: Theorem 1's covering proved over boxes of (b/a, q/a) on a larger band than `make
+# Theorem 1's covering proved over boxes of (b/a, q/a) on a larger band than `make
 # reproduce` certifies (its default is a thin strip that fits the reproduce budget). Rewrites
 # $(BUILD)/data/certified_region*.tsv; `make report` then shows this region. Measured time: see
 # docs/certified.md. Override the band with CERT_REGION="--b-lo ... --b-hi ... --max-boxes ...".
@@ -146,12 +146,12 @@ certify-region: build-tools
 	@$(BUILD)/bin/experiments/certified_region --out $(BUILD) $(CERT_REGION)
 	@touch $(BUILD)/stamps/certified_region.ok
 
-# The high-resolution plane (issue 16): resumable, so a second `make plane-hires` continues.
+# The high-resolution plane: resumable, so a second `make plane-hires` continues.
 plane-hires: deps configure
 	@$(CMAKE) --build $(BUILD) -j $(JOBS) --target dfchaos_cli $$(grep -q '^DFCHAOS_MPI:BOOL=ON' $(BUILD)/CMakeCache.txt && echo dfchaos_sweep_mpi)
 	@bash scripts/plane-hires.sh $(BUILD) $(PLANE_N) $(PLANE_RANKS)
 
-# ---- reliability checks (issue 7) -----------------------------------------------------------
+# ---- reliability checks ----------------------------------------------------------------------
 
 test-sanitize: deps
 	@$(CMAKE) -S . -B $(BUILD)-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDFCHAOS_SANITIZE=ON > /dev/null

@@ -1,5 +1,5 @@
 /// @file certified_claims.cpp
-/// @brief Issue 14: the paper's statements *proved* in ball arithmetic (Arb) at concrete parameters,
+/// @brief The paper's statements *proved* in ball arithmetic (Arb) at concrete parameters,
 /// as claims with evidence_kind "certified": Eq. (1), Lemma 1 (and a certified lower bound of
 /// b0(q) on a grid of q/a), Lemma 2, Lemma 4 / Theorem 1 (including the paper's own construction
 /// with L1, L2), Sections 6-7 (periodic orbits of minimal periods 1..12 enclosed by Krawczyk,
@@ -66,7 +66,7 @@ std::vector<std::pair<double, double>> merged_windows(double q, double b_lo, dou
 }  // namespace
 
 const Experiment experiment{
-    .title = "the paper's statements proved in ball arithmetic at concrete parameters (issue 14)",
+    .title = "the paper's statements proved in ball arithmetic at concrete parameters",
     .paper = {"Eq. (1)", "Lemma 1", "Lemma 2", "Lemma 4", "Theorem 1", "Section 6", "Section 7", "Theorem 2"},
     .tests = {"test_certified"},
     .options = {count("max-period", 12, "periodic orbits of minimal periods 1..M").range(1, 24).fast_value(3)},

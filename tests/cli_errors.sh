@@ -70,7 +70,7 @@ expect_error "arc:"   map "${P[@]}" --arc 1e8
 expect_error "arc:"   map "${P[@]}" --arc x
 expect_error "--arc"  map "${P[@]}" --arc 3 --theta 4
 expect_error "max-events:" simulate "${P[@]}" --x0 0 --y0 0 --v0 0 --t0 0 --t-end 10 --max-events 0
-# Issue 12: the accuracy contract (docs/accuracy.md).
+# The accuracy contract (docs/accuracy.md).
 expect_error "a:"     info --a 1e-320 --b 0.01 --q 0.85
 expect_error "b:"     info --a 1 --b 1e-300 --q 0.85
 expect_error "q:"     info --a 1 --b 0.01 --q 1e101
@@ -151,7 +151,7 @@ expect_ok "^n	theta	scenario	elapsed	penetration	time	y$" orbit "${P[@]}" --thet
 expect_ok "^t	phase	before	after	kind" simulate "${P[@]}" --x0 0 --y0 0 --v0 0 --t0 4 --t-end 100 --sample 1
 expect_ok "^quantity	value" info "${P[@]}"
 expect_ok "^theta	T1	T" map --a 1 --b 1e-12 --q 0.85 --theta 3.5 4 5
-# The double just below t3 is not a fixed point (issue 12, item 1): scenario C, T = t2.
+# The double just below t3 is not a fixed point (the t3 edge): scenario C, T = t2.
 checks=$((checks + 1))
 row=$("$cli" map "${P[@]}" --theta 6.2631839736061945 | tail -n 1)
 if [[ $(cut -f3,4 <<<"$row") != $'3.1615939871631835\tC' ]]; then
@@ -165,7 +165,7 @@ checks=$((checks + 1))
 [[ $(wc -l < <("$cli" map "${P[@]}" --arc 5)) -eq 6 ]] || { echo "FAIL: --arc N gives N rows"; fails=$((fails + 1)); }
 checks=$((checks + 1))
 [[ $(wc -l < <("$cli" map "${P[@]}" --grid 3.5 4.5 7)) -eq 8 ]] || { echo "FAIL: --grid N gives N rows"; fails=$((fails + 1)); }
-# Issue 12.9: orbit streams its rows (memory flat in the step count): --steps 1e8 under a 300 MB
+# orbit streams its rows (memory flat in the step count): --steps 1e8 under a 300 MB
 # address-space limit delivers its first rows at once (the reader closes the pipe after 3 lines).
 checks=$((checks + 1))
 # (Under AddressSanitizer, which reserves terabytes of address space, only the streaming is checked.)

@@ -1,4 +1,4 @@
-// The certified layer (issue 14), in tiers:
+// The certified layer, in tiers:
 //  - unit: the Ball wrapper, vartheta0's digits and correctly rounded doubles;
 //  - cross-validation: certified enclosures of T1, theta2 and T contain the floating layer's values
 //    (within its stated accuracy) on many phases and parameters; Lemma 2's count matches the closed
@@ -26,7 +26,7 @@ using namespace dfchaos::certify;
 namespace {
 
 // The floating layer computes instants (T1, theta2) to about 1e-12 relative and T to about 1e-10
-// (DESIGN.md §3); its values must lie within these of the certified enclosures.
+// (docs/accuracy.md); its values must lie within these of the certified enclosures.
 constexpr double kInstantRelTol = 1e-10;
 constexpr double kPhaseAbsTol = 1e-9;
 // Phases per parameter set in the cross-validation, and the share of them that must be proved

@@ -1,5 +1,5 @@
 /// @file bench_certified.cpp
-/// @brief `make bench` (issue 14): time per certified proof, one core. A covering proof (Lemma 4)
+/// @brief `make bench`: time per certified proof, one core. A covering proof (Lemma 4)
 /// at each of the issue's parameter points, with and without the floating candidate search; one
 /// certified T at a thin phase; Lemma 2 on L0; the periodic orbit of period 12; a Lemma 4 proof
 /// over a parameter box. The issue's target: a covering proof at one point in at most 30 s.

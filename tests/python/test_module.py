@@ -284,7 +284,7 @@ def test_ctrl_c_stops_a_long_call():
 
 @pytest.mark.crossval
 def test_certify_matches_the_cli_and_refuses_bad_input(cli):
-    """dfchaos.certify gives the record of `dfchaos certify` (issue 14), as a dict."""
+    """dfchaos.certify gives the record of `dfchaos certify`, as a dict."""
     import json
     rec = dfchaos.certify("covering", a=1.0, b=0.001, q=0.85)
     rc, out, err = cli.run("certify", "covering", "--a", "1", "--b", "0.001", "--q", "0.85")
