@@ -28,7 +28,6 @@ long long count(const std::string& name, const std::string& text, long long lo, 
   return static_cast<long long>(v);
 }
 
-std::string num(double x) { return format_double(x); }
 
 Writer::Writer() { buffer_.reserve(1 << 16); }
 Writer::~Writer() {

@@ -56,9 +56,6 @@ struct WriteFailed : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// Formats a double as every output does (%.17g).
-std::string num(double x);
-
 /// The whole tool: parses argv, runs the subcommand, prints to stdout and stderr.
 /// @return the exit status: 0 success, 1 a bounded computation gave up or writing failed, 2 bad input.
 int run(int argc, char** argv);

@@ -49,7 +49,7 @@ Command add_map(CLI::App& app) {
               const double lo = number("grid LO", o->grid[0]), hi = number("grid HI", o->grid[1]);
               const long long n = count("grid N", o->grid[2], 1, 10'000'000);
               p.require_in_map_domain(lo, "grid LO");
-              if (!(hi > lo && hi <= t3)) throw InvalidParameter("grid HI", "LO < HI <= t3 = " + num(t3), hi);
+              if (!(hi > lo && hi <= t3)) throw InvalidParameter("grid HI", "LO < HI <= t3 = " + format_double(t3), hi);
               th.reserve(static_cast<std::size_t>(n));
               for (long long i = 0; i < n; ++i) th.push_back(lo + (hi - lo) * static_cast<double>(i) / static_cast<double>(n));
             } else if (!o->arc.empty()) {
@@ -65,7 +65,7 @@ Command add_map(CLI::App& app) {
             w.row({"theta", "T1", "T", "scenario", "elapsed", "penetration"});
             for (double x : th) {
               const auto s = return_map_step(p, x);
-              w.row({num(x), num(s.hit.theta1), num(s.T), scenario_name(s.scenario), num(s.elapsed), num(s.penetration)});
+              w.row({format_double(x), format_double(s.hit.theta1), format_double(s.T), scenario_name(s.scenario), format_double(s.elapsed), format_double(s.penetration)});
             }
             w.flush();
             return 0;

@@ -49,8 +49,8 @@ Command add_orbit(CLI::App& app) {
             const Orbit orbit(p, theta0, steps);
             for (auto it = orbit.begin(); it != orbit.end(); ++it) {
               const long long n = it.n();
-              w.row({std::to_string(n), num(it->theta), scenario_name(it->scenario), num(it->elapsed), num(it->penetration),
-                     num(static_cast<double>(it.time())), num(static_cast<double>(it.y()))});
+              w.row({std::to_string(n), format_double(it->theta), scenario_name(it->scenario), format_double(it->elapsed), format_double(it->penetration),
+                     format_double(static_cast<double>(it.time())), format_double(static_cast<double>(it.y()))});
               if (progress && (n + 1) % 100000 == 0) {
                 const double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
                 std::fprintf(stderr, "\rorbit: %lld/%lld steps, about %.0f s left   ", n + 1, steps, sec / (n + 1) * (steps - n - 1));

@@ -26,7 +26,7 @@ class SampleSpool {
 
   /// One row t x y v regime, as Writer::row writes it. @throws WriteFailed
   void row(const Sample& s) {
-    line_ = num(s.t) + '\t' + num(s.x) + '\t' + num(s.y) + '\t' + num(s.v) + '\t' + regime_code(s.regime) + '\n';
+    line_ = format_double(s.t) + '\t' + format_double(s.x) + '\t' + format_double(s.y) + '\t' + format_double(s.v) + '\t' + regime_code(s.regime) + '\n';
     if (std::fwrite(line_.data(), 1, line_.size(), file_.get()) != line_.size())
       fail("cannot write the samples to a temporary file");
   }
@@ -66,8 +66,8 @@ class Printer final : public SimulationSink {
     if (sampled_) spool_.emplace();
   }
   void event(const SimulationEvent& e) override {
-    w_.row({num(e.t), num(e.when.phase), regime_code(e.before), regime_code(e.after), transition_code(e.kind), num(e.x), num(e.y),
-            num(e.v_before), num(e.v_after)});
+    w_.row({format_double(e.t), format_double(e.when.phase), regime_code(e.before), regime_code(e.after), transition_code(e.kind), format_double(e.x), format_double(e.y),
+            format_double(e.v_before), format_double(e.v_after)});
   }
   void sample(const Sample& s) override { spool_->row(s); }
 

@@ -1,9 +1,10 @@
 #include "certify/json.hpp"
 
 #include <algorithm>
-
 #include <cstdio>
 #include <cstdlib>
+
+#include "dfchaos/errors.hpp"
 
 namespace dfchaos::certify {
 
@@ -30,7 +31,7 @@ std::string shortest_double(double x) {
     std::snprintf(buf, sizeof buf, "%.*g", d, x);
     if (std::strtod(buf, nullptr) == x) return buf;
   }
-  return fmt17(x);
+  return format_double(x);
 }
 
 Json ball_json(const Ball& x, long digits) {
@@ -58,8 +59,8 @@ std::string statement_lemma1(const ParamBox& box) {
          "(Eq. 8, enclosed) and u' < 0 on (t1, t2], so it stops exactly once, at t4 in (t1, t2), where the mass waits for t2.";
 }
 std::string statement_b0(double a, double q, double b_low) {
-  return "Lemma 1 holds for every b in (0, " + fmt17(b_low) + "] at a = " + fmt17(a) + ", q = " + fmt17(q) +
-         " (u(t2) < 0 proved over b-balls covering [0, b_low]): b0(q) >= " + fmt17(b_low) + ".";
+  return "Lemma 1 holds for every b in (0, " + format_double(b_low) + "] at a = " + format_double(a) + ", q = " + format_double(q) +
+         " (u(t2) < 0 proved over b-balls covering [0, b_low]): b0(q) >= " + format_double(b_low) + ".";
 }
 std::string statement_discontinuities(const std::string& segment, std::size_t n) {
   return "Lemma 2 on " + segment + " at the double values of a, b: T1 has exactly " + std::to_string(n) +

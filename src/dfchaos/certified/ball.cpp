@@ -203,10 +203,4 @@ Ball abs(const Ball& x) { Ball r; arb_abs(r.get(), x.get()); return r; }
 Ball max(const Ball& x, const Ball& y) { Ball r; arb_max(r.get(), x.get(), y.get(), g_prec); return r; }
 Ball min(const Ball& x, const Ball& y) { Ball r; arb_min(r.get(), x.get(), y.get(), g_prec); return r; }
 
-std::string fmt17(double x) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.17g", x);
-  return buf;
-}
-
 }  // namespace dfchaos::certified

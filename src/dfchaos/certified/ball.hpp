@@ -138,9 +138,6 @@ inline bool lt(const Ball& x, const Ball& y) { return arb_lt(x.get(), y.get()); 
 /// Certainly \f$x \le y\f$ for all points.
 inline bool le(const Ball& x, const Ball& y) { return arb_le(x.get(), y.get()); }
 
-/// Formats a double with 17 significant digits (as dfchaos::format_double).
-std::string fmt17(double x);
-
 }  // namespace dfchaos::certified
 
 /// \f$\pi\f$ in ball arithmetic, for the model's templates (dfchaos/model.hpp).

@@ -9,6 +9,7 @@
 #include "dfchaos/bisect.hpp"
 #include "dfchaos/certified/oracle.hpp"
 #include "dfchaos/covering.hpp"
+#include "dfchaos/errors.hpp"
 #include "dfchaos/phase.hpp"
 
 namespace dfchaos::certified {
@@ -250,7 +251,7 @@ Verdict cover_2d(const ParamBox& box, double th_lo, double th_hi, const Covering
     const bool can_b = it.box.b_hi - it.box.b_lo > 1e-9 * it.box.b_hi && bm > it.box.b_lo && bm < it.box.b_hi;
     const bool can_q = it.box.q_hi - it.box.q_lo > 1e-7 && qm > it.box.q_lo && qm < it.box.q_hi;
     if (it.depth >= max_depth || (!can_t && !can_b && !can_q) || budget.exhausted())
-      return Verdict::fail(step, "at theta in [" + fmt17(it.t0) + ", " + fmt17(it.t1) + "], " + it.box.describe() + ": " + why.describe());
+      return Verdict::fail(step, "at theta in [" + format_double(it.t0) + ", " + format_double(it.t1) + "], " + it.box.describe() + ": " + why.describe());
     const bool by_b = can_b && (!can_t || split_b_first(it.box, it.t0, it.t1));
     if (by_b) {
       ParamBox lo = it.box, hi = it.box;
@@ -288,7 +289,7 @@ SegmentProof prove_segment(const Model& m, const Candidate& c, const CoveringOpt
   // J inside [t2, 3 pi / 2] for every parameter of the box.
   const Ball three_halves_pi = 1.5 * m.pi;
   if (!le(m.t2_at_b_hi, Ball(r.lo)) || !le(Ball(r.hi), three_halves_pi)) {
-    r.verdict = Verdict::fail("covering: J inside [t2, 3pi/2]", "J = [" + fmt17(r.lo) + ", " + fmt17(r.hi) + "]");
+    r.verdict = Verdict::fail("covering: J inside [t2, 3pi/2]", "J = [" + format_double(r.lo) + ", " + format_double(r.hi) + "]");
     return r;
   }
   Budget budget;

@@ -5,6 +5,7 @@
 
 #include "dfchaos/certified/bisect.hpp"
 #include "dfchaos/certified/oracle.hpp"
+#include "dfchaos/errors.hpp"
 #include "dfchaos/model.hpp"
 
 namespace dfchaos::certified {
@@ -31,7 +32,7 @@ Verdict cover_simple(const Model& m, double x, double y, Budget& budget, int& ba
     const double mid = 0.5 * (it.lo + it.hi);
     if (it.depth >= 50 || !(mid > it.lo && mid < it.hi) || budget.exhausted())
       return Verdict::fail("Lemma 2: T1 continuous between the tangencies",
-                           "at theta in [" + fmt17(it.lo) + ", " + fmt17(it.hi) + "]: " + p.verdict.describe());
+                           "at theta in [" + format_double(it.lo) + ", " + format_double(it.hi) + "]: " + p.verdict.describe());
     stack.push_back({mid, it.hi, it.depth + 1});
     stack.push_back({it.lo, mid, it.depth + 1});
   }

@@ -8,8 +8,8 @@
 namespace dfchaos::certified {
 
 std::string ParamBox::describe() const {
-  auto range = [](double lo, double hi) { return lo == hi ? fmt17(lo) : "[" + fmt17(lo) + ", " + fmt17(hi) + "]"; };
-  return "a=" + fmt17(a) + " b=" + range(b_lo, b_hi) + " q=" + range(q_lo, q_hi);
+  auto range = [](double lo, double hi) { return lo == hi ? format_double(lo) : "[" + format_double(lo) + ", " + format_double(hi) + "]"; };
+  return "a=" + format_double(a) + " b=" + range(b_lo, b_hi) + " q=" + range(q_lo, q_hi);
 }
 
 Model::Model(const ParamBox& box) : box_(box) {

@@ -5,6 +5,7 @@
 
 #include "dfchaos/certified/bisect.hpp"
 #include "dfchaos/certified/oracle.hpp"
+#include "dfchaos/errors.hpp"
 #include "dfchaos/model.hpp"
 
 namespace dfchaos::certified {
@@ -220,15 +221,15 @@ Lemma1Proof certify_lemma1(const Model& m, int max_pieces) {
     first = false;
     if (u.is_negative()) continue;
     if (u.is_positive()) {
-      r.verdict = Verdict::refute("Lemma 1: u(t2) < 0 (Eq. 8)", "u(t2) = " + u.str(8) + " > 0 at b in [" + fmt17(p.b_lo) + ", " +
-                                                                       fmt17(p.b_hi) + "], q in [" + fmt17(p.q_lo) + ", " + fmt17(p.q_hi) + "]");
+      r.verdict = Verdict::refute("Lemma 1: u(t2) < 0 (Eq. 8)", "u(t2) = " + u.str(8) + " > 0 at b in [" + format_double(p.b_lo) + ", " +
+                                                                       format_double(p.b_hi) + "], q in [" + format_double(p.q_lo) + ", " + format_double(p.q_hi) + "]");
       return r;
     }
     const double bm = 0.5 * (p.b_lo + p.b_hi), qm = 0.5 * (p.q_lo + p.q_hi);
     const bool split_b = (p.b_hi - p.b_lo) >= (p.q_hi - p.q_lo) * 0.25 && bm > p.b_lo && bm < p.b_hi;
     const bool split_q = !split_b && qm > p.q_lo && qm < p.q_hi;
     if (!split_b && !split_q) {
-      r.verdict = Verdict::fail("Lemma 1: u(t2) < 0 (Eq. 8)", "undecided at b = " + fmt17(p.b_lo) + ", q = " + fmt17(p.q_lo) + ": u(t2) = " + u.str(8));
+      r.verdict = Verdict::fail("Lemma 1: u(t2) < 0 (Eq. 8)", "undecided at b = " + format_double(p.b_lo) + ", q = " + format_double(p.q_lo) + ": u(t2) = " + u.str(8));
       return r;
     }
     if (split_b) {
@@ -293,7 +294,7 @@ Lemma1Bound lemma1_b0_lower_bound(double a, double q, double resolution, int max
       return r;
     }
   }
-  r.verdict = Verdict::fail("Lemma 1: b0(q)", "no b_low proved within 20 attempts below " + fmt17(r.b_float));
+  r.verdict = Verdict::fail("Lemma 1: b0(q)", "no b_low proved within 20 attempts below " + format_double(r.b_float));
   return r;
 }
 

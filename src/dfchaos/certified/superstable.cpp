@@ -7,6 +7,7 @@
 
 #include "dfchaos/certified/bisect.hpp"
 #include "dfchaos/certified/vartheta0.hpp"
+#include "dfchaos/errors.hpp"
 #include "dfchaos/model.hpp"
 #include "dfchaos/superstable.hpp"
 
@@ -140,7 +141,7 @@ WindowProof prove_window(double a, double q, double b_lo, double b_hi, double re
       Ball& T = side == 0 ? r.T_left_out : r.T_right_out;
       T = t.T;
       if (!t.verdict || t.constant_t2 || !lt(mo.t2, t.T)) {
-        last = std::string("T(t2) != t2 not proved at b = ") + fmt17(side == 0 ? r.left_out : r.right_out) + ": " + t.verdict.describe();
+        last = std::string("T(t2) != t2 not proved at b = ") + format_double(side == 0 ? r.left_out : r.right_out) + ": " + t.verdict.describe();
         outer_ok = false;
       }
     }
@@ -163,7 +164,7 @@ WindowProof prove_window(double a, double q, double b_lo, double b_hi, double re
       }
       const double m2 = 0.5 * (it.lo + it.hi);
       if (it.depth >= 48 || !(m2 > it.lo && m2 < it.hi) || boxes > 20000 || budget.exhausted()) {
-        last = "T(t2(b)) = t2 not proved for b in [" + fmt17(it.lo) + ", " + fmt17(it.hi) + "]: " + t.verdict.describe();
+        last = "T(t2(b)) = t2 not proved for b in [" + format_double(it.lo) + ", " + format_double(it.hi) + "]: " + t.verdict.describe();
         ok = false;
         break;
       }
