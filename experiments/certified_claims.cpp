@@ -109,8 +109,11 @@ const Experiment experiment{
           e.set("vartheta0", ball_json(v.value, 40)).set("sin_vartheta0", ball_json(v.sine, 40)).set("paper", "0.81047, 0.724611");
           certified_claim(out, "cert.eq1.paper_digits", "Eq. (1)",
                           "The paper's 0.81047 and 0.724611 are vartheta0 and sin(vartheta0) correctly rounded to 5 and 6 decimals.", e, d1 && d2);
-          out.macro("CertVarthetaZero", v.value.mid_str(40));
-          out.macro("CertSinVarthetaZero", v.sine.mid_str(40));
+          const Ball::Printed v40 = v.value.printed(40), s40 = v.sine.printed(40);  // balls that enclose
+          out.macro("CertVarthetaZero", v40.mid);
+          out.macro("CertVarthetaZeroRad", latex_number(v40.rad));
+          out.macro("CertSinVarthetaZero", s40.mid);
+          out.macro("CertSinVarthetaZeroRad", latex_number(s40.rad));
           out.macro("CertVarthetaZeroDouble", shortest_double(v.value_double));
           out.macro("CertSinVarthetaZeroDouble", shortest_double(v.sine_double));
           const Ball::Printed v22 = v.value.printed(22), s22 = v.sine.printed(22);  // balls that enclose
@@ -353,8 +356,12 @@ const Experiment experiment{
                                      "it stops at t4 in (t2, t3) where the mass flies (scenario D), so T(t2) = t4 != t2 and t2 is not superstable.",
                                      e, x.verdict.proved, &x.verdict);
           ce.parameter_object(Json::object().set("a", 1.0).set("b", bx).set("q", q));
+          const Ball::Printed t4 = x.T.printed(10);  // a ball that encloses t4 = T(t2)
           tex_row("Theorem 2 (erratum)", "(0.85, " + num(bx) + ")",
-                  x.verdict.proved ? "(2), (22) hold; $T(t_2)=t_4\\in" + x.T.mid_str(10) + "\\ne t_2$ (scenario D)" : "not proved", "---");
+                  x.verdict.proved ? "(2), (22) hold; $T(t_2)=t_4\\in[" + t4.mid + "\\pm" + latex_number(t4.rad) +
+                                             "]$, $t_4\\ne t_2$ (scenario D)"
+                                       : "not proved",
+                  "---");
         }
 
         tex += "\\bottomrule\n\\end{tabular}\n";

@@ -9,7 +9,7 @@
 ///    \f$\beta = q - 2b\f$, \f$A = 0\f$, \f$B = a\f$, with \f$f'' = -a\cos t\f$.
 ///
 /// **Why no root is missed.** \f$f'' = 2\alpha - A\sin t - B\cos t\f$ vanishes at no more than two
-/// phases per period, known in closed form (inflection_phases_into() in roots.cpp). Between consecutive inflection
+/// phases per period, known in closed form (inflection_phases_into() in roots/piecewise.cpp). Between consecutive inflection
 /// instants \f$f'\f$ is monotone, so it has at most one zero there, which splits the piece into at
 /// most two sub-pieces on which \f$f\f$ itself is monotone. On a monotone sub-piece \f$f\f$ has a
 /// zero iff its end values differ in sign, and the zero is unique: a bracketing solver finds it.

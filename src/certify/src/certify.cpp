@@ -28,7 +28,8 @@ Range bounded(const std::string& name, const Range& r) {
   return r;
 }
 
-/// The parameter box of a request, checked in the order a, b, q (the first bad one is named).
+/// The parameter box of a request, its ranges checked in the order a, b, q (the first bad one is
+/// named; the tool has parsed the syntax of every option before).
 ParamBox box_from(const Request& r, bool need_q, bool allow_box) {
   const double a = bounded("a", r.a);
   if (!(a > 0)) throw InvalidParameter("a", "a > 0", a);

@@ -4,6 +4,7 @@
 #include <gmp.h>
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -159,6 +160,9 @@ std::pair<double, double> Ball::enclosing_doubles() const {
 }
 
 Ball::Printed Ball::printed(long digits) const {
+  // A ball that is not finite (an infinite radius, or a midpoint beyond the doubles) encloses
+  // everything it may stand for only with an infinite radius.
+  if (!arb_is_finite(x_)) return Printed{mid_str(digits), "inf"};
   Printed p{mid_str(digits), "0"};
   // (Enough bits that the decimal midpoint is parsed far below its own last digit.)
   const PrecisionScope scope(std::max(precision(), 4 * digits + 64));
@@ -167,6 +171,11 @@ Ball::Printed Ball::printed(long digits) const {
   const Ball e = abs(*this - Ball::decimal(p.mid));
   double r = e.upper();
   if (r == 0) return p;
+  if (!std::isfinite(r)) {
+    p.rad = "inf";
+    return p;
+  }
+  r = std::max(r, DBL_MIN);  // (from a subnormal, r (1 + 1%) could round back to r)
   // %.3g rounds to nearest, by at most half a unit in its third digit (0.5% relative): from
   // r (1 + 1%) the printed radius is above r. Checked, and widened again if it were not.
   for (int attempt = 0; attempt < 8; ++attempt) {
