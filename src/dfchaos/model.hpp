@@ -8,7 +8,7 @@
 /// one definition here, whatever the arithmetic it is evaluated in. The trigonometric functions
 /// are found by argument-dependent lookup (`using std::sin` covers the built-in types, the Ball
 /// overloads are found beside the Ball type), and \f$\pi\f$ of the arithmetic comes from
-/// Constants<S>. The operations are written in the order in which the callers evaluated them, so
+/// `Constants<S>`. The operations are written in the order in which the callers evaluated them, so
 /// that an instantiation gives the same bits as the expression it replaced (except the core's
 /// G2 of return_map.cpp, now wholly in long double, which no output uses).
 ///

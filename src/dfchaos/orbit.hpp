@@ -30,16 +30,16 @@ class Orbit {
   /// Walks the orbit; `*it` is the current step.
   class iterator {
    public:
-    using iterator_category = std::input_iterator_tag;
-    using value_type = MapStep;
-    using difference_type = std::ptrdiff_t;
-    using pointer = const MapStep*;
-    using reference = const MapStep&;
+    using iterator_category = std::input_iterator_tag;  ///< a single pass: each step is computed once
+    using value_type = MapStep;                         ///< one step of T
+    using difference_type = std::ptrdiff_t;             ///< (iterator requirements)
+    using pointer = const MapStep*;                     ///< (iterator requirements)
+    using reference = const MapStep&;                   ///< (iterator requirements)
 
     iterator() = default;  ///< the end of every orbit
 
     const MapStep& operator*() const { return step_; }   ///< the step from \f$\theta_n\f$
-    const MapStep* operator->() const { return &step_; }
+    const MapStep* operator->() const { return &step_; }  ///< the step from \f$\theta_n\f$
     long long n() const { return n_; }                    ///< the index \f$n\f$ of the current step
     /// The instant at which \f$\theta_n\f$ starts: \f$\theta_0\f$ plus the elapsed times of the
     /// steps before, summed in long double.
@@ -51,7 +51,7 @@ class Orbit {
     /// Moves to step \f$n + 1\f$, computing it unless it is past the last one.
     /// @throws GaveUp as return_map_step.
     iterator& operator++();
-    void operator++(int) { ++*this; }
+    void operator++(int) { ++*this; }  ///< as ++it (an input iterator's post-increment)
 
     /// Equal when both are past the end or both at the same index of the same orbit.
     friend bool operator==(const iterator& x, const iterator& y) { return x.at_end() == y.at_end() && (x.at_end() || x.n_ == y.n_); }

@@ -94,14 +94,15 @@ class Ball {
   std::string str(long digits = 20) const;
   /// The midpoint in decimal with `digits` significant digits (rounded to nearest).
   std::string mid_str(long digits = 40) const;
-  /// A decimal ball \f$[m \pm r]\f$ that contains this ball: m is the midpoint rounded to `digits`
-  /// significant digits, and r (3 significant digits) is rounded up from
-  /// \f$|m - \mathrm{mid}| + \mathrm{rad}\f$, so that the rounding of the midpoint is paid for in
-  /// the radius. Checked in Arb before it is returned.
+  /// A ball in decimal: the strings `mid` and `rad` of \f$[m \pm r]\f$.
   struct Printed {
     std::string mid;  ///< the midpoint in decimal
     std::string rad;  ///< the radius in decimal
   };
+  /// A decimal ball \f$[m \pm r]\f$ that contains this ball: m is the midpoint rounded to `digits`
+  /// significant digits, and r (3 significant digits) is rounded up from
+  /// \f$|m - \mathrm{mid}| + \mathrm{rad}\f$, so that the rounding of the midpoint is paid for in
+  /// the radius (checked in Arb before it is returned); r is "inf" for a ball that is not finite.
   Printed printed(long digits) const;
   /// The ball as a double midpoint (the nearest double to the midpoint) and a double radius,
   /// rounded up from \f$|m - \mathrm{ball}|\f$, so that \f$[m \pm r]\f$ contains the ball.
