@@ -4,6 +4,7 @@
 #include <cmath>
 #include <optional>
 
+#include "dfchaos/bisect.hpp"
 #include "dfchaos/errors.hpp"
 #include "dfchaos/next_hit.hpp"
 
@@ -207,17 +208,23 @@ BranchSample branch_sample(const Parameters& p, double theta) {
 
 /// Bisection between the samples `below` and `above` of one branch for a sample that `accept`s;
 /// a sample that is not accepted replaces `below` where `is_below` holds, `above` otherwise.
-/// Bounded: 80 halvings, or until the phases meet in the last bit (then gives up: nullopt).
+/// Bounded (bisect_bracket): 80 halvings, or until the phases meet in the last bit (then gives up: nullopt).
 template <class Accept, class IsBelow>
 std::optional<BranchSample> seek(const Parameters& p, BranchSample below, BranchSample above, Accept accept, IsBelow is_below) {
-  for (int it = 0; it < 80; ++it) {
-    const double m = 0.5 * (below.theta + above.theta);
-    if (m == below.theta || m == above.theta) break;
-    BranchSample s = branch_sample(p, m);
-    if (accept(s)) return s;
-    (is_below(s) ? below : above) = std::move(s);
-  }
-  return std::nullopt;
+  std::optional<BranchSample> found;
+  bisect_bracket(
+      std::move(below), std::move(above), 80,
+      [&p](const BranchSample& lo, const BranchSample& hi) -> std::optional<BranchSample> {
+        const double m = 0.5 * (lo.theta + hi.theta);
+        if (m == lo.theta || m == hi.theta) return std::nullopt;
+        return branch_sample(p, m);
+      },
+      [&](const BranchSample& s) -> std::optional<bool> {
+        if (!accept(s)) return is_below(s);
+        found = s;
+        return std::nullopt;  // found: the bisection ends here
+      });
+  return found;
 }
 
 /// CoveringMethod::Branchwise; nullopt when a branch does not show the structure it relies on.

@@ -65,15 +65,17 @@ void integrate_until(System& sys, double& t, double y[2], Event event, long& ste
     if (h > o.max_step) h = o.max_step;
     if (event(t, y) < 0) continue;
     // Sign change in (t_prev, t]: bisect, re-integrating from the start of the step.
-    double lo = t_prev, hi = t, y_hi[2] = {y[0], y[1]};
-    for (int it = 0; it < 200 && hi - lo > o.event_tol; ++it) {
-      const double mid = 0.5 * (lo + hi);
+    // The state at the bracket's right end: kept from the last test where the event was reached.
+    double y_hi[2] = {y[0], y[1]};
+    const auto before_event = [&](double mid) {
       double tm = t_prev, ym[2] = {y_prev[0], y_prev[1]};
       integrate_to(sys, tm, mid, ym, o);
-      if (event(mid, ym) < 0) lo = mid;
-      else { hi = mid; y_hi[0] = ym[0]; y_hi[1] = ym[1]; }
-    }
-    t = hi;
+      if (event(mid, ym) < 0) return true;
+      y_hi[0] = ym[0];
+      y_hi[1] = ym[1];
+      return false;
+    };
+    t = bisect(before_event, t_prev, t, {.abs_tol = o.event_tol}).second;
     y[0] = y_hi[0];
     y[1] = y_hi[1];
     return;

@@ -16,7 +16,7 @@ const char* git_hash();
 /// The compiler that built the kit, e.g. "g++ 12.2.0".
 std::string compiler_id();
 /// Versions of everything that went into the build (dfchaos, git hash, compiler, Eigen, GSL,
-/// CLI11), as (name, version) pairs, for the report's provenance appendix.
+/// CLI11, nlohmann-json), as (name, version) pairs, for the report's provenance appendix.
 std::vector<std::pair<std::string, std::string>> build_info();
 
 }  // namespace dfchaos::kit

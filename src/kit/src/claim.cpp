@@ -6,6 +6,8 @@
 #include <cstdlib>
 #include <stdexcept>
 
+#include "kit/format.hpp"
+
 namespace dfchaos::kit {
 
 const char* evidence_kind_name(EvidenceKind k) {
@@ -124,7 +126,7 @@ std::string Claim::statement() const {
 
 Json Claim::to_json() const {
   Json j = Json::object();
-  j.set("id", id_).set("reference", reference_).set("statement", statement());
+  j.set("id", id_).set("reference", reference_).set("reference_tex", latex_escape(reference_)).set("statement", statement());
   j.set("origin", origin_name(origin_)).set("evidence_kind", evidence_kind_name(kind_));
   j.set("parameters", parameters_).set("evidence", evidence_);
   j.set("verdict", verdict_name(verdict_)).set("expected_to_hold", expected_);

@@ -42,8 +42,12 @@ Json Experiment::describe(const std::string& name) const {
   Json j = Json::object();
   j.set("name", name).set("title", title);
   Json p = Json::array();
-  for (const auto& s : paper) p.push(s);
-  j.set("paper", p);
+  Json p_tex = Json::array();  // the same items escaped for LaTeX: the one escaper is the kit's
+  for (const auto& s : paper) {
+    p.push(s);
+    p_tex.push(latex_escape(s));
+  }
+  j.set("paper", p).set("paper_tex", p_tex);
   Json t = Json::array();
   for (const auto& s : tests) t.push(s);
   j.set("tests", t);

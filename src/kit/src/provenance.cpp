@@ -4,6 +4,8 @@
 #include <Eigen/Core>
 #include <gsl/gsl_version.h>
 
+#include <nlohmann/json.hpp>
+
 namespace dfchaos::kit {
 
 const char* version() { return DFCHAOS_VERSION; }
@@ -24,7 +26,9 @@ std::vector<std::pair<std::string, std::string>> build_info() {
           {"compiler", compiler_id()},
           {"Eigen", std::to_string(EIGEN_WORLD_VERSION) + "." + std::to_string(EIGEN_MAJOR_VERSION) + "." + std::to_string(EIGEN_MINOR_VERSION)},
           {"GSL", GSL_VERSION},
-          {"CLI11", CLI11_VERSION}};
+          {"CLI11", CLI11_VERSION},
+          {"nlohmann-json", std::to_string(NLOHMANN_JSON_VERSION_MAJOR) + "." + std::to_string(NLOHMANN_JSON_VERSION_MINOR) + "." +
+                                std::to_string(NLOHMANN_JSON_VERSION_PATCH)}};
 }
 
 }  // namespace dfchaos::kit
