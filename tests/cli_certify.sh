@@ -42,6 +42,9 @@ expect 1 '"refuted": true' lemma1 --b 0.001 --q 0.70
 expect 0 '"b0_lower_bound"' b0 --q 0.85
 expect 0 '"condition"'     superstable --b 0.0641 --q 0.85
 expect 1 '"failed_step"'   superstable --b 0.05 --q 0.85
+# T = t2 near t2 is proved, but assumptions (2) fail: the record must not call it Theorem 2
+expect 0 '"theorem2": false' superstable --b 0.49 --q 1.9
+expect 0 '"theorem2": true'  superstable --b 0.0641 --q 0.85
 expect 0 '"right_edge"'    superstable --b 0.0641 --q 0.85 --window 0.0640755627691:0.064187276763
 expect 2 'b:'   covering --b x --q 0.85
 expect 2 'b:'   covering --b "" --q 0.85

@@ -81,9 +81,11 @@ std::string statement_periodic(int m) {
          "T(x_j) = x_{j+1}; and h_top(T restricted to its invariant set in J0 u J1) >= ln 2 (semi-conjugacy onto the 2-shift).";
 }
 std::string statement_superstable() {
-  return "Theorem 2 at the double values of a, b, q: T1(t2) and theta2(t2) are enclosed, theta2(t2) mod 2pi satisfies the printed "
-         "condition ((21): in (t1, t2); (22): in (t3, 2pi) u [0, t0)) with certified margins, and T = t2 on the whole of "
-         "[t2, t2 + eps] (closed balls on which the chain is proved to stop before t2): t2 is a superstable fixed point.";
+  return "Theorem 2's conclusion at the double values of a, b, q: T1(t2) and theta2(t2) are enclosed, theta2(t2) mod 2pi satisfies "
+         "the printed condition ((21): in (t1, t2); (22): in (t3, 2pi) u [0, t0)) with certified margins, and T = t2 on the whole "
+         "of [t2, t2 + eps] (closed balls on which the chain is proved to stop before t2): T sends [t2, t2 + eps] to t2, so t2 is "
+         "a superstable fixed point. This is Theorem 2 only where its hypotheses (2) hold as well: 'theorem2' is true when both "
+         "the conclusion and assumptions (2) are proved, false otherwise.";
 }
 std::string statement_window() {
   return "Superstability window in b at fixed a, q: for every b in [left_in, right_in], T(t2(b)) = t2 (proved over b-boxes, with "
@@ -178,7 +180,8 @@ Json to_json(double a, double b, double q, const SuperstableProof& p) {
   add_verdict(j, p.verdict);
   j.set("condition", p.condition).set("T1_at_t2", ball_json(p.T1, 20)).set("theta2_at_t2", ball_json(p.theta2, 20));
   j.set("theta2_phase", ball_json(p.theta2_phase, 15)).set("epsilon", p.eps).set("balls", p.balls);
-  j.set("used_lemma1", p.used_lemma1).set("assumptions_2", p.eq2).set("assumptions_23", p.eq23).set("seconds", p.seconds);
+  j.set("used_lemma1", p.used_lemma1).set("assumptions_2", p.eq2).set("assumptions_23", p.eq23);
+  j.set("theorem2", p.verdict.proved && p.eq2).set("seconds", p.seconds);
   return j;
 }
 
