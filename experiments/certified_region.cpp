@@ -6,9 +6,12 @@
 /// region.hpp). The work is bounded by a number of boxes, so the output is deterministic; the
 /// default band is small enough for `make reproduce`, `make certify-region` tiles a larger one.
 ///
-/// Outputs: data/certified_region.tsv (one row per box: proved or not, with the failed step),
+/// Outputs: data/certified_region.tsv (one row per box: proved or not, with the failed step; for a
+/// proved box the candidate ends of J0 and J1, with which `dfchaos certify covering --J0 --J1`
+/// re-proves that box alone),
 /// data/certified_region-columns.tsv (per column: how far it got), macros for the report, a claim
 /// with evidence_kind "certified", and the timing in the claims file and bench/certified-region-timing.tex.
+#include <cmath>
 #include <cstdio>
 
 #include "dfchaos/certified/region.hpp"
@@ -47,14 +50,17 @@ const Experiment experiment{
         r.progress = true;
         const RegionResult res = certify_region(r);
 
-        Table boxes({"q_lo", "q_hi", "b_lo", "b_hi", "proved", "sub_boxes", "failed_step"});
+        Table boxes({"q_lo", "q_hi", "b_lo", "b_hi", "proved", "sub_boxes", "failed_step", "J0_top", "J0_t2", "J1_top", "J1_t2"});
         Table cols({"q_lo", "q_hi", "b_reached", "proved_fraction_of_band", "boxes_proved", "boxes_failed"});
         double proved_area = 0, band_area = (r.b_hi - r.b_lo) * (r.q_hi - r.q_lo);
         Json per_column = Json::array();
         for (const auto& c : res.columns) {
           long long np = 0, nf = 0;
           for (const auto& b : c.boxes) {
-            boxes.row({b.q_lo, b.q_hi, b.b_lo, b.b_hi, static_cast<long long>(b.proved), static_cast<long long>(b.sub_boxes), b.failed_step});
+            const double nan = std::nan("");  // a box not proved has no segments
+            boxes.row({b.q_lo, b.q_hi, b.b_lo, b.b_hi, static_cast<long long>(b.proved), static_cast<long long>(b.sub_boxes), b.failed_step,
+                       b.proved ? b.J0.theta_top : nan, b.proved ? b.J0.theta_t2 : nan, b.proved ? b.J1.theta_top : nan,
+                       b.proved ? b.J1.theta_t2 : nan});
             (b.proved ? np : nf)++;
           }
           proved_area += c.proved_length * (c.q_hi - c.q_lo);

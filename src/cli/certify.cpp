@@ -32,6 +32,13 @@ certify::Range range(const std::string& name, const std::string& s) {
   return certify::Range{lo, hi};
 }
 
+/// "TOP:T2": the two candidate ends of a covering segment (either order on the line).
+certify::SegmentEnds segment_ends(const std::string& name, const std::string& s) {
+  const auto colon = s.find(':');
+  if (colon == std::string::npos) throw InvalidParameter(name, "two phases TOP:T2 (got '" + s + "')");
+  return certify::SegmentEnds{number(name, s.substr(0, colon)), number(name, s.substr(colon + 1))};
+}
+
 /// The typed request of the options: only the options the statement reads are parsed, in the order
 /// a, b, q, window (b0 takes one number q, not a box).
 certify::Request request_from(const CertifyOptions& o) {
@@ -50,6 +57,10 @@ certify::Request request_from(const CertifyOptions& o) {
   if (o.what == "discontinuities") return r;
   if (!o.q.empty()) r.q = range("q", o.q);
   if (o.what == "superstable" && !o.window.empty()) r.window = range("window", o.window);
+  if (o.what == "covering") {
+    if (!o.J0.empty()) r.J0 = segment_ends("J0", o.J0);
+    if (!o.J1.empty()) r.J1 = segment_ends("J1", o.J1);
+  }
   return r;
 }
 
@@ -64,6 +75,9 @@ CLI::App* add_certify(CLI::App& app, CertifyOptions& o) {
   c->add_option("--period", o.period, "periodic: minimal period m, 1..64");
   c->add_option("--segment", o.segment, "discontinuities: L0 (default) or L2");
   c->add_option("--window", o.window, "superstable: certify the window LO:HI (floating estimate of b) and its edges");
+  c->add_option("--J0", o.J0, "covering: prove this segment J0, given as TOP:T2 (the phases where T >= 3pi/2 and T = t2; e.g. from "
+                              "certified_region's data), with --J1, instead of searching candidates");
+  c->add_option("--J1", o.J1, "covering: the segment J1 (right of J0), as TOP:T2");
   c->add_option("--max-seconds", o.max_seconds, "time budget: give up (exit 1, one line) after S seconds, 0 < S <= 1e6 [default 60]")->type_name("S");
   c->add_option("--max-memory", o.max_memory, "memory budget: give up (exit 1, one line) beyond G GiB of address space, 0.25 <= G <= 1e4 [default 2]")
       ->type_name("G");

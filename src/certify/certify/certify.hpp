@@ -28,6 +28,13 @@ struct Range {
   static Range point(double x) { return Range{x, x}; }  ///< the degenerate range {x}
 };
 
+/// A covering segment given by its two candidate ends (as certified_region records them per box):
+/// `theta_top`, where T should be at least 3pi/2, and `theta_t2`, where T should be t2 (either order).
+struct SegmentEnds {
+  double theta_top = 0;  ///< the end where T >= 3pi/2 is to be proved
+  double theta_t2 = 0;   ///< the end where T = t2 is to be proved
+};
+
 /// A request: the statement and its parameters (each statement reads only the ones it needs).
 struct Request {
   std::string what;             ///< vartheta0, lemma1, b0, discontinuities, covering, periodic, superstable
@@ -37,6 +44,9 @@ struct Request {
   int period = 0;               ///< periodic: the minimal period m, 1..64
   std::string segment = "L0";   ///< discontinuities: L0 = [101pi/100, 3pi/2] or L2 = [101pi/100, 51pi/50]
   std::optional<Range> window;  ///< superstable: a window [lo, hi] in b (floating estimate) to certify with its edges
+  /// covering: the segments to prove (both or neither; J0 left of J1). Given, no candidates are searched,
+  /// so a box of certified_region can be re-proved alone with the J0, J1 it recorded.
+  std::optional<SegmentEnds> J0, J1;
 };
 
 /// The outcome of a request: proved or not, and the record that says what was proved.

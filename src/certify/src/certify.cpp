@@ -51,6 +51,16 @@ ParamBox box_from(const Request& r, bool need_q, bool allow_box) {
   return ParamBox{a, blo, bhi, qlo, qhi};
 }
 
+/// The candidate of a given segment, its ends checked to be finite and inside [t2, 3pi/2] at the
+/// box's lower corner (where the covering segments of Lemma 4 lie), in the order top, t2.
+Candidate candidate(const std::string& name, const SegmentEnds& e, const ParamBox& box) {
+  const Parameters corner(box.a, box.b_lo, box.q_lo);
+  const double t2 = *corner.t2(), top = 1.5 * M_PI;
+  for (double x : {e.theta_top, e.theta_t2})
+    if (!(x >= t2 && x <= top)) throw InvalidParameter(name, "both ends in [t2, 3pi/2] = [" + format_double(t2) + ", " + format_double(top) + "]", x);
+  return Candidate{e.theta_top, e.theta_t2};
+}
+
 }  // namespace
 
 void check_statement(const std::string& what) {
@@ -88,7 +98,15 @@ Certificate certify(const Request& r) {
     return {p.verdict.proved, to_json(box.a, box.b_lo, p, l2 ? "L2 = [101pi/100, 51pi/50]" : "L0 = [101pi/100, 3pi/2]")};
   }
   if (r.what == "covering") {
-    const CoveringProof p = prove_covering(box_from(r, true, true));
+    const ParamBox box = box_from(r, true, true);
+    if (!r.J0 && !r.J1) {
+      const CoveringProof p = prove_covering(box);
+      return {p.verdict.proved, to_json(p)};
+    }
+    if (!r.J0 || !r.J1) throw InvalidParameter(r.J0 ? "J1" : "J0", "given together with " + std::string(r.J0 ? "J0" : "J1"));
+    const Candidate c0 = candidate("J0", *r.J0, box), c1 = candidate("J1", *r.J1, box);
+    if (!(c0.hi() < c1.lo())) throw InvalidParameter("J1", "J1 to the right of J0 (J0 and J1 disjoint)", c1.lo());
+    const CoveringProof p = prove_covering(box, std::vector<Candidate>{c0, c1});
     return {p.verdict.proved, to_json(p)};
   }
   if (r.what == "periodic") {

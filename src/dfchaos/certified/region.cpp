@@ -86,7 +86,8 @@ void tile_column(const RegionOptions& opt, ColumnState& st, long budget) {
       p = prove_covering_split(box, cand, opt.split_depth, sub, copt);
     }
     if (p.verdict) {
-      col.boxes.push_back(RegionBox{box.b_lo, box.b_hi, q_lo, q_hi, true, sub, ""});
+      const Candidate J0{p.J0.theta_top, p.J0.theta_t2}, J1{p.J1.theta_top, p.J1.theta_t2};
+      col.boxes.push_back(RegionBox{box.b_lo, box.b_hi, q_lo, q_hi, true, sub, "", J0, J1});
       col.proved_length += box.b_hi - box.b_lo;
       b = box.b_hi;
       c = std::min(opt.c_max, c * 1.25);
@@ -96,7 +97,7 @@ void tile_column(const RegionOptions& opt, ColumnState& st, long budget) {
       c = std::max(opt.c_min, c / 1.6);
       continue;
     }
-    col.boxes.push_back(RegionBox{box.b_lo, box.b_hi, q_lo, q_hi, false, 0, p.verdict.step});
+    col.boxes.push_back(RegionBox{box.b_lo, box.b_hi, q_lo, q_hi, false, 0, p.verdict.step, {}, {}});
     b = box.b_hi;
     cand.clear();
   }
