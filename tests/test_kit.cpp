@@ -159,6 +159,26 @@ TEST(Output, WritesEverythingWithKindsAndVerdicts) {
   fs::remove_all(root);
 }
 
+TEST(Output, CertificatesGoWithTheOtherOutputsOrNotAtAll) {
+  const fs::path root = fresh_dir("cert");
+  Output out("demo", root);
+  out.certificate("demo.one", "{\"format\": \"x\"}\n");
+  out.claim("demo.one", "Lemma 1", EvidenceKind::Certified, "one holds").holds(true);
+  EXPECT_EQ(out.finish(), 0);
+  EXPECT_EQ(read(root / "certificates" / "demo.one.json"), "{\"format\": \"x\"}\n");
+  fs::remove_all(root);
+  // A failure elsewhere in the set leaves no certificate either.
+  fs::create_directories(root);
+  std::ofstream(root / "data") << "a regular file where the data folder should be";
+  Output bad("demo", root);
+  bad.certificate("demo.one", "{}\n");
+  bad.table("", Table({"x"}), "t");
+  bad.claim("demo.one", "Lemma 1", EvidenceKind::Certified, "s").holds(true);
+  EXPECT_THROW(bad.finish(), OutputError);
+  EXPECT_FALSE(fs::exists(root / "certificates" / "demo.one.json"));
+  fs::remove_all(root);
+}
+
 TEST(Output, AnExpectedFailureGivesExitStatusOne) {
   const fs::path root = fresh_dir("fail");
   Output out("demo", root);

@@ -31,8 +31,9 @@ namespace dfchaos::kit {
 
 /// A declared output file of an experiment.
 struct OutputSpec {
-  std::string kind;         ///< "data" (build/data/NAME[-PART].tsv) or "latex" (build/tables/FILE.tex)
-  std::string part;         ///< the part (data) or file name (latex); a final '*' matches any suffix
+  std::string kind;         ///< "data" (build/data/NAME[-PART].tsv), "latex" (build/tables/FILE.tex) or
+                            ///< "certificate" (build/certificates/FILE.json)
+  std::string part;         ///< the part (data) or file name (latex, certificate); a final '*' matches any suffix
   std::string description;  ///< what it holds
   /// Whether a written file matches this declaration.
   bool matches(const std::string& kind, const std::string& part) const;
@@ -41,6 +42,8 @@ struct OutputSpec {
 OutputSpec data(std::string part, std::string description);
 /// A LaTeX fragment `tables/FILE.tex`.
 OutputSpec latex(std::string file, std::string description);
+/// A proof certificate `certificates/FILE.json` (docs/certificates.md).
+OutputSpec certificate(std::string file, std::string description);
 
 /// What an experiment's body gets: the option values, the mode, and the outputs.
 class Run {
@@ -58,6 +61,8 @@ class Run {
   void table(const std::string& part, const Table& t);
   /// The LaTeX fragment `tables/FILE.tex`. @throws std::logic_error if it was not declared.
   void latex(const std::string& file, const std::string& tex);
+  /// The certificate `certificates/FILE.json` (its whole text). @throws std::logic_error if it was not declared.
+  void certificate(const std::string& file, const std::string& json);
 
  private:
   const OptionValues& values_;

@@ -114,6 +114,8 @@ class Output {
   void table(const std::string& part, const Table& t, const std::string& description);
   /// Adds a LaTeX fragment, written to `tables/FILE.tex`.
   void latex(const std::string& file, const std::string& tex);
+  /// Adds a proof certificate (a JSON document, written as given), to `certificates/FILE.json`.
+  void certificate(const std::string& file, const std::string& json);
   /// Adds a macro `\dfcNAME{value}` (NAME: letters only), written to `tables/EXPERIMENT-macros.tex`.
   void macro(const std::string& name, const std::string& value);
   /// The same, a number rounded to the given significant digits.

@@ -22,6 +22,9 @@ bool OutputSpec::matches(const std::string& k, const std::string& p) const {
 
 OutputSpec data(std::string part, std::string description) { return OutputSpec{"data", std::move(part), std::move(description)}; }
 OutputSpec latex(std::string file, std::string description) { return OutputSpec{"latex", std::move(file), std::move(description)}; }
+OutputSpec certificate(std::string file, std::string description) {
+  return OutputSpec{"certificate", std::move(file), std::move(description)};
+}
 
 int Run::count_int(const std::string& name) const {
   const long long v = values_.count(name);
@@ -169,6 +172,10 @@ void Run::table(const std::string& part, const Table& t) { out.table(part, t, de
 void Run::latex(const std::string& file, const std::string& tex) {
   declared(outputs_, "latex", file);
   out.latex(file, tex);
+}
+void Run::certificate(const std::string& file, const std::string& json) {
+  declared(outputs_, "certificate", file);
+  out.certificate(file, json);
 }
 
 }  // namespace dfchaos::kit
