@@ -3,14 +3,14 @@
 //    the motions of HarmonicMotion with long-double elapsed times) agree with the plain templates
 //    evaluated in long double, at many phases and elapsed times;
 //  - the ball instantiation encloses the long-double one (the same formula in both arithmetics);
-//  - the switching phases of Parameters and of the certified Model are the templates' values.
+//  - the switching phases of Parameters and of the certified ParameterBalls are the templates' values.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <vector>
 
 #include "dfchaos/certified/ball.hpp"
-#include "dfchaos/certified/model.hpp"
+#include "dfchaos/certified/parameters.hpp"
 #include "dfchaos/model.hpp"
 #include "dfchaos/motion.hpp"
 #include "dfchaos/next_hit.hpp"
@@ -128,8 +128,8 @@ TEST(ModelFormulas, BothLayersTakeTheirPhasesFromTheTemplates) {
     EXPECT_EQ(*p.t2(), model::t2(1.0, d.b));
     EXPECT_EQ(*p.t3(), model::t3(1.0, d.b));
     EXPECT_EQ(p.F(d.theta), d.b * 2 + std::sin(d.theta));
-    // The certified Model at the point: balls that contain the doubles.
-    const certified::Model m(certified::ParamBox::point(1.0, d.b, d.q));
+    // The certified ParameterBalls at the point: balls that contain the doubles.
+    const certified::ParameterBalls m(certified::ParameterBox::point(1.0, d.b, d.q));
     EXPECT_LE(m.t2.lower(), *p.t2() + 4e-16);
     EXPECT_GE(m.t2.upper(), *p.t2() - 4e-16);
     EXPECT_LE(m.t3.lower(), *p.t3() + 8e-16);

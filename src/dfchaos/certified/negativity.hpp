@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "dfchaos/certified/ball.hpp"
-#include "dfchaos/certified/verdict.hpp"
+#include "dfchaos/certified/outcome.hpp"
 
 namespace dfchaos::certified {
 
@@ -46,7 +46,7 @@ struct NegativityStats {
 
 /// Proves \f$f < 0\f$ on the closed interval \f$[lo, hi]\f$ (exact balls, lo <= hi).
 /// `step` names the statement in a failure ("T1: no earlier root").
-Verdict prove_negative(const NegativityTarget& f, const Ball& lo, const Ball& hi, Budget& budget, const std::string& step,
+Outcome prove_negative(const NegativityTarget& f, const Ball& lo, const Ball& hi, Budget& budget, const std::string& step,
                        NegativityStats* stats = nullptr);
 
 }  // namespace dfchaos::certified
