@@ -80,8 +80,8 @@ class FlightGap final : public NegativityTarget {
   Ball slope(const Ball& s) const override { return model::dG1_dt_from_start(m_.a, b_, ct_, s, theta_ + s); }
   Ball curvature(const Ball& s) const override { return model::F(m_.a, b_, theta_ + s); }
   bool envelope_negative(const Ball& lo, const Ball& hi) const override {
-    // U(s) = b s^2 + a s cos(theta) + a sin(theta) + a >= G1, convex in s.
-    auto U = [&](const Ball& s) { return b_ * sqr(s) + m_.a * ct_ * s + m_.a * st_ + m_.a; };
+    // U >= G1, convex in s: negative at both ends means negative in between.
+    auto U = [&](const Ball& s) { return model::G1_envelope_from_start(m_.a, b_, st_, ct_, s); };
     return U(lo).is_negative() && U(hi).is_negative();
   }
   std::string variable() const override { return "s"; }
@@ -97,7 +97,7 @@ class MinusVelocity final : public NegativityTarget {
   MinusVelocity(const ParameterBalls& m, const Ball& theta, const Ball& b) : m_(m), theta_(theta), b_(b), ct_(cos(theta)) {}
   Ball value(const Ball& t) const override { return -model::dG1_dt_from_start(m_.a, b_, ct_, t - theta_, t); }
   Ball slope(const Ball& t) const override { return -model::F(m_.a, b_, t); }
-  Ball curvature(const Ball& t) const override { return -(m_.a * cos(t)); }
+  Ball curvature(const Ball& t) const override { return -model::dF_dt(m_.a, t); }
   std::string variable() const override { return "t"; }
 
  private:
