@@ -82,7 +82,7 @@ struct Certified {
   /// of T = t2 reaches below the double t2 when the exact t2 does.
   static constexpr double kArcSlack = 1e-15;
   static std::optional<Enclosure> T(const Parameters& p, double theta) {
-    const certified::ParameterBalls m(certified::ParameterBox::point(p.a(), p.b(), p.q()));
+    const certified::ParameterBalls m(certified::ParameterBox::point(p));
     certified::Budget budget;
     const certified::MapStepProof t = certified::certify_T(m, certified::StartSet::point(theta), budget);
     if (!t.verdict) return std::nullopt;

@@ -96,7 +96,7 @@ TEST(CertifiedReturnMap, EnclosuresContainTheFloatingValues) {
   for (const auto& pq : params) {
     const double q = pq[0], b = pq[1];
     const Parameters p(1, b, q);
-    const ParameterBalls m(ParameterBox::point(1, b, q));
+    const ParameterBalls m(ParameterBox::point(p));
     const double t2 = *p.t2(), t3 = *p.t3();
     int proved = 0;
     for (int i = 0; i < kPhases; ++i) {

@@ -132,7 +132,7 @@ TEST(ModelFormulas, BothLayersTakeTheirPhasesFromTheTemplates) {
     EXPECT_EQ(*p.t3(), model::t3(1.0, d.b));
     EXPECT_EQ(p.F(d.theta), d.b * 2 + std::sin(d.theta));
     // The certified ParameterBalls at the point: balls that contain the doubles.
-    const certified::ParameterBalls m(certified::ParameterBox::point(1.0, d.b, d.q));
+    const certified::ParameterBalls m(certified::ParameterBox::point(p));
     EXPECT_LE(m.t2.lower(), *p.t2() + 4e-16);
     EXPECT_GE(m.t2.upper(), *p.t2() - 4e-16);
     EXPECT_LE(m.t3.lower(), *p.t3() + 8e-16);
