@@ -45,7 +45,7 @@ std::string num(double x, int digits = 6) { return latex_number(format_significa
 /// A certified claim: its evidence is the certified result's JSON (statement, enclosures, verdict);
 /// a proof that failed names its step.
 Claim& certified_claim(Output& out, const std::string& id, const std::string& ref, const std::string& statement, const Json& evidence,
-                       bool proved, const certified::Verdict* why = nullptr, EvidenceKind kind = EvidenceKind::Certified) {
+                       bool proved, const certified::Outcome* why = nullptr, EvidenceKind kind = EvidenceKind::Certified) {
   Claim& c = out.claim(id, ref, kind, statement);
   c.evidence_object(evidence);
   if (!proved && why) c.evidence("failed_step", why->step).evidence("failure", why->describe());
@@ -129,13 +129,13 @@ const Experiment experiment{
         Table tl1({"point", "q_over_a", "b_over_a", "proved", "u_t2_mid", "t4_mid", "t4_rad"});
         std::vector<std::pair<const Point*, CoveringProof>> coverings;
         for (const Point& pt : points) {
-          const ParamBox box = ParamBox::point(1.0, pt.b, pt.q);
+          const ParameterBox box = ParameterBox::point(1.0, pt.b, pt.q);
           const std::string ptxt = "(" + num(pt.q) + ", " + num(pt.b) + ")";
           Json params = Json::object();
           params.set("a", 1.0).set("b", pt.b).set("q", pt.q);
           // Lemma 1 at the point.
           {
-            const Lemma1Proof l = certify_lemma1(Model(box));
+            const Lemma1Proof l = certify_lemma1(ParameterBalls(box));
             auto& c = certified_claim(out, std::string("cert.lemma1.") + pt.tag, "Lemma 1", statement_lemma1(box), to_json(box, l), l.verdict.proved, &l.verdict);
             c.parameter_object(params);
             const auto [t4_mid, t4_rad] = l.t4.enclosing_doubles();
@@ -202,7 +202,7 @@ const Experiment experiment{
 
         // The negative control: no covering is proved at (0.85, 0.02).
         {
-          const ParamBox box = ParamBox::point(1.0, 0.02, 0.85);
+          const ParameterBox box = ParameterBox::point(1.0, 0.02, 0.85);
           const CoveringProof cov = prove_covering(box);
           // Not a certified statement: the absence of a covering is not proved, only that none is found
           // (by the floating search) and none is proved (by this layer).
@@ -245,7 +245,7 @@ const Experiment experiment{
         // ---- the paper's own construction at (0.85, 5e-5): covering segments inside branches of L2 --
         if (!fast) {
           const double b = 5e-5, q = 0.85;
-          const ParamBox box = ParamBox::point(1.0, b, q);
+          const ParameterBox box = ParameterBox::point(1.0, b, q);
           const DiscontinuityProof d = prove_discontinuities(1.0, b, L_101pi_100(), L_51pi_50());
           CoveringOptions opt;
           opt.lo = L_101pi_100().upper();

@@ -62,7 +62,7 @@ py::object certify_py(const std::string& what, double a, std::optional<NumberOrB
   r.period = period;
   r.segment = segment;
   if (window) r.window = range("window", *window);
-  certify::Certificate c;
+  certify::Result c;
   {
     py::gil_scoped_release nogil;
     c = certify::certify(r);

@@ -20,7 +20,7 @@
 #include <type_traits>
 #include <vector>
 
-#include "dfchaos/certified/model.hpp"
+#include "dfchaos/certified/parameters.hpp"
 #include "dfchaos/certified/return_map.hpp"
 #include "dfchaos/ode_map.hpp"
 #include "dfchaos/perturbed.hpp"
@@ -82,9 +82,9 @@ struct Certified {
   /// of T = t2 reaches below the double t2 when the exact t2 does.
   static constexpr double kArcSlack = 1e-15;
   static std::optional<Enclosure> T(const Parameters& p, double theta) {
-    const certified::Model m(certified::ParamBox::point(p.a(), p.b(), p.q()));
+    const certified::ParameterBalls m(certified::ParameterBox::point(p));
     certified::Budget budget;
-    const certified::TProof t = certified::certify_T(m, certified::StartSet::point(theta), budget);
+    const certified::MapStepProof t = certified::certify_T(m, certified::StartSet::point(theta), budget);
     if (!t.verdict) return std::nullopt;
     return Enclosure{t.T.lower(), t.T.upper()};
   }

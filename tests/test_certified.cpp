@@ -96,14 +96,14 @@ TEST(CertifiedReturnMap, EnclosuresContainTheFloatingValues) {
   for (const auto& pq : params) {
     const double q = pq[0], b = pq[1];
     const Parameters p(1, b, q);
-    const Model m(ParamBox::point(1, b, q));
+    const ParameterBalls m(ParameterBox::point(p));
     const double t2 = *p.t2(), t3 = *p.t3();
     int proved = 0;
     for (int i = 0; i < kPhases; ++i) {
       const double th = t2 + (t3 - t2) * std::fmod(0.5 + i * 0.6180339887498949, 1.0);
       const MapStep s = return_map_step(p, th);
       Budget budget;
-      const TProof t = certify_T(m, StartSet::point(th), budget);
+      const MapStepProof t = certify_T(m, StartSet::point(th), budget);
       if (!t.verdict) continue;
       ++proved;
       const double T1 = s.hit.t1.value(), th2 = s.theta2.value();
@@ -117,7 +117,7 @@ TEST(CertifiedReturnMap, EnclosuresContainTheFloatingValues) {
       }
       // A small ball around the phase: its enclosure holds the floating value at the centre.
       Budget b2;
-      const TProof tb = certify_T(m, StartSet::interval(th - 1e-9, th + 1e-9), b2);
+      const MapStepProof tb = certify_T(m, StartSet::interval(th - 1e-9, th + 1e-9), b2);
       if (tb.verdict) {
         EXPECT_TRUE(within(tb.T, s.T, kPhaseAbsTol)) << "ball at theta=" << th;
       }
@@ -127,9 +127,9 @@ TEST(CertifiedReturnMap, EnclosuresContainTheFloatingValues) {
 }
 
 TEST(CertifiedReturnMap, StartAtT2UsesTheCubicTerm) {
-  const Model m(ParamBox::point(1, 0.0641, 0.85));
+  const ParameterBalls m(ParameterBox::point(1, 0.0641, 0.85));
   Budget budget;
-  const T1Proof t = certify_T1(m, StartSet::from_t2(m, m.t2.upper()), budget);
+  const FirstHitProof t = certify_T1(m, StartSet::from_t2(m, m.t2.upper()), budget);
   ASSERT_TRUE(t.verdict.proved) << t.verdict.describe();
   const MapStep s = return_map_step(Parameters(1, 0.0641, 0.85), *Parameters(1, 0.0641, 0.85).t2());
   EXPECT_TRUE(within(t.enclosure, s.hit.t1.value(), kInstantRelTol * s.hit.t1.value()));
@@ -139,11 +139,11 @@ TEST(CertifiedReturnMap, StartAtT2UsesTheCubicTerm) {
 TEST(CertifiedReturnMap, BallAcrossADiscontinuityOfT1IsNotProved) {
   const DiscontinuityProof d = prove_discontinuities(1, 0.01, L_101pi_100(), L_3pi_2());
   ASSERT_TRUE(d.verdict.proved) << d.verdict.describe();
-  const Model m(ParamBox::point(1, 0.01, 0.85));
+  const ParameterBalls m(ParameterBox::point(1, 0.01, 0.85));
   for (const auto& z : d.z) {
     for (double r : {1e-3, 1e-6, 1e-10, 1e-13}) {
       Budget budget;
-      const T1Proof t = certify_T1(m, StartSet::interval(z.z.mid() - r, z.z.mid() + r), budget);
+      const FirstHitProof t = certify_T1(m, StartSet::interval(z.z.mid() - r, z.z.mid() + r), budget);
       EXPECT_FALSE(t.verdict.proved) << "z=" << z.z.mid() << " r=" << r;
     }
   }
@@ -151,11 +151,11 @@ TEST(CertifiedReturnMap, BallAcrossADiscontinuityOfT1IsNotProved) {
 
 // Failure tier: a ball across the jump of T between the two covering segments is not proved.
 TEST(CertifiedReturnMap, BallAcrossAJumpOfTIsNotProved) {
-  const CoveringProof c = prove_covering(ParamBox::point(1, 0.001, 0.85));
+  const CoveringProof c = prove_covering(ParameterBox::point(1, 0.001, 0.85));
   ASSERT_TRUE(c.verdict.proved);
-  const Model m(c.box);
+  const ParameterBalls m(c.box);
   Budget budget;
-  const TProof t = certify_T(m, StartSet::interval(c.J0.hi, c.J1.lo), budget);
+  const MapStepProof t = certify_T(m, StartSet::interval(c.J0.hi, c.J1.lo), budget);
   EXPECT_FALSE(t.verdict.proved);
   // Nor any cover of that gap by balls of width 1e-7 (T jumps inside it).
   bool all = true;
@@ -167,11 +167,11 @@ TEST(CertifiedReturnMap, BallAcrossAJumpOfTIsNotProved) {
 }
 
 TEST(CertifiedLemma1, ProvedAboveAndRefutedBelowTheThreshold) {
-  const Lemma1Proof yes = certify_lemma1(Model(ParamBox::point(1, 0.001, 0.85)));
+  const Lemma1Proof yes = certify_lemma1(ParameterBalls(ParameterBox::point(1, 0.001, 0.85)));
   EXPECT_TRUE(yes.verdict.proved);
   EXPECT_TRUE(yes.u_at_t2.is_negative());
   // q/a = 0.70 < sin(vartheta0): the progression from t0 does not stop before t2 (Eq. 9 fails).
-  const Lemma1Proof no = certify_lemma1(Model(ParamBox::point(1, 0.001, 0.70)));
+  const Lemma1Proof no = certify_lemma1(ParameterBalls(ParameterBox::point(1, 0.001, 0.70)));
   EXPECT_FALSE(no.verdict.proved);
   EXPECT_TRUE(no.verdict.refuted);
   const ProgressionFromT0 f = progression_from_t0(Parameters(1, 0.001, 0.70));
@@ -181,7 +181,7 @@ TEST(CertifiedLemma1, ProvedAboveAndRefutedBelowTheThreshold) {
   ASSERT_TRUE(bnd.verdict.proved);
   EXPECT_LT(bnd.b_low, bnd.b_float);
   EXPECT_GT(bnd.b_low, 0.99 * bnd.b_float);
-  EXPECT_TRUE(certify_lemma1(Model(ParamBox{1, 0.5 * bnd.b_low, bnd.b_low, 0.85, 0.85})).verdict.proved);
+  EXPECT_TRUE(certify_lemma1(ParameterBalls(ParameterBox{1, 0.5 * bnd.b_low, bnd.b_low, 0.85, 0.85})).verdict.proved);
 }
 
 TEST(CertifiedLemma2, CountAndEnclosuresMatchTheClosedForm) {
@@ -202,7 +202,7 @@ TEST(CertifiedLemma2, CountAndEnclosuresMatchTheClosedForm) {
 TEST(CertifiedCovering, ProvedAtTheIssuePointsNotAtB002) {
   const double pts[][2] = {{0.85, 0.001}, {0.85, 0.003}, {0.95, 0.01}, {0.85, 5e-5}};
   for (const auto& pq : pts) {
-    const CoveringProof c = prove_covering(ParamBox::point(1, pq[1], pq[0]));
+    const CoveringProof c = prove_covering(ParameterBox::point(1, pq[1], pq[0]));
     ASSERT_TRUE(c.verdict.proved) << c.verdict.describe();
     EXPECT_LT(c.J0.hi, c.J1.lo);
     EXPECT_GE(c.J0.lo, *Parameters(1, pq[1], pq[0]).t2());
@@ -215,25 +215,25 @@ TEST(CertifiedCovering, ProvedAtTheIssuePointsNotAtB002) {
       EXPECT_EQ(T(p, J->theta_t2), *p.t2());
     }
   }
-  const CoveringProof none = prove_covering(ParamBox::point(1, 0.02, 0.85));
+  const CoveringProof none = prove_covering(ParameterBox::point(1, 0.02, 0.85));
   EXPECT_FALSE(none.verdict.proved);
   EXPECT_FALSE(none.verdict.step.empty());
   // A segment that does not cover (both ends with T = t2) is not proved.
-  const CoveringProof c = prove_covering(ParamBox::point(1, 0.001, 0.85));
-  const Model m(c.box);
+  const CoveringProof c = prove_covering(ParameterBox::point(1, 0.001, 0.85));
+  const ParameterBalls m(c.box);
   Candidate bad{c.J0.theta_t2, c.J0.theta_t2 - 1e-6};
   EXPECT_FALSE(prove_segment(m, bad).verdict.proved);
 }
 
 TEST(CertifiedCovering, SmallParameterBoxProvedLargeOneNot) {
-  const ParamBox small{1, 0.003, 0.003 + 1e-8, 0.85, 0.855};
+  const ParameterBox small{1, 0.003, 0.003 + 1e-8, 0.85, 0.855};
   EXPECT_TRUE(prove_covering(small).verdict.proved);
-  const ParamBox large{1, 0.003, 0.0031, 0.85, 0.85};  // T1 moves by tens of units across it
+  const ParameterBox large{1, 0.003, 0.0031, 0.85, 0.85};  // T1 moves by tens of units across it
   EXPECT_FALSE(prove_covering(large).verdict.proved);
 }
 
 TEST(CertifiedPeriodic, EveryPeriodUpToTwelveWithItsItinerary) {
-  const CoveringProof c = prove_covering(ParamBox::point(1, 0.003, 0.85));
+  const CoveringProof c = prove_covering(ParameterBox::point(1, 0.003, 0.85));
   ASSERT_TRUE(c.verdict.proved);
   const Parameters p(1, 0.003, 0.85);
   for (int m = 1; m <= 12; ++m) {
@@ -251,7 +251,7 @@ TEST(CertifiedPeriodic, EveryPeriodUpToTwelveWithItsItinerary) {
     EXPECT_NEAR(T(p, x0), x1, 1e-9);
     EXPECT_TRUE(o.log_multiplier.is_positive());
   }
-  const CoveringProof none = prove_covering(ParamBox::point(1, 0.02, 0.85));
+  const CoveringProof none = prove_covering(ParameterBox::point(1, 0.02, 0.85));
   EXPECT_FALSE(prove_periodic(none, 3).verdict.proved);
 }
 

@@ -3,17 +3,20 @@
 //    the motions of HarmonicMotion with long-double elapsed times) agree with the plain templates
 //    evaluated in long double, at many phases and elapsed times;
 //  - the ball instantiation encloses the long-double one (the same formula in both arithmetics);
-//  - the switching phases of Parameters and of the certified Model are the templates' values.
+//  - the switching phases of Parameters and of the certified ParameterBalls are the templates' values.
+//  - the templates that replaced written-out copies (the envelope of the gap, the slope of the force,
+//    the velocity of Eq. 8) give the values of those copies, in double and in balls.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <vector>
 
 #include "dfchaos/certified/ball.hpp"
-#include "dfchaos/certified/model.hpp"
+#include "dfchaos/certified/parameters.hpp"
 #include "dfchaos/model.hpp"
 #include "dfchaos/motion.hpp"
 #include "dfchaos/next_hit.hpp"
+#include "dfchaos/progression_stop.hpp"
 #include "dfchaos/return_map.hpp"
 #include "test_support.hpp"
 
@@ -128,11 +131,64 @@ TEST(ModelFormulas, BothLayersTakeTheirPhasesFromTheTemplates) {
     EXPECT_EQ(*p.t2(), model::t2(1.0, d.b));
     EXPECT_EQ(*p.t3(), model::t3(1.0, d.b));
     EXPECT_EQ(p.F(d.theta), d.b * 2 + std::sin(d.theta));
-    // The certified Model at the point: balls that contain the doubles.
-    const certified::Model m(certified::ParamBox::point(1.0, d.b, d.q));
+    // The certified ParameterBalls at the point: balls that contain the doubles.
+    const certified::ParameterBalls m(certified::ParameterBox::point(p));
     EXPECT_LE(m.t2.lower(), *p.t2() + 4e-16);
     EXPECT_GE(m.t2.upper(), *p.t2() - 4e-16);
     EXPECT_LE(m.t3.lower(), *p.t3() + 8e-16);
     EXPECT_GE(m.t3.upper(), *p.t3() - 8e-16);
+  }
+}
+
+TEST(ModelFormulas, TheEnvelopeOfTheGapAgreesInBothLayers) {
+  test_support::Drawer draw(1e-4, 0.3, 0.6, 0.99);
+  for (int i = 0; i < kDraws; ++i) {
+    const auto d = draw.next();
+    const Parameters p(1.0, d.b, d.q);
+    const double a = 1.0, b = d.b, st = std::sin(d.theta), ct = std::cos(d.theta);
+    // The core's form of the same bound: the gap's coefficients, alpha s^2 + beta s + gamma + |A|.
+    const QuadraticPlusHarmonic f = G1_function(p, d.theta);
+    const Ball A(a), B(b), ST(st), CT(ct);
+    for (double s : kElapsed) {
+      const double U = model::G1_envelope_from_start(a, b, st, ct, s);
+      // The expression the certified FlightGap wrote out before.
+      EXPECT_EQ(U, b * (s * s) + a * ct * s + a * st + a);
+      const long double S = s, core = (f.alpha * S + (f.beta + f.beta_tail)) * S + f.gamma + std::fabs(f.A);
+      EXPECT_NEAR(core, U, kRelTol * (b * S * S + a * S + 2 * a)) << p.describe() << " theta=" << d.theta << " s=" << s;
+      // An envelope: above the gap.
+      EXPECT_LE(model::G1_from_start(a, b, st, ct, s, d.theta + s), U + 1e-15 * (b * s * s + a * s + 2 * a));
+      const Ball UB = model::G1_envelope_from_start(A, B, ST, CT, Ball(s));
+      const double tol = 1e-15 * (b * s * s + a * s + 2 * a);  // the double evaluation's rounding
+      EXPECT_TRUE(UB.lower() - tol <= U && U <= UB.upper() + tol) << UB.str(20) << " " << U;
+    }
+  }
+}
+
+TEST(ModelFormulas, TheSlopeOfTheForceInBothLayers) {
+  test_support::Drawer draw(1e-4, 0.3, 0.6, 0.99);
+  for (int i = 0; i < kDraws; ++i) {
+    const auto d = draw.next();
+    const double a = 1.0 + d.q, t = d.theta + 7 * d.q;
+    // The expression the certified MinusVelocity wrote out before, and a central difference of F.
+    EXPECT_EQ(model::dF_dt(a, t), a * std::cos(t));
+    const double h = 1e-5;
+    EXPECT_NEAR(model::dF_dt(a, t), (model::F(a, d.b, t + h) - model::F(a, d.b, t - h)) / (2 * h), 1e-9);
+    const Ball DB = model::dF_dt(Ball(a), Ball(t));
+    EXPECT_TRUE(DB.lower() - 1e-15 * a <= a * std::cos(t) && a * std::cos(t) <= DB.upper() + 1e-15 * a);
+  }
+}
+
+TEST(ModelFormulas, Eq8IsTheVelocityOfTheProgressionFromRest) {
+  test_support::Drawer draw(1e-4, 0.3, 0.6, 0.99);
+  for (int i = 0; i < kDraws; ++i) {
+    const auto d = draw.next();
+    const Parameters p(1.0, d.b, d.q);
+    if (!(d.q > 2 * d.b)) continue;
+    const double t0 = *p.t0(), t2 = *p.t2(), a = 1.0;
+    // The expression progression_from_t0 wrote out before (t2 follows t0 in the same turn).
+    const double before = -a * std::cos(t2) + a * std::cos(t0) + 2 * p.c() * (t2 - t0);
+    EXPECT_NEAR(progression_from_t0(p).eq8_velocity_at_t2, before, 1e-14) << p.describe();
+    const Ball v = model::progression_velocity_from_rest(Ball(a), model::two_c(Ball(d.b), Ball(d.q)), Ball(t0), Ball(t2));
+    EXPECT_TRUE(v.lower() - 1e-13 <= before && before <= v.upper() + 1e-13) << v.str(20) << " " << before;
   }
 }

@@ -30,18 +30,18 @@ const Point kPoints[] = {{0.85, 1e-3}, {0.85, 3e-3}, {0.95, 1e-2}, {0.85, 5e-5}}
 void bm_covering(benchmark::State& state) {
   const Point pt = kPoints[state.range(0)];
   bool proved = true;
-  for (auto _ : state) proved = proved && prove_covering(ParamBox::point(1, pt.b, pt.q)).verdict.proved;
+  for (auto _ : state) proved = proved && prove_covering(ParameterBox::point(1, pt.b, pt.q)).verdict.proved;
   state.SetLabel("q/a=" + format_significant(pt.q, 3) + " b/a=" + format_significant(pt.b, 2) + (proved ? " proved" : " NOT proved"));
 }
 
 void bm_covering_proof_only(benchmark::State& state) {
   const Point pt = kPoints[state.range(0)];
   const auto c = covering_candidates(1, pt.b, pt.q);
-  for (auto _ : state) benchmark::DoNotOptimize(prove_covering(ParamBox::point(1, pt.b, pt.q), c).verdict.proved);
+  for (auto _ : state) benchmark::DoNotOptimize(prove_covering(ParameterBox::point(1, pt.b, pt.q), c).verdict.proved);
 }
 
 void bm_T_thin(benchmark::State& state) {
-  const Model m(ParamBox::point(1, 1e-3, 0.85));
+  const ParameterBalls m(ParameterBox::point(1, 1e-3, 0.85));
   for (auto _ : state) {
     Budget budget;
     benchmark::DoNotOptimize(certify_T(m, StartSet::point(3.19), budget).verdict.proved);
@@ -53,12 +53,12 @@ void bm_lemma2(benchmark::State& state) {
 }
 
 void bm_periodic12(benchmark::State& state) {
-  const CoveringProof c = prove_covering(ParamBox::point(1, 3e-3, 0.85));
+  const CoveringProof c = prove_covering(ParameterBox::point(1, 3e-3, 0.85));
   for (auto _ : state) benchmark::DoNotOptimize(prove_periodic(c, 12).verdict.proved);
 }
 
 void bm_box(benchmark::State& state) {
-  const ParamBox box{1, 3e-3, 3e-3 + 4e-7, 0.85, 0.86};
+  const ParameterBox box{1, 3e-3, 3e-3 + 4e-7, 0.85, 0.86};
   const auto c = covering_candidates(1, 3e-3 + 2e-7, 0.855);
   for (auto _ : state) benchmark::DoNotOptimize(prove_covering(box, c).verdict.proved);
 }

@@ -87,7 +87,7 @@ CLI::App* add_certify(CLI::App& app, CertifyOptions& o) {
 }
 
 int run_certify(const CertifyOptions& o) {
-  certify::Certificate c;
+  certify::Result c;
   try {
     kit::apply_process_budget("dfchaos", kit::parse_budget(o.max_seconds, o.max_memory));
     certified::on_allocation_failure(kit::exit_for_memory_budget);

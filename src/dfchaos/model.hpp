@@ -1,7 +1,8 @@
 /// @file model.hpp
 /// @brief The formulas of the model, written once as templates on the scalar type: the force
 /// \f$F\f$, the switching phases \f$t_0, \dots, t_3\f$, the flight gap \f$G_1\f$ and its
-/// derivatives, the progression velocity \f$G_2\f$ and the velocity of a progression from rest.
+/// derivatives and envelope, the progression velocity \f$G_2\f$ and the velocity of a progression
+/// from rest.
 ///
 /// Each template is instantiated for `double` and `long double` (the numerical core) and for
 /// `certified::Ball` (the certified layer, dfchaos/certified/ball.hpp): a formula of the paper has
@@ -83,6 +84,14 @@ S F(const S& a, const S& b, const S& t) {
   return forcing(a, 2.0 * b, t);
 }
 
+/// \f$\partial_t F = a\cos t\f$ (Eq. 3): also \f$\partial_t^3 G_1\f$ and \f$-\partial_t^2\f$ of the velocity
+/// deficit \f$-\partial_t G_1\f$ (the curvature a proof of a simple root bounds).
+template <class S>
+S dF_dt(const S& a, const S& t) {
+  using std::cos;
+  return a * cos(t);
+}
+
 /// \f$2c = 2b - q\f$ (Eq. 4): twice the constant force of a progression.
 template <class S>
 S two_c(const S& b, const S& q) {
@@ -142,6 +151,18 @@ S G1(const S& a, const S& b, const S& theta, const S& t) {
   S st, ct;
   sin_cos(theta, st, ct);
   return G1_from_start(a, b, st, ct, S(t - theta), t);
+}
+
+/// \f$U(s) = b s^2 + a\cos\theta\, s + a\sin\theta + a\f$, from a start (see G1_from_start): the
+/// quadratic envelope of the flight gap of Eq. (11). Since \f$-a\sin t \le a\f$, \f$G_1 \le U\f$, and U
+/// is convex in \f$s\f$: where U is negative at both ends of an interval of \f$s\f$, the flight
+/// cannot touch the delimiter in between. The core's root search uses the same bound for any
+/// QuadraticPlusHarmonic, as \f$\alpha s^2 + \beta s + \gamma + R\f$ (roots.hpp; for \f$G_1\f$:
+/// \f$\alpha = b\f$, \f$\beta = a\cos\theta\f$, \f$\gamma = a\sin\theta\f$, \f$R = a\f$), where it solves
+/// \f$U = 0\f$ for \f$s\f$ instead of evaluating U; test_model checks that the two agree.
+template <class S>
+S G1_envelope_from_start(const S& a, const S& b, const S& sin_theta, const S& cos_theta, const S& s) {
+  return b * sqr(s) + a * cos_theta * s + a * sin_theta + a;
 }
 
 /// \f$\partial_t G_1 = 2b s - a\cos t + a\cos\theta\f$, from a start (see G1_from_start): the

@@ -35,6 +35,8 @@ long long maxima_between(const Parameters& p, double theta, const Instant& t) {
   if (k_last < 1) return 0;
   const double kappa = std::sqrt(1.0 - (2 * b / a) * (2 * b / a));  // cos t3 = -cos t2
   const long double offset = static_cast<long double>(t2) - theta;     // s_k = 2 pi k + offset
+  // The velocity dG1/dt (model::dG1_dt_from_start) at the ends of the piece, with cos t2 = -kappa and
+  // cos t3 = kappa, solved for the elapsed time s_k (hence written out here, not evaluated).
   // Velocity at the piece start positive:  2b s_k + a cos(theta) + a kappa > 0.
   const long double lower = -(a * (std::cos(theta) + kappa)) / (2.0L * b);
   // Velocity at the piece end negative:   2b (s_k + t3 - t2) + a cos(theta) - a kappa < 0.

@@ -5,6 +5,7 @@
 
 #include "dfchaos/bisect.hpp"
 #include "dfchaos/errors.hpp"
+#include "dfchaos/model.hpp"
 #include "dfchaos/regime_chain.hpp"
 
 namespace dfchaos {
@@ -22,7 +23,7 @@ ProgressionFromT0 progression_from_t0(const Parameters& p) {
   // t2 of the same period as t0 (t0 < t1 < t2 when q > 2b, since then t0 in (0, pi/2)).
   const double t2_after = t2 > t0 ? t2 : t2 + two_pi;
   const double t1_after = t1 > t0 ? t1 : t1 + two_pi;
-  r.eq8_velocity_at_t2 = -a * std::cos(t2) + a * std::cos(t0) + 2 * p.c() * (t2_after - t0);
+  r.eq8_velocity_at_t2 = model::progression_velocity_from_rest(a, model::two_c(p.b(), p.q()), t0, t2_after);
   r.stops_in_t1_t2 = r.t4_value >= t1_after && r.t4_value <= t2_after;
   r.proof_bound_value = a + a * std::cos(t0) - (p.q() - 2 * p.b()) * (pi - t0);
   r.proof_bound = r.proof_bound_value < 0;

@@ -49,8 +49,9 @@ struct Request {
   std::optional<SegmentEnds> J0, J1;
 };
 
-/// The outcome of a request: proved or not, and the record that says what was proved.
-struct Certificate {
+/// The result of a request: proved or not, and the record that says what was proved. (Not a
+/// re-checkable proof document: it records the answer, not the proof.)
+struct Result {
   bool proved = false;  ///< the statement was proved in ball arithmetic
   kit::Json record;     ///< statement, parameters, enclosures, verdict and on failure the failed step
 };
@@ -61,6 +62,6 @@ void check_statement(const std::string& what);
 
 /// Checks the request and runs the proof. Every number must be finite with |x| <= kMaxParameter.
 /// @throws InvalidParameter (one line naming the parameter) for bad input, before any proof starts.
-Certificate certify(const Request& r);
+Result certify(const Request& r);
 
 }  // namespace dfchaos::certify

@@ -28,10 +28,10 @@ Json ball_json(const certified::Ball& x, long digits = 25);
 /// The shortest decimal that reads back as x (e.g. 0.8104702831753706).
 std::string shortest_double(double x);
 /// Adds "proved", and on failure "failed_step", "detail", "refuted" to an object.
-void add_verdict(Json& j, const certified::Verdict& v);
+void add_verdict(Json& j, const certified::Outcome& v);
 
 Json to_json(const certified::Vartheta0& v);  ///< Eq. (1)
-Json to_json(const certified::ParamBox& box, const certified::Lemma1Proof& p);  ///< Lemma 1 at a point or box
+Json to_json(const certified::ParameterBox& box, const certified::Lemma1Proof& p);  ///< Lemma 1 at a point or box
 Json to_json(double a, double q, const certified::Lemma1Bound& p);  ///< certified lower bound of b0(q)
 Json to_json(double a, double b, const certified::DiscontinuityProof& p, const std::string& segment);  ///< Lemma 2
 Json to_json(const certified::CoveringProof& p);  ///< Lemma 4 / Theorem 1
@@ -41,10 +41,10 @@ Json to_json(double a, double q, const certified::WindowProof& w);  ///< a super
 
 /// The statements, in words (what "proved" means for each result).
 std::string statement_vartheta0();
-std::string statement_lemma1(const certified::ParamBox& box);
+std::string statement_lemma1(const certified::ParameterBox& box);
 std::string statement_b0(double a, double q, double b_low);
 std::string statement_discontinuities(const std::string& segment, std::size_t n);
-std::string statement_covering(const certified::ParamBox& box);
+std::string statement_covering(const certified::ParameterBox& box);
 std::string statement_periodic(int m);
 std::string statement_superstable();
 std::string statement_window();

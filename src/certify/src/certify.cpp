@@ -30,7 +30,7 @@ Range bounded(const std::string& name, const Range& r) {
 
 /// The parameter box of a request, its ranges checked in the order a, b, q (the first bad one is
 /// named; the tool has parsed the syntax of every option before).
-ParamBox box_from(const Request& r, bool need_q, bool allow_box) {
+ParameterBox box_from(const Request& r, bool need_q, bool allow_box) {
   const double a = bounded("a", r.a);
   if (!(a > 0)) throw InvalidParameter("a", "a > 0", a);
   if (!r.b) throw InvalidParameter("b", "required for certify " + r.what);
@@ -48,7 +48,7 @@ ParamBox box_from(const Request& r, bool need_q, bool allow_box) {
   }
   if (!allow_box && (blo != bhi || qlo != qhi))
     throw InvalidParameter(blo != bhi ? "b" : "q", "a single value (certify " + r.what + " works at a parameter point)");
-  return ParamBox{a, blo, bhi, qlo, qhi};
+  return ParameterBox{a, blo, bhi, qlo, qhi};
 }
 
 /// The candidate of a given segment, its ends checked to be finite and inside [t2, 3pi/2] at the
@@ -69,15 +69,15 @@ void check_statement(const std::string& what) {
   throw InvalidParameter("what", "one of vartheta0, lemma1, b0, discontinuities, covering, periodic, superstable (got '" + what + "')");
 }
 
-Certificate certify(const Request& r) {
+Result certify(const Request& r) {
   check_statement(r.what);
   if (r.what == "vartheta0") {
     const Vartheta0 v = certify_vartheta0(200);
     return {v.verdict.proved, to_json(v)};
   }
   if (r.what == "lemma1") {
-    const ParamBox box = box_from(r, true, true);
-    const Lemma1Proof p = certify_lemma1(Model(box));
+    const ParameterBox box = box_from(r, true, true);
+    const Lemma1Proof p = certify_lemma1(ParameterBalls(box));
     return {p.verdict.proved, to_json(box, p)};
   }
   if (r.what == "b0") {
@@ -91,7 +91,7 @@ Certificate certify(const Request& r) {
     return {p.verdict.proved, to_json(a, q, p)};
   }
   if (r.what == "discontinuities") {
-    const ParamBox box = box_from(r, false, false);
+    const ParameterBox box = box_from(r, false, false);
     if (r.segment != "L0" && r.segment != "L2") throw InvalidParameter("segment", "L0 or L2 (got '" + r.segment + "')");
     const bool l2 = r.segment == "L2";
     const DiscontinuityProof p = prove_discontinuities(box.a, box.b_lo, L_101pi_100(), l2 ? L_51pi_50() : L_3pi_2());
@@ -110,14 +110,14 @@ Certificate certify(const Request& r) {
     return {p.verdict.proved, to_json(p)};
   }
   if (r.what == "periodic") {
-    const ParamBox box = box_from(r, true, false);
+    const ParameterBox box = box_from(r, true, false);
     if (r.period < 1 || r.period > 64) throw InvalidParameter("period", "an integer 1 <= m <= 64", r.period);
     const CoveringProof c = prove_covering(box);
     const PeriodicProof p = prove_periodic(c, r.period);
     return {p.verdict.proved, to_json(c, p)};
   }
   // superstable
-  const ParamBox box = box_from(r, true, false);
+  const ParameterBox box = box_from(r, true, false);
   if (!r.window) {
     const SuperstableProof p = prove_superstable(box.a, box.b_lo, box.q_lo);
     return {p.verdict.proved, to_json(box.a, box.b_lo, box.q_lo, p)};

@@ -11,10 +11,10 @@ namespace dfchaos::certify {
 using namespace dfchaos::certified;
 
 namespace {
-std::string params_text(const ParamBox& box) {
+std::string params_text(const ParameterBox& box) {
   return box.is_point() ? "at the double values " + box.describe() : "for every parameter of the box " + box.describe();
 }
-Json box_json(const ParamBox& box) {
+Json box_json(const ParameterBox& box) {
   Json j = Json::object();
   j.set("a", box.a);
   if (box.b_lo == box.b_hi) j.set("b", box.b_lo);
@@ -41,7 +41,7 @@ Json ball_json(const Ball& x, long digits) {
   return j;
 }
 
-void add_verdict(Json& j, const Verdict& v) {
+void add_verdict(Json& j, const Outcome& v) {
   j.set("proved", v.proved);
   if (!v.proved) {
     j.set("failed_step", v.step).set("detail", v.detail).set("refuted", v.refuted);
@@ -53,7 +53,7 @@ std::string statement_vartheta0() {
          "strictly there), and vartheta0 and sin(vartheta0) lie in the printed balls; the printed doubles are their correctly "
          "rounded values.";
 }
-std::string statement_lemma1(const ParamBox& box) {
+std::string statement_lemma1(const ParameterBox& box) {
   return "Lemma 1 " + params_text(box) +
          ": the progression that starts from rest at t0 has velocity u > 0 on (t0, t1] (u' = F - q > 0 there), u(t2) < 0 "
          "(Eq. 8, enclosed) and u' < 0 on (t1, t2], so it stops exactly once, at t4 in (t1, t2), where the mass waits for t2.";
@@ -67,7 +67,7 @@ std::string statement_discontinuities(const std::string& segment, std::size_t n)
          " discontinuities there, the z_k with 2z - (a/b) cos z = (2k+1) pi (enclosed), each a first-contact tangency where "
          "T1 jumps up by at least the printed amount; T1 is continuous and decreasing on each interval between them.";
 }
-std::string statement_covering(const ParamBox& box) {
+std::string statement_covering(const ParameterBox& box) {
   return "Lemma 4 (and the covering of Theorem 1) " + params_text(box) +
          ": J0 and J1 are disjoint closed segments of [t2, 3pi/2]; T is continuous on each (closed balls on which T1 and theta2 "
          "are proved simple and the chain fixed), T = t2 exactly at one end and T >= 3pi/2 at the other, so T(Ji) contains "
@@ -106,7 +106,7 @@ Json to_json(const Vartheta0& v) {
   return j;
 }
 
-Json to_json(const ParamBox& box, const Lemma1Proof& p) {
+Json to_json(const ParameterBox& box, const Lemma1Proof& p) {
   Json j = Json::object();
   j.set("statement", statement_lemma1(box)).set("parameters", box_json(box));
   add_verdict(j, p.verdict);

@@ -217,7 +217,7 @@ std::vector<Candidate> covering_candidates(double a, double b, double q, const C
 namespace {
 
 /// Which of theta and b moves T1 more over a ball x box (floating estimate): true to split b.
-bool split_b_first(const ParamBox& box, double th_lo, double th_hi) {
+bool split_b_first(const ParameterBox& box, double th_lo, double th_hi) {
   if (box.b_lo == box.b_hi) return false;
   if (th_lo == th_hi) return true;
   const double bm = 0.5 * (box.b_lo + box.b_hi), tm = 0.5 * (th_lo + th_hi);
@@ -229,20 +229,20 @@ bool split_b_first(const ParamBox& box, double th_lo, double th_hi) {
 
 /// Proves `check` on [th_lo, th_hi] x box by an adaptive cover that splits theta or b.
 template <class Check>
-Verdict cover_2d(const ParamBox& box, double th_lo, double th_hi, const CoveringOptions& opt, int max_depth, Budget& budget,
+Outcome cover_2d(const ParameterBox& box, double th_lo, double th_hi, const CoveringOptions& opt, int max_depth, Budget& budget,
                  SegmentProof& r, const std::string& step, Check&& check) {
-  struct Item { double t0, t1; ParamBox box; int depth; };
+  struct Item { double t0, t1; ParameterBox box; int depth; };
   std::vector<Item> stack{{th_lo, th_hi, box, 0}};
   while (!stack.empty()) {
     const Item it = stack.back();
     stack.pop_back();
-    const Model m(it.box);
-    Verdict why;
+    const ParameterBalls m(it.box);
+    Outcome why;
     if (check(m, it.t0, it.t1, why)) {
       ++r.balls;
       r.depth = std::max(r.depth, it.depth);
       if (it.t1 > it.t0) r.min_width = std::min(r.min_width, it.t1 - it.t0);
-      if (r.balls > opt.max_balls) return Verdict::fail(step, "more than " + std::to_string(opt.max_balls) + " balls");
+      if (r.balls > opt.max_balls) return Outcome::fail(step, "more than " + std::to_string(opt.max_balls) + " balls");
       continue;
     }
     const double tm = 0.5 * (it.t0 + it.t1), bm = 0.5 * (it.box.b_lo + it.box.b_hi), qm = 0.5 * (it.box.q_lo + it.box.q_hi);
@@ -251,16 +251,16 @@ Verdict cover_2d(const ParamBox& box, double th_lo, double th_hi, const Covering
     const bool can_b = it.box.b_hi - it.box.b_lo > 1e-9 * it.box.b_hi && bm > it.box.b_lo && bm < it.box.b_hi;
     const bool can_q = it.box.q_hi - it.box.q_lo > 1e-7 && qm > it.box.q_lo && qm < it.box.q_hi;
     if (it.depth >= max_depth || (!can_t && !can_b && !can_q) || budget.exhausted())
-      return Verdict::fail(step, "at theta in [" + format_double(it.t0) + ", " + format_double(it.t1) + "], " + it.box.describe() + ": " + why.describe());
+      return Outcome::fail(step, "at theta in [" + format_double(it.t0) + ", " + format_double(it.t1) + "], " + it.box.describe() + ": " + why.describe());
     const bool by_b = can_b && (!can_t || split_b_first(it.box, it.t0, it.t1));
     if (by_b) {
-      ParamBox lo = it.box, hi = it.box;
+      ParameterBox lo = it.box, hi = it.box;
       lo.b_hi = bm;
       hi.b_lo = bm;
       stack.push_back({it.t0, it.t1, hi, it.depth + 1});
       stack.push_back({it.t0, it.t1, lo, it.depth + 1});
     } else if (!can_t) {
-      ParamBox lo = it.box, hi = it.box;
+      ParameterBox lo = it.box, hi = it.box;
       lo.q_hi = qm;
       hi.q_lo = qm;
       stack.push_back({it.t0, it.t1, hi, it.depth + 1});
@@ -270,49 +270,49 @@ Verdict cover_2d(const ParamBox& box, double th_lo, double th_hi, const Covering
       stack.push_back({it.t0, tm, it.box, it.depth + 1});
     }
   }
-  return Verdict::ok();
+  return Outcome::ok();
 }
 
 }  // namespace
 
-SegmentProof prove_segment(const Model& m, const Candidate& c, const CoveringOptions& opt) {
+SegmentProof prove_segment(const ParameterBalls& m, const Candidate& c, const CoveringOptions& opt) {
   SegmentProof r;
   r.lo = c.lo();
   r.hi = c.hi();
   r.theta_top = c.theta_top;
   r.theta_t2 = c.theta_t2;
   r.min_width = r.hi - r.lo;
-  if (Verdict v = m.admissible(); !v) {
+  if (Outcome v = m.admissible(); !v) {
     r.verdict = v;
     return r;
   }
   // J inside [t2, 3 pi / 2] for every parameter of the box.
   const Ball three_halves_pi = 1.5 * m.pi;
   if (!le(m.t2_at_b_hi, Ball(r.lo)) || !le(Ball(r.hi), three_halves_pi)) {
-    r.verdict = Verdict::fail("covering: J inside [t2, 3pi/2]", "J = [" + format_double(r.lo) + ", " + format_double(r.hi) + "]");
+    r.verdict = Outcome::fail("covering: J inside [t2, 3pi/2]", "J = [" + format_double(r.lo) + ", " + format_double(r.hi) + "]");
     return r;
   }
   Budget budget;
   budget.max_tests = opt.max_tests;
   bool first_top = true, first_bot = true;
   // The two ends (over sub-boxes of b if needed).
-  Verdict v = cover_2d(m.box(), c.theta_top, c.theta_top, opt, opt.end_depth, budget, r, "covering: T >= 3pi/2 at the top end",
-                       [&](const Model& mm, double t0, double t1, Verdict& why) {
-                         TProof top = certify_T(mm, StartSet::interval(t0, t1), budget);
+  Outcome v = cover_2d(m.box(), c.theta_top, c.theta_top, opt, opt.end_depth, budget, r, "covering: T >= 3pi/2 at the top end",
+                       [&](const ParameterBalls& mm, double t0, double t1, Outcome& why) {
+                         MapStepProof top = certify_T(mm, StartSet::interval(t0, t1), budget);
                          r.tests += top.tests;
                          if (!top.verdict) { why = top.verdict; return false; }
-                         if (!le(1.5 * mm.pi, top.T)) { why = Verdict::fail("T >= 3pi/2", "T = " + top.T.str(12)); return false; }
+                         if (!le(1.5 * mm.pi, top.T)) { why = Outcome::fail("T >= 3pi/2", "T = " + top.T.str(12)); return false; }
                          r.T_top = first_top ? top.T : Ball::hull(r.T_top, top.T);
                          first_top = false;
                          return true;
                        });
   if (!v) { r.verdict = v; return r; }
   v = cover_2d(m.box(), c.theta_t2, c.theta_t2, opt, opt.end_depth, budget, r, "covering: T = t2 at the t2 end",
-               [&](const Model& mm, double t0, double t1, Verdict& why) {
-                 TProof bot = certify_T(mm, StartSet::interval(t0, t1), budget);
+               [&](const ParameterBalls& mm, double t0, double t1, Outcome& why) {
+                 MapStepProof bot = certify_T(mm, StartSet::interval(t0, t1), budget);
                  r.tests += bot.tests;
                  if (!bot.verdict) { why = bot.verdict; return false; }
-                 if (!bot.constant_t2) { why = Verdict::fail("T = t2", "T = " + bot.T.str(12)); return false; }
+                 if (!bot.constant_t2) { why = Outcome::fail("T = t2", "T = " + bot.T.str(12)); return false; }
                  r.theta2_t2end = first_bot ? bot.theta2_phase : Ball::hull(r.theta2_t2end, bot.theta2_phase);
                  first_bot = false;
                  r.used_lemma1 = r.used_lemma1 || bot.used_lemma1;
@@ -322,8 +322,8 @@ SegmentProof prove_segment(const Model& m, const Candidate& c, const CoveringOpt
   const int end_balls = r.balls;
   // Continuity on J.
   v = cover_2d(m.box(), r.lo, r.hi, opt, opt.max_depth, budget, r, "covering: continuity on J",
-               [&](const Model& mm, double t0, double t1, Verdict& why) {
-                 TProof t = certify_T(mm, StartSet::interval(t0, t1), budget);
+               [&](const ParameterBalls& mm, double t0, double t1, Outcome& why) {
+                 MapStepProof t = certify_T(mm, StartSet::interval(t0, t1), budget);
                  r.tests += t.tests;
                  if (!t.verdict) { why = t.verdict; return false; }
                  r.used_lemma1 = r.used_lemma1 || t.used_lemma1;
@@ -334,11 +334,11 @@ SegmentProof prove_segment(const Model& m, const Candidate& c, const CoveringOpt
   return r;
 }
 
-CoveringProof prove_covering(const ParamBox& box, const std::vector<Candidate>& candidates, const CoveringOptions& opt) {
+CoveringProof prove_covering(const ParameterBox& box, const std::vector<Candidate>& candidates, const CoveringOptions& opt) {
   const auto start = std::chrono::steady_clock::now();
   CoveringProof r;
   r.box = box;
-  const Model m(box);
+  const ParameterBalls m(box);
   std::vector<SegmentProof> proved;
   SegmentProof last_failure;
   for (const Candidate& c : candidates) {
@@ -352,21 +352,21 @@ CoveringProof prove_covering(const ParamBox& box, const std::vector<Candidate>& 
   if (proved.size() == 2) {
     r.J0 = proved[0];
     r.J1 = proved[1];
-    r.verdict = Verdict::ok();
+    r.verdict = Outcome::ok();
   } else if (candidates.empty()) {
-    r.verdict = Verdict::fail("covering: candidates", "the floating-point search proposed no covering segment");
+    r.verdict = Outcome::fail("covering: candidates", "the floating-point search proposed no covering segment");
   } else if (!last_failure.verdict.proved && !last_failure.verdict.step.empty()) {
     r.verdict = last_failure.verdict;
     if (!proved.empty()) r.J0 = proved[0];
   } else {
-    r.verdict = Verdict::fail("covering: candidates", "fewer than two disjoint candidates were proved");
+    r.verdict = Outcome::fail("covering: candidates", "fewer than two disjoint candidates were proved");
     if (!proved.empty()) r.J0 = proved[0];
   }
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;
 }
 
-CoveringProof prove_covering(const ParamBox& box, const CoveringOptions& opt) {
+CoveringProof prove_covering(const ParameterBox& box, const CoveringOptions& opt) {
   const auto start = std::chrono::steady_clock::now();
   const double b = 0.5 * (box.b_lo + box.b_hi), q = 0.5 * (box.q_lo + box.q_hi);
   const std::vector<Candidate> c = covering_candidates(box.a, b, q, opt);

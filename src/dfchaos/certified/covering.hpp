@@ -21,7 +21,7 @@
 #include <string>
 #include <vector>
 
-#include "dfchaos/certified/model.hpp"
+#include "dfchaos/certified/parameters.hpp"
 #include "dfchaos/certified/return_map.hpp"
 
 namespace dfchaos::certified {
@@ -58,7 +58,7 @@ std::vector<Candidate> track_candidates(double a, double b, double q, const std:
 
 /// The proof of one covering segment.
 struct SegmentProof {
-  Verdict verdict;          ///< proved: T continuous on J, T = t2 at theta_t2, T >= 3pi/2 at theta_top
+  Outcome verdict;          ///< proved: T continuous on J, T = t2 at theta_t2, T >= 3pi/2 at theta_top
   double lo = 0;            ///< left end of J
   double hi = 0;            ///< right end of J
   double theta_top = 0;     ///< the end with \f$T \ge 3\pi/2\f$
@@ -73,12 +73,12 @@ struct SegmentProof {
 };
 
 /// Proves that `c` is a covering segment for every parameter of the model's box.
-SegmentProof prove_segment(const Model& m, const Candidate& c, const CoveringOptions& opt = {});
+SegmentProof prove_segment(const ParameterBalls& m, const Candidate& c, const CoveringOptions& opt = {});
 
 /// Lemma 4 at a point or over a box: two disjoint certified covering segments.
 struct CoveringProof {
-  Verdict verdict;          ///< proved: J0, J1 disjoint, both certified covering segments
-  ParamBox box;             ///< the parameters
+  Outcome verdict;          ///< proved: J0, J1 disjoint, both certified covering segments
+  ParameterBox box;             ///< the parameters
   SegmentProof J0;          ///< the left segment
   SegmentProof J1;          ///< the right segment (J0.hi < J1.lo)
   int candidates_tried = 0; ///< candidates examined
@@ -86,9 +86,9 @@ struct CoveringProof {
 };
 
 /// Lemma 4 over `box`, with candidates from the floating layer at the box's centre.
-CoveringProof prove_covering(const ParamBox& box, const CoveringOptions& opt = {});
+CoveringProof prove_covering(const ParameterBox& box, const CoveringOptions& opt = {});
 
 /// Lemma 4 over `box` with given candidates (tried in order until two disjoint ones are proved).
-CoveringProof prove_covering(const ParamBox& box, const std::vector<Candidate>& candidates, const CoveringOptions& opt = {});
+CoveringProof prove_covering(const ParameterBox& box, const std::vector<Candidate>& candidates, const CoveringOptions& opt = {});
 
 }  // namespace dfchaos::certified

@@ -17,26 +17,26 @@ Ball L_3pi_2() { return Ball::pi() * 1.5; }
 namespace {
 
 /// Covers [x, y] by closed balls on which certify_T1 proves a simple first root.
-Verdict cover_simple(const Model& m, double x, double y, Budget& budget, int& balls) {
-  if (!(x < y)) return Verdict::ok();
+Outcome cover_simple(const ParameterBalls& m, double x, double y, Budget& budget, int& balls) {
+  if (!(x < y)) return Outcome::ok();
   struct Item { double lo, hi; int depth; };
   std::vector<Item> stack{{x, y, 0}};
   while (!stack.empty()) {
     const Item it = stack.back();
     stack.pop_back();
-    const T1Proof p = certify_T1(m, StartSet::interval(it.lo, it.hi), budget);
+    const FirstHitProof p = certify_T1(m, StartSet::interval(it.lo, it.hi), budget);
     if (p.verdict) {
       ++balls;
       continue;
     }
     const double mid = 0.5 * (it.lo + it.hi);
     if (it.depth >= 50 || !(mid > it.lo && mid < it.hi) || budget.exhausted())
-      return Verdict::fail("Lemma 2: T1 continuous between the tangencies",
+      return Outcome::fail("Lemma 2: T1 continuous between the tangencies",
                            "at theta in [" + format_double(it.lo) + ", " + format_double(it.hi) + "]: " + p.verdict.describe());
     stack.push_back({mid, it.hi, it.depth + 1});
     stack.push_back({it.lo, mid, it.depth + 1});
   }
-  return Verdict::ok();
+  return Outcome::ok();
 }
 
 }  // namespace
@@ -44,15 +44,15 @@ Verdict cover_simple(const Model& m, double x, double y, Budget& budget, int& ba
 DiscontinuityProof prove_discontinuities(double a, double b, const Ball& lo, const Ball& hi, int max_tangencies) {
   const auto start = std::chrono::steady_clock::now();
   DiscontinuityProof r;
-  auto finish = [&](Verdict v) {
+  auto finish = [&](Outcome v) {
     r.verdict = std::move(v);
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return r;
   };
-  const Model m(ParamBox::point(a, b, 0.5 * a + 2 * b));  // q plays no role in T1
+  const ParameterBalls m(ParameterBox::point(a, b, 0.5 * a + 2 * b));  // q plays no role in T1
   r.lo = lo.lower();
   r.hi = hi.upper();
-  if (!lt(m.t2, Ball(r.lo)) || !lt(Ball(r.hi), m.t3)) return finish(Verdict::fail("Lemma 2: L inside (t2, t3)", "b/a too large for this segment"));
+  if (!lt(m.t2, Ball(r.lo)) || !lt(Ball(r.hi), m.t3)) return finish(Outcome::fail("Lemma 2: L inside (t2, t3)", "b/a too large for this segment"));
   const Ball ab = m.a / m.b;
   auto h = [&](const Ball& z) { return model::symmetric_tangency_h(ab, z); };
   // Odd multiples of pi in h(L): h decreases.
@@ -65,11 +65,11 @@ DiscontinuityProof prove_discontinuities(double a, double b, const Ball& lo, con
     const Ball target = Ball(static_cast<double>(2 * k + 1)) * pi;
     if (lt(target, h_lo) || lt(h_hi, target)) continue;  // outside h(L)
     if (!(lt(h_lo, target) && lt(target, h_hi)))
-      return finish(Verdict::fail("Lemma 2: count", "h at an end of L is too close to (2k+1) pi, k = " + std::to_string(k)));
+      return finish(Outcome::fail("Lemma 2: count", "h at an end of L is too close to (2k+1) pi, k = " + std::to_string(k)));
     ks.push_back(k);
   }
   if (static_cast<int>(ks.size()) > max_tangencies)
-    return finish(Verdict::fail("Lemma 2: count", std::to_string(ks.size()) + " tangencies exceed the bound " + std::to_string(max_tangencies)));
+    return finish(Outcome::fail("Lemma 2: count", std::to_string(ks.size()) + " tangencies exceed the bound " + std::to_string(max_tangencies)));
   // Enclose each z_k (ascending z = descending k).
   for (auto it = ks.rbegin(); it != ks.rend(); ++it) {
     const long long k = *it;
@@ -79,7 +79,7 @@ DiscontinuityProof prove_discontinuities(double a, double b, const Ball& lo, con
     t.z = enclose_sign_change([&](const Ball& z) { return h(z) - target; }, Ball(r.lo), Ball(r.hi), 400);
     t.flight = model::symmetric_tangency_flight(ab, t.z);
     t.t_star = t.z + t.flight;
-    if (!t.flight.is_positive()) return finish(Verdict::fail("Lemma 2: tangency", "flight not positive at k = " + std::to_string(k)));
+    if (!t.flight.is_positive()) return finish(Outcome::fail("Lemma 2: tangency", "flight not positive at k = " + std::to_string(k)));
     r.z.push_back(t);
   }
   Budget budget;
@@ -98,33 +98,33 @@ DiscontinuityProof prove_discontinuities(double a, double b, const Ball& lo, con
       wh = (t.t_star + delta).upper_ball();
       window = m.F(Ball::hull(wl, wh)).is_negative();
     }
-    if (!window) return finish(Verdict::fail("Lemma 2: tangency window", "F < 0 near t* not proved at z = " + t.z.mid_str(20)));
+    if (!window) return finish(Outcome::fail("Lemma 2: tangency window", "F < 0 near t* not proved at z = " + t.z.mid_str(20)));
     // Left piece [z - eta', z): skip W, the later root.
     const double eta_l = std::max(gap_left / 8, 0.0);
     const double left_start = z_lo - eta_l;
-    T1Options opt;
+    FirstHitOptions opt;
     opt.skip = {{wl, wh}};
     opt.guess_at_max = oracle::T1(a, b, z_lo - std::max(1e-9, 1e-6 * eta_l));
     opt.guess_at_min = oracle::T1(a, b, left_start);
-    const T1Proof left = certify_T1(m, StartSet::balls(Ball(left_start), t.z.upper_ball()), budget, opt);
-    if (!left.verdict) return finish(Verdict::fail("Lemma 2: left of a tangency", "z = " + t.z.mid_str(20) + ": " + left.verdict.describe()));
-    if (!lt(wh, left.t_lo)) return finish(Verdict::fail("Lemma 2: left of a tangency", "the later root is not after the window"));
+    const FirstHitProof left = certify_T1(m, StartSet::balls(Ball(left_start), t.z.upper_ball()), budget, opt);
+    if (!left.verdict) return finish(Outcome::fail("Lemma 2: left of a tangency", "z = " + t.z.mid_str(20) + ": " + left.verdict.describe()));
+    if (!lt(wh, left.t_lo)) return finish(Outcome::fail("Lemma 2: left of a tangency", "the later root is not after the window"));
     ++r.balls;
     t.left_limit = left.enclosure;
     t.jump = left.t_lo - t.t_star.upper_ball();
     // Right piece [z, z + eta]: concavity on W.
     double eta = std::min(gap_right / 8, (delta * delta).mid() / (8 * t.flight.mid()));
-    Verdict right = Verdict::fail("Lemma 2: right of a tangency", "not tried");
+    Outcome right = Outcome::fail("Lemma 2: right of a tangency", "not tried");
     for (int j = 0; j < 8 && !(right = certify_no_contact(m, StartSet::balls(t.z.lower_ball(), Ball(z_hi + eta)), wl, budget)); ++j) eta /= 4;
-    if (!right) return finish(Verdict::fail("Lemma 2: right of a tangency", "z = " + t.z.mid_str(20) + ": " + right.describe()));
+    if (!right) return finish(Outcome::fail("Lemma 2: right of a tangency", "z = " + t.z.mid_str(20) + ": " + right.describe()));
     ++r.balls;
     // The stretch between the previous piece and this tangency's left piece.
-    if (Verdict v = cover_simple(m, cursor, left_start, budget, r.balls); !v) return finish(v);
-    t.verdict = Verdict::ok();
+    if (Outcome v = cover_simple(m, cursor, left_start, budget, r.balls); !v) return finish(v);
+    t.verdict = Outcome::ok();
     cursor = z_hi + eta;
   }
-  if (Verdict v = cover_simple(m, cursor, r.hi, budget, r.balls); !v) return finish(v);
-  return finish(Verdict::ok());
+  if (Outcome v = cover_simple(m, cursor, r.hi, budget, r.balls); !v) return finish(v);
+  return finish(Outcome::ok());
 }
 
 }  // namespace dfchaos::certified

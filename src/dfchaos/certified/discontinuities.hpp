@@ -34,7 +34,7 @@ namespace dfchaos::certified {
 
 /// A certified discontinuity of \f$T_1\f$.
 struct Tangency {
-  Verdict verdict;     ///< proved: first-contact tangency, T1 continuous on both one-sided neighbourhoods, jump
+  Outcome verdict;     ///< proved: first-contact tangency, T1 continuous on both one-sided neighbourhoods, jump
   long long k = 0;     ///< \f$h(z) = (2k+1)\pi\f$
   Ball z;              ///< the discontinuity
   Ball flight;         ///< \f$s = -(a/b)\cos z\f$
@@ -45,7 +45,7 @@ struct Tangency {
 
 /// Lemma 2 on a segment.
 struct DiscontinuityProof {
-  Verdict verdict;          ///< proved: exactly the z below, T1 continuous and decreasing elsewhere on [lo, hi]
+  Outcome verdict;          ///< proved: exactly the z below, T1 continuous and decreasing elsewhere on [lo, hi]
   double lo = 0;            ///< left end of the segment covered (contains the requested one)
   double hi = 0;            ///< right end of the segment covered
   std::vector<Tangency> z;  ///< ascending

@@ -5,11 +5,11 @@
 
 namespace dfchaos::certified {
 
-Verdict prove_negative(const NegativityTarget& f, const Ball& lo, const Ball& hi, Budget& budget, const std::string& step,
+Outcome prove_negative(const NegativityTarget& f, const Ball& lo, const Ball& hi, Budget& budget, const std::string& step,
                        NegativityStats* stats) {
   NegativityStats local;
   NegativityStats& st = stats ? *stats : local;
-  if (!le(lo, hi)) return Verdict::fail(step, "empty or unordered interval " + lo.mid_str(17) + " .. " + hi.mid_str(17));
+  if (!le(lo, hi)) return Outcome::fail(step, "empty or unordered interval " + lo.mid_str(17) + " .. " + hi.mid_str(17));
   // Minimum half-width: below it a sub-interval is reported undecided.
   const Ball scale = max(abs(lo), abs(hi)) + Ball(1.0);
   Ball min_r = scale * Ball(std::ldexp(1.0, -static_cast<int>(precision() - 12)));
@@ -19,7 +19,7 @@ Verdict prove_negative(const NegativityTarget& f, const Ball& lo, const Ball& hi
     auto [x1, x2] = std::move(stack.back());
     stack.pop_back();
     ++st.tests;
-    if (!budget.spend()) return Verdict::fail(step, "budget of " + std::to_string(budget.max_tests) + " interval tests spent near " +
+    if (!budget.spend()) return Outcome::fail(step, "budget of " + std::to_string(budget.max_tests) + " interval tests spent near " +
                                                        f.variable() + " = " + x1.mid_str(17));
     if (f.envelope_negative(x1, x2)) {
       ++st.envelope;
@@ -30,7 +30,7 @@ Verdict prove_negative(const NegativityTarget& f, const Ball& lo, const Ball& hi
     const Ball X = Ball::hull(x1, x2);
     const Ball fm = f.value(m);
     if (fm.is_positive())
-      return Verdict::refute(step, f.variable() + " = " + m.mid_str(20) + " gives f = " + fm.str(6) + " > 0");
+      return Outcome::refute(step, f.variable() + " = " + m.mid_str(20) + " gives f = " + fm.str(6) + " > 0");
     const Ball dm = f.slope(m);
     const Ball cX = f.curvature(X);
     const Ball taylor = fm + r * abs(dm) + 0.5 * sqr(r) * max(cX, Ball(0.0));
@@ -44,11 +44,11 @@ Verdict prove_negative(const NegativityTarget& f, const Ball& lo, const Ball& hi
       continue;
     }
     if (lt(r, min_r))
-      return Verdict::fail(step, "undecided near " + f.variable() + " = " + m.mid_str(20) + " (f = " + fm.str(6) + ")");
+      return Outcome::fail(step, "undecided near " + f.variable() + " = " + m.mid_str(20) + " (f = " + fm.str(6) + ")");
     stack.emplace_back(m, x2);
     stack.emplace_back(x1, m);
   }
-  return Verdict::ok();
+  return Outcome::ok();
 }
 
 }  // namespace dfchaos::certified

@@ -5,7 +5,7 @@
 /// On a sub-interval \f$X = [x_1, x_2]\f$ with midpoint \f$m\f$ and half-width \f$r\f$, \f$f < 0\f$
 /// on \f$X\f$ is proved by the first of these that succeeds (all evaluated in ball arithmetic):
 ///  1. an *envelope* supplied by the function (e.g. for \f$G_1\f$ the convex quadratic
-///     \f$U(s) = bs^2 + as\cos\theta + a\sin\theta + a \ge G_1\f$: negative at both ends of X
+///     \f$U(s) = bs^2 + as\cos\theta + a\sin\theta + a \ge G_1\f$, model::G1_envelope_from_start(): negative at both ends of X
 ///     means negative on X), which skips long stretches of a flight in one step;
 ///  2. second-order Taylor: \f$f(x) \le f(m) + r|f'(m)| + \tfrac{r^2}{2}\max(0, \sup_X f'') < 0\f$;
 ///  3. monotonicity: \f$f' > 0\f$ on X (\f$f'(m) \pm r\sup_X|f''|\f$) and \f$f(x_2) < 0\f$, or \f$f' < 0\f$
@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "dfchaos/certified/ball.hpp"
-#include "dfchaos/certified/verdict.hpp"
+#include "dfchaos/certified/outcome.hpp"
 
 namespace dfchaos::certified {
 
@@ -46,7 +46,7 @@ struct NegativityStats {
 
 /// Proves \f$f < 0\f$ on the closed interval \f$[lo, hi]\f$ (exact balls, lo <= hi).
 /// `step` names the statement in a failure ("T1: no earlier root").
-Verdict prove_negative(const NegativityTarget& f, const Ball& lo, const Ball& hi, Budget& budget, const std::string& step,
+Outcome prove_negative(const NegativityTarget& f, const Ball& lo, const Ball& hi, Budget& budget, const std::string& step,
                        NegativityStats* stats = nullptr);
 
 }  // namespace dfchaos::certified

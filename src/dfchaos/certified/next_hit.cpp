@@ -25,7 +25,7 @@ StartSet StartSet::balls(const Ball& lo, const Ball& hi) {
   return s;
 }
 
-StartSet StartSet::from_t2(const Model& m, double hi) {
+StartSet StartSet::from_t2(const ParameterBalls& m, double hi) {
   if (!m.box().is_point()) throw std::invalid_argument("StartSet::from_t2: a point box is required");
   StartSet s;
   s.lo = m.t2;
@@ -40,21 +40,21 @@ StartSet StartSet::at_t2() {
   return s;
 }
 
-Ball StartSet::theta_min(const Model& m) const { return kind == Kind::AtT2 ? m.t2_at_b_lo : lo; }
-Ball StartSet::theta_max(const Model& m) const { return kind == Kind::AtT2 ? m.t2_at_b_hi : hi; }
-Ball StartSet::hull(const Model& m) const { return kind == Kind::AtT2 ? m.t2 : Ball::hull(lo, hi); }
+Ball StartSet::theta_min(const ParameterBalls& m) const { return kind == Kind::AtT2 ? m.t2_at_b_lo : lo; }
+Ball StartSet::theta_max(const ParameterBalls& m) const { return kind == Kind::AtT2 ? m.t2_at_b_hi : hi; }
+Ball StartSet::hull(const ParameterBalls& m) const { return kind == Kind::AtT2 ? m.t2 : Ball::hull(lo, hi); }
 
-Verdict StartSet::valid(const Model& m) const {
-  if (kind == Kind::AtT2) return Verdict::ok();
-  if (!le(lo, hi) && !lo_is_t2) return Verdict::fail("start set", "lo <= hi not proved");
+Outcome StartSet::valid(const ParameterBalls& m) const {
+  if (kind == Kind::AtT2) return Outcome::ok();
+  if (!le(lo, hi) && !lo_is_t2) return Outcome::fail("start set", "lo <= hi not proved");
   if (lo_is_t2) {
-    if (!m.box().is_point()) return Verdict::fail("start set", "theta = t2 at the lower end needs a point box");
+    if (!m.box().is_point()) return Outcome::fail("start set", "theta = t2 at the lower end needs a point box");
   } else if (!le(m.t2_at_b_hi, lo)) {
-    return Verdict::fail("start set", "t2 <= theta not proved at theta = " + lo.mid_str(17));
+    return Outcome::fail("start set", "t2 <= theta not proved at theta = " + lo.mid_str(17));
   }
   const Ball t3_hi = model::t3(m.a, m.b_hi);
-  if (!lt(hi, t3_hi)) return Verdict::fail("start set", "theta < t3 not proved at theta = " + hi.mid_str(17));
-  return Verdict::ok();
+  if (!lt(hi, t3_hi)) return Outcome::fail("start set", "theta < t3 not proved at theta = " + hi.mid_str(17));
+  return Outcome::ok();
 }
 
 std::string StartSet::describe() const {
@@ -66,42 +66,42 @@ std::string StartSet::describe() const {
 
 // ---- G1 -----------------------------------------------------------------------------------------
 
-Ball G1(const Model& m, const Ball& theta, const Ball& t, const Ball& b) { return model::G1(m.a, b, theta, t); }
+Ball G1(const ParameterBalls& m, const Ball& theta, const Ball& t, const Ball& b) { return model::G1(m.a, b, theta, t); }
 
-Ball dG1_dt(const Model& m, const Ball& theta, const Ball& t, const Ball& b) { return model::dG1_dt(m.a, b, theta, t); }
+Ball dG1_dt(const ParameterBalls& m, const Ball& theta, const Ball& t, const Ball& b) { return model::dG1_dt(m.a, b, theta, t); }
 
 namespace {
 
 /// \f$s \mapsto G_1(\theta, \theta + s; b)\f$ at a (nearly) thin corner, with its quadratic envelope.
 class FlightGap final : public NegativityTarget {
  public:
-  FlightGap(const Model& m, const Ball& theta, const Ball& b) : m_(m), theta_(theta), b_(b) { sin_cos(theta, st_, ct_); }
+  FlightGap(const ParameterBalls& m, const Ball& theta, const Ball& b) : m_(m), theta_(theta), b_(b) { sin_cos(theta, st_, ct_); }
   Ball value(const Ball& s) const override { return model::G1_from_start(m_.a, b_, st_, ct_, s, theta_ + s); }
   Ball slope(const Ball& s) const override { return model::dG1_dt_from_start(m_.a, b_, ct_, s, theta_ + s); }
   Ball curvature(const Ball& s) const override { return model::F(m_.a, b_, theta_ + s); }
   bool envelope_negative(const Ball& lo, const Ball& hi) const override {
-    // U(s) = b s^2 + a s cos(theta) + a sin(theta) + a >= G1, convex in s.
-    auto U = [&](const Ball& s) { return b_ * sqr(s) + m_.a * ct_ * s + m_.a * st_ + m_.a; };
+    // U >= G1, convex in s: negative at both ends means negative in between.
+    auto U = [&](const Ball& s) { return model::G1_envelope_from_start(m_.a, b_, st_, ct_, s); };
     return U(lo).is_negative() && U(hi).is_negative();
   }
   std::string variable() const override { return "s"; }
 
  private:
-  const Model& m_;
+  const ParameterBalls& m_;
   Ball theta_, b_, st_, ct_;
 };
 
 /// \f$t \mapsto -\partial_t G_1(\theta, t; b)\f$ (negative = the root is simple).
 class MinusVelocity final : public NegativityTarget {
  public:
-  MinusVelocity(const Model& m, const Ball& theta, const Ball& b) : m_(m), theta_(theta), b_(b), ct_(cos(theta)) {}
+  MinusVelocity(const ParameterBalls& m, const Ball& theta, const Ball& b) : m_(m), theta_(theta), b_(b), ct_(cos(theta)) {}
   Ball value(const Ball& t) const override { return -model::dG1_dt_from_start(m_.a, b_, ct_, t - theta_, t); }
   Ball slope(const Ball& t) const override { return -model::F(m_.a, b_, t); }
-  Ball curvature(const Ball& t) const override { return -(m_.a * cos(t)); }
+  Ball curvature(const Ball& t) const override { return -model::dF_dt(m_.a, t); }
   std::string variable() const override { return "t"; }
 
  private:
-  const Model& m_;
+  const ParameterBalls& m_;
   Ball theta_, b_, ct_;
 };
 
@@ -112,8 +112,8 @@ Ball delta_for(const Ball& x) {
 
 }  // namespace
 
-Verdict prove_departure(const Model& m, const StartSet& set, const Ball& s0) {
-  if (!s0.is_positive() || !le(s0, Ball(1.0))) return Verdict::fail("T1: departure", "s0 must be in (0, 1]");
+Outcome prove_departure(const ParameterBalls& m, const StartSet& set, const Ball& s0) {
+  if (!s0.is_positive() || !le(s0, Ball(1.0))) return Outcome::fail("T1: departure", "s0 must be in (0, 1]");
   const Ball th = set.hull(m);
   Ball st, ct;
   sin_cos(th, st, ct);
@@ -122,13 +122,13 @@ Verdict prove_departure(const Model& m, const StartSet& set, const Ball& s0) {
   const Ball K = Ball::hull(Ball(-1.0) / 6.0, Ball(-1.0) / 6.0 + sqr(s0) / 120.0);
   const Ball g = -(m.a * st * S * E) - m.a * ct * K;
   // b + (a/2) sin(theta) <= 0 on [t2(b), t3(b)] (the start set was proved valid).
-  if (g.is_negative()) return Verdict::ok();
+  if (g.is_negative()) return Outcome::ok();
   const Ball F0 = m.b + 0.5 * m.a * st;
-  if ((F0 + S * g).is_negative()) return Verdict::ok();
-  return Verdict::fail("T1: departure", "G1 < 0 just after theta not proved on s in (0, " + s0.mid_str(6) + "] (g = " + g.str(5) + ")");
+  if ((F0 + S * g).is_negative()) return Outcome::ok();
+  return Outcome::fail("T1: departure", "G1 < 0 just after theta not proved on s in (0, " + s0.mid_str(6) + "] (g = " + g.str(5) + ")");
 }
 
-Ball newton_G1(const Model& m, const Ball& theta, const Ball& b, const Ball& guess) {
+Ball newton_G1(const ParameterBalls& m, const Ball& theta, const Ball& b, const Ball& guess) {
   const Ball th = theta.mid_ball(), bb = b.mid_ball();
   Ball x = guess.mid_ball();
   const Ball tol = delta_for(x) * Ball(1.0 / 1024.0);
@@ -142,14 +142,14 @@ Ball newton_G1(const Model& m, const Ball& theta, const Ball& b, const Ball& gue
   return x;
 }
 
-Verdict certify_no_contact(const Model& m, const StartSet& set, const Ball& t_end, Budget& budget,
+Outcome certify_no_contact(const ParameterBalls& m, const StartSet& set, const Ball& t_end, Budget& budget,
                            const std::vector<std::pair<Ball, Ball>>& skip, NegativityStats* stats) {
-  if (Verdict v = set.valid(m); !v) return v;
+  if (Outcome v = set.valid(m); !v) return v;
   const Ball th_min = set.theta_min(m), th_max = set.theta_max(m);
   // 1. departure over the whole set.
   const Ball w = (th_max - th_min).upper_ball();
   Ball s0;
-  Verdict dep = Verdict::fail("T1: departure", "start set wider than 1/2");
+  Outcome dep = Outcome::fail("T1: departure", "start set wider than 1/2");
   for (double c : {0.5, 0.125, 1.0 / 32, 1.0 / 256}) {
     s0 = Ball(c);
     if (lt(s0, w)) break;
@@ -170,15 +170,15 @@ Verdict certify_no_contact(const Model& m, const StartSet& set, const Ball& t_en
   if (lt(start, s_end)) segs.emplace_back(start, s_end);
   for (const auto& [x1, x2] : segs) {
     if (!le(x1, x2)) continue;
-    Verdict v = prove_negative(gap, x1, x2, budget, "T1: no earlier root", stats);
+    Outcome v = prove_negative(gap, x1, x2, budget, "T1: no earlier root", stats);
     if (!v) return v;
   }
-  return Verdict::ok();
+  return Outcome::ok();
 }
 
-T1Proof certify_T1(const Model& m, const StartSet& set, Budget& budget, const T1Options& opt) {
-  T1Proof r;
-  if (Verdict v = set.valid(m); !v) {
+FirstHitProof certify_T1(const ParameterBalls& m, const StartSet& set, Budget& budget, const FirstHitOptions& opt) {
+  FirstHitProof r;
+  if (Outcome v = set.valid(m); !v) {
     r.verdict = v;
     return r;
   }
@@ -188,7 +188,7 @@ T1Proof certify_T1(const Model& m, const StartSet& set, Budget& budget, const T1
   if (std::isnan(g_max)) g_max = oracle::T1(a, m.box().b_hi, th_max.mid());
   if (std::isnan(g_min)) g_min = oracle::T1(a, m.box().b_lo, th_min.mid());
   if (std::isnan(g_max) || std::isnan(g_min)) {
-    r.verdict = Verdict::fail("T1: guess", "the floating-point layer gave no T1 at the corners");
+    r.verdict = Outcome::fail("T1: guess", "the floating-point layer gave no T1 at the corners");
     return r;
   }
   // 3. bracket at the corners.
@@ -201,7 +201,7 @@ T1Proof certify_T1(const Model& m, const StartSet& set, Budget& budget, const T1
     ok = G1(m, th_max, r.t_lo, m.b_hi).is_negative();
   }
   if (!ok) {
-    r.verdict = Verdict::fail("T1: bracket", "G1 < 0 at the left end of the bracket not proved near t = " + rho_hi.mid_str(20));
+    r.verdict = Outcome::fail("T1: bracket", "G1 < 0 at the left end of the bracket not proved near t = " + rho_hi.mid_str(20));
     return r;
   }
   ok = false;
@@ -211,22 +211,22 @@ T1Proof certify_T1(const Model& m, const StartSet& set, Budget& budget, const T1
     ok = G1(m, th_min, r.t_hi, m.b_lo).is_positive();
   }
   if (!ok) {
-    r.verdict = Verdict::fail("T1: bracket", "G1 > 0 at the right end of the bracket not proved near t = " + rho_lo.mid_str(20));
+    r.verdict = Outcome::fail("T1: bracket", "G1 > 0 at the right end of the bracket not proved near t = " + rho_lo.mid_str(20));
     return r;
   }
   if (!lt(r.t_lo, r.t_hi)) {
-    r.verdict = Verdict::fail("T1: bracket", "the corners' roots are out of order (different branches of T1?)");
+    r.verdict = Outcome::fail("T1: bracket", "the corners' roots are out of order (different branches of T1?)");
     return r;
   }
   if (!lt(th_max, r.t_lo)) {  // the monotonicity in theta needs t > theta
-    r.verdict = Verdict::fail("T1: bracket", "the bracket does not start after the start phases");
+    r.verdict = Outcome::fail("T1: bracket", "the bracket does not start after the start phases");
     return r;
   }
   r.enclosure = Ball::hull(r.t_lo, r.t_hi);
   // 4. simple root: dG1/dt > 0 on the bracket at the min corner.
   {
     MinusVelocity mv(m, th_min, m.b_lo);
-    Verdict v = prove_negative(mv, r.t_lo, r.t_hi, budget, "T1: simple root (dG1/dt > 0)", &r.stats);
+    Outcome v = prove_negative(mv, r.t_lo, r.t_hi, budget, "T1: simple root (dG1/dt > 0)", &r.stats);
     if (!v) {
       v.refuted = false;  // the bracket is ours: dG1/dt <= 0 somewhere in it refutes nothing about T1
       r.verdict = v;
@@ -234,12 +234,12 @@ T1Proof certify_T1(const Model& m, const StartSet& set, Budget& budget, const T1
     }
   }
   // 1-2. departure, and no earlier root.
-  if (Verdict v = certify_no_contact(m, set, r.t_lo, budget, opt.skip, &r.stats); !v) {
+  if (Outcome v = certify_no_contact(m, set, r.t_lo, budget, opt.skip, &r.stats); !v) {
     r.verdict = v;
     return r;
   }
   r.v1_at_max = dG1_dt(m, th_max, r.t_lo, m.b_hi);
-  r.verdict = Verdict::ok();
+  r.verdict = Outcome::ok();
   return r;
 }
 

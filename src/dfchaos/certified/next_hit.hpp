@@ -33,9 +33,9 @@
 #include <vector>
 
 #include "dfchaos/certified/ball.hpp"
-#include "dfchaos/certified/model.hpp"
+#include "dfchaos/certified/parameters.hpp"
 #include "dfchaos/certified/negativity.hpp"
-#include "dfchaos/certified/verdict.hpp"
+#include "dfchaos/certified/outcome.hpp"
 
 namespace dfchaos::certified {
 
@@ -56,39 +56,39 @@ struct StartSet {
   /// \f$[lo, hi]\f$ with exact ball ends (their midpoints are used; radii must be 0).
   static StartSet balls(const Ball& lo, const Ball& hi);
   /// \f$[t_2, hi]\f$ at a point box (the neighbourhood of Theorem 2).
-  static StartSet from_t2(const Model& m, double hi);
+  static StartSet from_t2(const ParameterBalls& m, double hi);
   /// \f$\{t_2(b)\}\f$, one start per b of the box (Section 8 as a function of b).
   static StartSet at_t2();
 
   /// \f$\theta\f$ at the min corner (with \f$b_{lo}\f$): where \f$G_1, \partial_t G_1, G_2\f$ are smallest.
-  Ball theta_min(const Model& m) const;
+  Ball theta_min(const ParameterBalls& m) const;
   /// \f$\theta\f$ at the max corner (with \f$b_{hi}\f$).
-  Ball theta_max(const Model& m) const;
+  Ball theta_max(const ParameterBalls& m) const;
   /// All start phases (a ball).
-  Ball hull(const Model& m) const;
+  Ball hull(const ParameterBalls& m) const;
   /// Proves \f$t_2(b) \le \theta \le t_3(b)\f$ for every start and every b (needed for the monotonicity).
-  Verdict valid(const Model& m) const;
+  Outcome valid(const ParameterBalls& m) const;
   /// e.g. "theta in [3.16, 3.17]" or "theta = t2(b)".
   std::string describe() const;
 };
 
 /// \f$G_1(\theta, t; b)\f$ of Eq. (11) (a fixed by the model): model::G1 in ball arithmetic.
-Ball G1(const Model& m, const Ball& theta, const Ball& t, const Ball& b);
+Ball G1(const ParameterBalls& m, const Ball& theta, const Ball& t, const Ball& b);
 /// \f$\partial_t G_1 = 2b(t-\theta) - a\cos t + a\cos\theta\f$: the velocity of the mass (model::dG1_dt).
-Ball dG1_dt(const Model& m, const Ball& theta, const Ball& t, const Ball& b);
+Ball dG1_dt(const ParameterBalls& m, const Ball& theta, const Ball& t, const Ball& b);
 
 /// The departure step: \f$G_1(\theta,\theta+s;b) < 0\f$ for \f$s \in (0, s_0]\f$, every start of `set`
 /// and every b of the box. `s0` must be in (0, 1].
-Verdict prove_departure(const Model& m, const StartSet& set, const Ball& s0);
+Outcome prove_departure(const ParameterBalls& m, const StartSet& set, const Ball& s0);
 
 /// No contact before \f$t_{end}\f$: \f$G_1(\theta, t; b) < 0\f$ for \f$t \in (\theta, t_{end}]\f$, every start and b
 /// (steps 1 and 2 of the file comment: departure over the set, then prove_negative() at the max
 /// corner), except on the `skip` windows of t (sorted, disjoint), which the caller proves otherwise.
-Verdict certify_no_contact(const Model& m, const StartSet& set, const Ball& t_end, Budget& budget,
+Outcome certify_no_contact(const ParameterBalls& m, const StartSet& set, const Ball& t_end, Budget& budget,
                            const std::vector<std::pair<Ball, Ball>>& skip = {}, NegativityStats* stats = nullptr);
 
 /// Options of certify_T1().
-struct T1Options {
+struct FirstHitOptions {
   /// Windows \f$[w_{lo}, w_{hi}]\f$ of t excluded from the "no earlier root" check at the max corner:
   /// the caller proves \f$G_1 < 0\f$ there by another argument (a tangency, Lemma 2).
   std::vector<std::pair<Ball, Ball>> skip;
@@ -98,8 +98,8 @@ struct T1Options {
 };
 
 /// The certified next hit over a start set and a parameter box.
-struct T1Proof {
-  Verdict verdict;        ///< proved: for every start and b, the first root of \f$G_1\f$ is simple and in [t_lo, t_hi]
+struct FirstHitProof {
+  Outcome verdict;        ///< proved: for every start and b, the first root of \f$G_1\f$ is simple and in [t_lo, t_hi]
   Ball t_lo;              ///< left end of the bracket (exact)
   Ball t_hi;              ///< right end of the bracket (exact)
   Ball enclosure;         ///< \f$[t_{lo}, t_{hi}]\f$
@@ -108,10 +108,10 @@ struct T1Proof {
 };
 
 /// \f$T_1\f$ over `set` (Eq. 11), with the four steps of the file comment. Bounded by `budget`.
-T1Proof certify_T1(const Model& m, const StartSet& set, Budget& budget, const T1Options& opt = {});
+FirstHitProof certify_T1(const ParameterBalls& m, const StartSet& set, Budget& budget, const FirstHitOptions& opt = {});
 
 /// Refines a simple root of \f$G_1(\theta, \cdot; b)\f$ near `guess` by Newton's method on the
 /// midpoints (not a proof; the caller verifies a bracket). Returns NaN-free exact ball or the guess.
-Ball newton_G1(const Model& m, const Ball& theta, const Ball& b, const Ball& guess);
+Ball newton_G1(const ParameterBalls& m, const Ball& theta, const Ball& b, const Ball& guess);
 
 }  // namespace dfchaos::certified

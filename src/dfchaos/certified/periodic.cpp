@@ -23,7 +23,7 @@ struct Mat {
 };
 
 /// Floating inverse branch of T on a certified segment: the x between the ends with T(x) = y.
-double inverse_branch(const ParamBox& box, const SegmentProof& J, double y) {
+double inverse_branch(const ParameterBox& box, const SegmentProof& J, double y) {
   // T(theta_top) >= 3pi/2 >= y >= t2 = T(theta_t2); a step the oracle cannot take ends the search
   const auto [a, c] = bisect(
       [&](double mid) -> std::optional<bool> {
@@ -41,11 +41,11 @@ struct PointEval {
   std::string why;
 };
 
-PointEval eval_T(const Model& m, const Ball& lo, const Ball& hi) {
+PointEval eval_T(const ParameterBalls& m, const Ball& lo, const Ball& hi) {
   PointEval e;
   Budget budget;
   const StartSet set = StartSet::balls(lo, hi);
-  const TProof t = certify_T(m, set, budget);
+  const MapStepProof t = certify_T(m, set, budget);
   if (!t.verdict) {
     e.why = t.verdict.describe();
     return e;
@@ -66,16 +66,16 @@ PeriodicProof prove_periodic(const CoveringProof& cov, int period, const Periodi
   PeriodicProof r;
   r.period = period;
   r.word = std::string(static_cast<std::size_t>(std::max(period - 1, 0)), '0') + "1";
-  auto finish = [&](Verdict v) {
+  auto finish = [&](Outcome v) {
     r.verdict = std::move(v);
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return r;
   };
-  if (period < 1 || period > 64) return finish(Verdict::fail("periodic: period", "1 <= m <= 64"));
-  if (!cov.verdict) return finish(Verdict::fail("periodic: needs the covering", cov.verdict.describe()));
-  if (!cov.box.is_point()) return finish(Verdict::fail("periodic: point parameters", "orbits are enclosed at a parameter point"));
+  if (period < 1 || period > 64) return finish(Outcome::fail("periodic: period", "1 <= m <= 64"));
+  if (!cov.verdict) return finish(Outcome::fail("periodic: needs the covering", cov.verdict.describe()));
+  if (!cov.box.is_point()) return finish(Outcome::fail("periodic: point parameters", "orbits are enclosed at a parameter point"));
   r.existence = true;
-  const Model m(cov.box);
+  const ParameterBalls m(cov.box);
   const SegmentProof* J[2] = {&cov.J0, &cov.J1};
   const std::size_t n = static_cast<std::size_t>(period);
   auto seg = [&](std::size_t j) { return J[r.word[j] == '1' ? 1 : 0]; };
@@ -98,7 +98,7 @@ PeriodicProof prove_periodic(const CoveringProof& cov, int period, const Periodi
   for (int step = 0; step <= opt.newton_steps; ++step) {
     for (std::size_t j = 0; j < n; ++j) {
       ev[j] = eval_T(m, xh[j], xh[j]);
-      if (!ev[j].ok) return finish(Verdict::fail("periodic: T at the orbit", "x_" + std::to_string(j) + " = " + xh[j].mid_str(20) + ": " + ev[j].why));
+      if (!ev[j].ok) return finish(Outcome::fail("periodic: T at the orbit", "x_" + std::to_string(j) + " = " + xh[j].mid_str(20) + ": " + ev[j].why));
     }
     if (step == opt.newton_steps) break;
     // Solve d_j D_j - D_{j+1} = F_j: D_j = (F_j + D_{j+1}) / d_j, closing the cycle for D_0.
@@ -126,11 +126,11 @@ PeriodicProof prove_periodic(const CoveringProof& cov, int period, const Periodi
   for (std::size_t j = 0; j < n; ++j) {
     X[j] = Ball::hull(xh[j] - rad, xh[j] + rad);
     const PointEval e = eval_T(m, X[j].lower_ball(), X[j].upper_ball());
-    if (!e.ok) return finish(Verdict::fail("periodic: T smooth on the box", "X_" + std::to_string(j) + ": " + e.why));
+    if (!e.ok) return finish(Outcome::fail("periodic: T smooth on the box", "X_" + std::to_string(j) + ": " + e.why));
     dX[j] = e.dT;
     // Inside the right segment.
     if (!le(Ball(seg(j)->lo), X[j]) || !le(X[j], Ball(seg(j)->hi)))
-      return finish(Verdict::fail("periodic: itinerary", "X_" + std::to_string(j) + " not inside J" + r.word[j]));
+      return finish(Outcome::fail("periodic: itinerary", "X_" + std::to_string(j) + " not inside J" + r.word[j]));
   }
   const long nn = static_cast<long>(n);
   const long prec = precision();
@@ -147,7 +147,7 @@ PeriodicProof prove_periodic(const CoveringProof& cov, int period, const Periodi
     arb_sub_ui(Jm.at(0, 0), Jm.at(0, 0), 1, prec);
     arb_sub_ui(JX.at(0, 0), JX.at(0, 0), 1, prec);
   }
-  if (!arb_mat_approx_inv(C.a, Jm.a, prec)) return finish(Verdict::fail("periodic: Krawczyk", "singular Jacobian"));
+  if (!arb_mat_approx_inv(C.a, Jm.a, prec)) return finish(Outcome::fail("periodic: Krawczyk", "singular Jacobian"));
   arb_mat_get_mid(C.a, C.a);
   arb_mat_mul(CJ.a, C.a, JX.a, prec);
   arb_mat_one(Id.a);
@@ -166,7 +166,7 @@ PeriodicProof prove_periodic(const CoveringProof& cov, int period, const Periodi
     K[i] = k;
     if (!(lt(X[i].lower_ball(), k) && lt(k, X[i].upper_ball()))) inside = false;
   }
-  if (!inside) return finish(Verdict::fail("periodic: Krawczyk", "K(X) not inside the interior of X"));
+  if (!inside) return finish(Outcome::fail("periodic: Krawczyk", "K(X) not inside the interior of X"));
   r.orbit = K;
   Ball logm(0.0);
   for (std::size_t j = 0; j < n; ++j) {
@@ -175,7 +175,7 @@ PeriodicProof prove_periodic(const CoveringProof& cov, int period, const Periodi
     logm = logm + l;
   }
   r.log_multiplier = logm;
-  return finish(Verdict::ok());
+  return finish(Outcome::ok());
 }
 
 }  // namespace dfchaos::certified

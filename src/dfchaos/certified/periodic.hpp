@@ -35,7 +35,7 @@ struct PeriodicOptions {
 
 /// A periodic orbit of T with itinerary \f$(0^{m-1}1)^\infty\f$.
 struct PeriodicProof {
-  Verdict verdict;               ///< proved: Krawczyk encloses a unique orbit in the boxes, each inside its J
+  Outcome verdict;               ///< proved: Krawczyk encloses a unique orbit in the boxes, each inside its J
   bool existence = false;        ///< the Section 6 argument applies (the covering is certified)
   int period = 0;                ///< m
   std::string word;              ///< one period of the itinerary, e.g. "0001"

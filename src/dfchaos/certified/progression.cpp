@@ -10,7 +10,7 @@
 
 namespace dfchaos::certified {
 
-Ball G2(const Model& m, const Ball& theta, const Ball& theta1, const Ball& t, const Ball& b, const Ball& q) {
+Ball G2(const ParameterBalls& m, const Ball& theta, const Ball& theta1, const Ball& t, const Ball& b, const Ball& q) {
   return model::G2(m.a, b, q, theta, theta1, t);
 }
 
@@ -19,7 +19,7 @@ namespace {
 /// \f$t \mapsto \pm G_2(\theta, \theta_1, t; b, q)\f$ at fixed corner values.
 class Velocity final : public NegativityTarget {
  public:
-  Velocity(const Model& m, const Ball& theta, const Ball& theta1, const Ball& b, const Ball& q, double sign)
+  Velocity(const ParameterBalls& m, const Ball& theta, const Ball& theta1, const Ball& b, const Ball& q, double sign)
       : m_(m), sign_(sign), two_c_(model::two_c(b, q)), base_(model::G2_constant(m.a, b, two_c_, theta, theta1)) {}
   Ball value(const Ball& t) const override { return sign_ * model::G2_shifted(m_.a, two_c_, base_, t); }
   Ball slope(const Ball& t) const override { return sign_ * model::forcing(m_.a, two_c_, t); }
@@ -27,7 +27,7 @@ class Velocity final : public NegativityTarget {
   std::string variable() const override { return "t"; }
 
  private:
-  const Model& m_;
+  const ParameterBalls& m_;
   double sign_;
   Ball two_c_, base_;
 };
@@ -35,14 +35,14 @@ class Velocity final : public NegativityTarget {
 /// \f$t \mapsto a\sin t + 2b - q\f$ (the slope of G2 in t).
 class Acceleration final : public NegativityTarget {
  public:
-  Acceleration(const Model& m, const Ball& b, const Ball& q) : m_(m), two_c_(model::two_c(b, q)) {}
+  Acceleration(const ParameterBalls& m, const Ball& b, const Ball& q) : m_(m), two_c_(model::two_c(b, q)) {}
   Ball value(const Ball& t) const override { return model::forcing(m_.a, two_c_, t); }
   Ball slope(const Ball& t) const override { return m_.a * cos(t); }
   Ball curvature(const Ball& t) const override { return -(m_.a * sin(t)); }
   std::string variable() const override { return "t"; }
 
  private:
-  const Model& m_;
+  const ParameterBalls& m_;
   Ball two_c_;
 };
 
@@ -65,10 +65,10 @@ Ball delta_for(const Ball& x) {
 
 }  // namespace
 
-Theta2Proof certify_theta2(const Model& m, const StartSet& set, const T1Proof& t1, Budget& budget) {
+Theta2Proof certify_theta2(const ParameterBalls& m, const StartSet& set, const FirstHitProof& t1, Budget& budget) {
   Theta2Proof r;
   if (!t1.verdict) {
-    r.verdict = Verdict::fail("theta2: needs T1", "T1 not proved");
+    r.verdict = Outcome::fail("theta2: needs T1", "T1 not proved");
     return r;
   }
   const Ball th_min = set.theta_min(m), th_max = set.theta_max(m);
@@ -78,7 +78,7 @@ Theta2Proof certify_theta2(const Model& m, const StartSet& set, const T1Proof& t
   double guess_min = oracle::theta2(a, m.box().b_lo, m.box().q_hi, th_min.mid());
   double guess_max = oracle::theta2(a, m.box().b_hi, m.box().q_lo, th_max.mid());
   if (std::isnan(guess_min) || std::isnan(guess_max)) {
-    r.verdict = Verdict::fail("theta2: guess", "the floating-point layer gave no theta2 at the corners");
+    r.verdict = Outcome::fail("theta2: guess", "the floating-point layer gave no theta2 at the corners");
     return r;
   }
   const Ball rho_min = newton_velocity(gmin, Ball(guess_min));
@@ -90,7 +90,7 @@ Theta2Proof certify_theta2(const Model& m, const StartSet& set, const T1Proof& t
     ok = gmin.value(r.u_lo).is_positive();
   }
   if (!ok) {
-    r.verdict = Verdict::fail("theta2: bracket", "G2 > 0 at the left end not proved near t = " + rho_min.mid_str(20));
+    r.verdict = Outcome::fail("theta2: bracket", "G2 > 0 at the left end not proved near t = " + rho_min.mid_str(20));
     return r;
   }
   ok = false;
@@ -100,41 +100,41 @@ Theta2Proof certify_theta2(const Model& m, const StartSet& set, const T1Proof& t
     ok = gmax.value(r.u_hi).is_negative();
   }
   if (!ok) {
-    r.verdict = Verdict::fail("theta2: bracket", "G2 < 0 at the right end not proved near t = " + rho_max.mid_str(20));
+    r.verdict = Outcome::fail("theta2: bracket", "G2 < 0 at the right end not proved near t = " + rho_max.mid_str(20));
     return r;
   }
   if (!lt(t1.t_hi, r.u_lo)) {
-    r.verdict = Verdict::fail("theta2: bracket", "the theta2 bracket does not start after the T1 enclosure");
+    r.verdict = Outcome::fail("theta2: bracket", "the theta2 bracket does not start after the T1 enclosure");
     return r;
   }
   if (!lt(r.u_lo, r.u_hi)) {
-    r.verdict = Verdict::fail("theta2: bracket", "the corners' stops are out of order");
+    r.verdict = Outcome::fail("theta2: bracket", "the corners' stops are out of order");
     return r;
   }
   r.enclosure = Ball::hull(r.u_lo, r.u_hi);
   // G2 > 0 from the impact to u_lo: the first zero is not earlier.
   const Velocity minus_gmin(m, th_min, t1.t_lo, m.b_lo, m.q_hi, -1.0);
   // (Failures of the corner functions refute nothing: they mix the corners of the set.)
-  if (Verdict v = prove_negative(minus_gmin, t1.t_lo, r.u_lo, budget, "theta2: no earlier stop", &r.stats); !v) {
+  if (Outcome v = prove_negative(minus_gmin, t1.t_lo, r.u_lo, budget, "theta2: no earlier stop", &r.stats); !v) {
     v.refuted = false;
     r.verdict = v;
     return r;
   }
   // dG2/dt < 0 on the bracket: a simple zero.
   const Acceleration acc(m, m.b_hi, m.q_lo);
-  if (Verdict v = prove_negative(acc, r.u_lo, r.u_hi, budget, "theta2: simple zero (F - q < 0)", &r.stats); !v) {
+  if (Outcome v = prove_negative(acc, r.u_lo, r.u_hi, budget, "theta2: simple zero (F - q < 0)", &r.stats); !v) {
     v.refuted = false;
     r.verdict = v;
     return r;
   }
-  r.verdict = Verdict::ok();
+  r.verdict = Outcome::ok();
   return r;
 }
 
-StopArcProof certify_stop_arc(const Model& m, const StartSet& set, const T1Proof& t1, Budget& budget) {
+StopArcProof certify_stop_arc(const ParameterBalls& m, const StartSet& set, const FirstHitProof& t1, Budget& budget) {
   StopArcProof r;
   if (!t1.verdict) {
-    r.verdict = Verdict::fail("stop arc: needs T1", "T1 not proved");
+    r.verdict = Outcome::fail("stop arc: needs T1", "T1 not proved");
     return r;
   }
   const Ball th_min = set.theta_min(m), th_max = set.theta_max(m);
@@ -142,7 +142,7 @@ StopArcProof certify_stop_arc(const Model& m, const StartSet& set, const T1Proof
   const Velocity gmax(m, th_max, t1.t_hi, m.b_hi, m.q_lo, 1.0);
   const double guess = oracle::theta2(m.box().a, m.box().b_hi, m.box().q_lo, th_max.mid());
   if (std::isnan(guess)) {
-    r.verdict = Verdict::fail("stop arc: guess", "the floating-point layer gave no theta2");
+    r.verdict = Outcome::fail("stop arc: guess", "the floating-point layer gave no theta2");
     return r;
   }
   const Ball rho = newton_velocity(gmax, Ball(guess));
@@ -153,14 +153,14 @@ StopArcProof certify_stop_arc(const Model& m, const StartSet& set, const T1Proof
     ok = gmax.value(r.tau).is_negative() && lt(t1.t_hi, r.tau);
   }
   if (!ok) {
-    r.verdict = Verdict::fail("stop arc: G2 < 0", "no certified negative velocity after the impact near t = " + rho.mid_str(17));
+    r.verdict = Outcome::fail("stop arc: G2 < 0", "no certified negative velocity after the impact near t = " + rho.mid_str(17));
     return r;
   }
   r.k = static_cast<long long>(std::floor((r.tau.mid() - m.t3.mid()) / (2 * M_PI)));
   const Ball shift = Ball(static_cast<double>(r.k)) * m.two_pi;
   const Ball A = m.t3 + shift, E = m.t2 + shift + m.two_pi;
   if (!lt(r.tau, E)) {
-    r.verdict = Verdict::fail("stop arc: end", "the velocity is not proved negative before t2 of the arc");
+    r.verdict = Outcome::fail("stop arc: end", "the velocity is not proved negative before t2 of the arc");
     return r;
   }
   if (le(A, t1.t_lo)) {
@@ -168,11 +168,11 @@ StopArcProof certify_stop_arc(const Model& m, const StartSet& set, const T1Proof
   } else {
     const Ball A_up = A.upper_ball();
     if (!lt(t1.t_lo, A_up) || !lt(A_up, r.tau)) {
-      r.verdict = Verdict::fail("stop arc: start", "t3 of the arc not between the impact and the stop");
+      r.verdict = Outcome::fail("stop arc: start", "t3 of the arc not between the impact and the stop");
       return r;
     }
     const Velocity minus_gmin(m, th_min, t1.t_lo, m.b_lo, m.q_hi, -1.0);
-    if (Verdict v = prove_negative(minus_gmin, t1.t_lo, A_up, budget, "stop arc: no stop before t3", &r.stats); !v) {
+    if (Outcome v = prove_negative(minus_gmin, t1.t_lo, A_up, budget, "stop arc: no stop before t3", &r.stats); !v) {
       v.refuted = false;
       r.verdict = v;
       return r;
@@ -180,7 +180,7 @@ StopArcProof certify_stop_arc(const Model& m, const StartSet& set, const T1Proof
     r.from = A;
   }
   r.needs_lemma1 = !le(m.t1 + shift + m.two_pi, r.from);
-  r.verdict = Verdict::ok();
+  r.verdict = Outcome::ok();
   return r;
 }
 
@@ -193,16 +193,16 @@ Ball lemma1_velocity_at_t2(const Ball& a, const Ball& b, const Ball& q) {
 namespace {
 
 /// Refines t4 in [t1, t2] for a point box by bisection on the sign of u (decreasing there).
-Ball enclose_t4(const Model& m) {
+Ball enclose_t4(const ParameterBalls& m) {
   auto u = [&](const Ball& t) { return model::progression_velocity_from_rest(m.a, m.two_c, m.t0, t); };
   return enclose_sign_change(u, m.t1.lower_ball(), m.t2.upper_ball(), 200);
 }
 
 }  // namespace
 
-Lemma1Proof certify_lemma1(const Model& m, int max_pieces) {
+Lemma1Proof certify_lemma1(const ParameterBalls& m, int max_pieces) {
   Lemma1Proof r;
-  if (Verdict v = m.admissible(); !v) {
+  if (Outcome v = m.admissible(); !v) {
     r.verdict = v;
     return r;
   }
@@ -213,7 +213,7 @@ Lemma1Proof certify_lemma1(const Model& m, int max_pieces) {
     const Piece p = stack.back();
     stack.pop_back();
     if (++r.pieces > max_pieces) {
-      r.verdict = Verdict::fail("Lemma 1: u(t2) < 0", "more than " + std::to_string(max_pieces) + " sub-boxes needed");
+      r.verdict = Outcome::fail("Lemma 1: u(t2) < 0", "more than " + std::to_string(max_pieces) + " sub-boxes needed");
       return r;
     }
     const Ball u = lemma1_velocity_at_t2(m.a, Ball::interval(p.b_lo, p.b_hi), Ball::interval(p.q_lo, p.q_hi));
@@ -221,7 +221,7 @@ Lemma1Proof certify_lemma1(const Model& m, int max_pieces) {
     first = false;
     if (u.is_negative()) continue;
     if (u.is_positive()) {
-      r.verdict = Verdict::refute("Lemma 1: u(t2) < 0 (Eq. 8)", "u(t2) = " + u.str(8) + " > 0 at b in [" + format_double(p.b_lo) + ", " +
+      r.verdict = Outcome::refute("Lemma 1: u(t2) < 0 (Eq. 8)", "u(t2) = " + u.str(8) + " > 0 at b in [" + format_double(p.b_lo) + ", " +
                                                                        format_double(p.b_hi) + "], q in [" + format_double(p.q_lo) + ", " + format_double(p.q_hi) + "]");
       return r;
     }
@@ -229,7 +229,7 @@ Lemma1Proof certify_lemma1(const Model& m, int max_pieces) {
     const bool split_b = (p.b_hi - p.b_lo) >= (p.q_hi - p.q_lo) * 0.25 && bm > p.b_lo && bm < p.b_hi;
     const bool split_q = !split_b && qm > p.q_lo && qm < p.q_hi;
     if (!split_b && !split_q) {
-      r.verdict = Verdict::fail("Lemma 1: u(t2) < 0 (Eq. 8)", "undecided at b = " + format_double(p.b_lo) + ", q = " + format_double(p.q_lo) + ": u(t2) = " + u.str(8));
+      r.verdict = Outcome::fail("Lemma 1: u(t2) < 0 (Eq. 8)", "undecided at b = " + format_double(p.b_lo) + ", q = " + format_double(p.q_lo) + ": u(t2) = " + u.str(8));
       return r;
     }
     if (split_b) {
@@ -241,7 +241,7 @@ Lemma1Proof certify_lemma1(const Model& m, int max_pieces) {
     }
   }
   r.t4 = m.box().is_point() ? enclose_t4(m) : Ball::hull(m.t1, m.t2);
-  r.verdict = Verdict::ok();
+  r.verdict = Outcome::ok();
   return r;
 }
 
@@ -250,7 +250,7 @@ Lemma1Bound lemma1_b0_lower_bound(double a, double q, double resolution, int max
   const Ball A(a), Q(q);
   auto u_at = [&](double b) { return lemma1_velocity_at_t2(A, Ball(b), Q); };
   if (!u_at(0.0).is_negative()) {
-    r.verdict = Verdict::fail("Lemma 1: b0(q)", "u(t2) < 0 not proved at b = 0 (needs q > a sin(vartheta0), Eq. 9)");
+    r.verdict = Outcome::fail("Lemma 1: b0(q)", "u(t2) < 0 not proved at b = 0 (needs q > a sin(vartheta0), Eq. 9)");
     return r;
   }
   // Floating estimate of the first sign change (bisection on the certified sign where decidable).
@@ -290,11 +290,11 @@ Lemma1Bound lemma1_b0_lower_bound(double a, double q, double resolution, int max
     if (ok) {
       r.b_low = b_low;
       r.pieces = pieces;
-      r.verdict = Verdict::ok();
+      r.verdict = Outcome::ok();
       return r;
     }
   }
-  r.verdict = Verdict::fail("Lemma 1: b0(q)", "no b_low proved within 20 attempts below " + format_double(r.b_float));
+  r.verdict = Outcome::fail("Lemma 1: b0(q)", "no b_low proved within 20 attempts below " + format_double(r.b_float));
   return r;
 }
 

@@ -23,18 +23,18 @@
 #pragma once
 
 #include "dfchaos/certified/ball.hpp"
-#include "dfchaos/certified/model.hpp"
+#include "dfchaos/certified/parameters.hpp"
 #include "dfchaos/certified/next_hit.hpp"
-#include "dfchaos/certified/verdict.hpp"
+#include "dfchaos/certified/outcome.hpp"
 
 namespace dfchaos::certified {
 
 /// \f$G_2(\theta, \theta_1, t; b, q)\f$ of Eq. (17): model::G2 in ball arithmetic.
-Ball G2(const Model& m, const Ball& theta, const Ball& theta1, const Ball& t, const Ball& b, const Ball& q);
+Ball G2(const ParameterBalls& m, const Ball& theta, const Ball& theta1, const Ball& t, const Ball& b, const Ball& q);
 
 /// The certified end of the first progression.
 struct Theta2Proof {
-  Verdict verdict;        ///< proved: for every point, \f$\theta_2\f$ is the first zero after \f$\theta_1\f$, simple, in [u_lo, u_hi]
+  Outcome verdict;        ///< proved: for every point, \f$\theta_2\f$ is the first zero after \f$\theta_1\f$, simple, in [u_lo, u_hi]
   Ball u_lo;              ///< left end of the bracket (exact)
   Ball u_hi;              ///< right end of the bracket (exact)
   Ball enclosure;         ///< \f$[u_{lo}, u_{hi}]\f$
@@ -42,7 +42,7 @@ struct Theta2Proof {
 };
 
 /// \f$\theta_2\f$ over `set` given the certified \f$T_1\f$ (which must be proved).
-Theta2Proof certify_theta2(const Model& m, const StartSet& set, const T1Proof& t1, Budget& budget);
+Theta2Proof certify_theta2(const ParameterBalls& m, const StartSet& set, const FirstHitProof& t1, Budget& budget);
 
 /// The weaker statement that suffices where T is constant: the first zero of \f$G_2\f$ after
 /// \f$\theta_1\f$ lies in the stop arc \f$R_k = [t_3 + 2\pi k, t_2 + 2\pi(k+1))\f$, for every point of the set.
@@ -51,7 +51,7 @@ Theta2Proof certify_theta2(const Model& m, const StartSet& set, const T1Proof& t
 /// wherever in \f$R_k\f$ the progression stops (at most tangentially at \f$t_0\f$), the mass waits for
 /// \f$t_2\f$, or for \f$t_0\f$ and then (Lemma 1) for \f$t_2\f$: T = t2.
 struct StopArcProof {
-  Verdict verdict;        ///< proved: the first stop lies in [from, tau] inside R_k
+  Outcome verdict;        ///< proved: the first stop lies in [from, tau] inside R_k
   long long k = 0;        ///< the arc
   Ball from;              ///< the first stop lies after this
   Ball tau;               ///< and before this
@@ -60,7 +60,7 @@ struct StopArcProof {
 };
 
 /// Proves that the first progression ends in a stop arc (see StopArcProof).
-StopArcProof certify_stop_arc(const Model& m, const StartSet& set, const T1Proof& t1, Budget& budget);
+StopArcProof certify_stop_arc(const ParameterBalls& m, const StartSet& set, const FirstHitProof& t1, Budget& budget);
 
 /// \f$u(t_2) = -a(\cos t_2 - \cos t_0) + (2b - q)(t_2 - t_0)\f$ (Eq. 8) over balls of b and q
 /// (b = 0 allowed; needs \f$|q - 2b| < a\f$, \f$2b < a\f$).
@@ -68,18 +68,18 @@ Ball lemma1_velocity_at_t2(const Ball& a, const Ball& b, const Ball& q);
 
 /// Lemma 1 over a parameter box.
 struct Lemma1Proof {
-  Verdict verdict;   ///< proved: for every parameter of the box the progression from rest at t0 stops at t4 in (t1, t2)
+  Outcome verdict;   ///< proved: for every parameter of the box the progression from rest at t0 stops at t4 in (t1, t2)
   Ball u_at_t2;      ///< enclosure of Eq. (8) over the box (hull of the pieces)
   Ball t4;           ///< enclosure of the stop (point boxes only; else the whole of [t1, t2])
   int pieces = 0;    ///< sub-boxes used
 };
 
 /// Proves Lemma 1's conclusion over the box (sub-boxes split in b and q, at most `max_pieces`).
-Lemma1Proof certify_lemma1(const Model& m, int max_pieces = 4096);
+Lemma1Proof certify_lemma1(const ParameterBalls& m, int max_pieces = 4096);
 
 /// A certified lower bound of \f$b_0(q)\f$: Lemma 1 holds for every \f$b \in (0, b_{low}]\f$ at (a, q).
 struct Lemma1Bound {
-  Verdict verdict;         ///< proved for the whole interval (0, b_low]
+  Outcome verdict;         ///< proved for the whole interval (0, b_low]
   double b_low = 0;        ///< the bound (a double)
   double b_float = 0;      ///< floating-point estimate of the first b with u(t2) = 0 (not certified)
   int pieces = 0;          ///< b-balls used in the proof

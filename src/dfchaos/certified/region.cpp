@@ -7,7 +7,7 @@
 
 namespace dfchaos::certified {
 
-CoveringProof prove_covering_split(const ParamBox& box, const std::vector<Candidate>& c, int depth, int& sub_boxes,
+CoveringProof prove_covering_split(const ParameterBox& box, const std::vector<Candidate>& c, int depth, int& sub_boxes,
                                    const CoveringOptions& opt) {
   CoveringProof p = prove_covering(box, c, opt);
   if (p.verdict) {
@@ -16,7 +16,7 @@ CoveringProof prove_covering_split(const ParamBox& box, const std::vector<Candid
   }
   const double mid = 0.5 * (box.b_lo + box.b_hi);
   if (depth <= 0 || !(mid > box.b_lo && mid < box.b_hi)) return p;
-  ParamBox left = box, right = box;
+  ParameterBox left = box, right = box;
   left.b_hi = mid;
   right.b_lo = mid;
   const int before = sub_boxes;
@@ -65,7 +65,7 @@ void tile_column(const RegionOptions& opt, ColumnState& st, long budget) {
   long used = 0;
   while (b < opt.b_hi && used < budget) {
     const double w = std::min(c * b * b / opt.a, opt.b_hi - b);
-    ParamBox box{opt.a, b, b + w, q_lo, q_hi};
+    ParameterBox box{opt.a, b, b + w, q_lo, q_hi};
     if (box.b_hi == box.b_lo) break;
     ++used;
     ++col.attempts;

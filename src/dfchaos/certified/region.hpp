@@ -1,7 +1,7 @@
 /// @file region.hpp
 /// @brief Theorem 1 over parameter boxes: tiles a band of the
 /// \f$(q/a, b/a)\f$ plane by boxes on each of which Lemma 4's covering is proved for *every*
-/// parameter of the box (prove_covering over a ParamBox: the same J0, J1 for the whole box).
+/// parameter of the box (prove_covering over a ParameterBox: the same J0, J1 for the whole box).
 ///
 /// The band is cut into q-columns; in each, boxes \f$[b, b + w] \times [q_{lo}, q_{hi}]\f$ march up in b
 /// with \f$w = c\,b^2/a\f$ (the scale at which \f$T_1\f$, of size \f$a/b\f$, moves by O(1) across the box),
@@ -77,7 +77,7 @@ RegionResult certify_region(const RegionOptions& opt);
 
 /// Lemma 4 over `box` with the candidates `c`, splitting the b-range into halves up to `depth`
 /// times on failure; `sub_boxes` receives the number of boxes proved.
-CoveringProof prove_covering_split(const ParamBox& box, const std::vector<Candidate>& c, int depth, int& sub_boxes,
+CoveringProof prove_covering_split(const ParameterBox& box, const std::vector<Candidate>& c, int depth, int& sub_boxes,
                                    const CoveringOptions& opt = {});
 
 }  // namespace dfchaos::certified

@@ -4,17 +4,17 @@
 
 namespace dfchaos::certified {
 
-const char* chain_name(Chain c) {
+const char* t_case_name(TCase c) {
   switch (c) {
-    case Chain::Free: return "free";
-    case Chain::Stop: return "stop";
-    case Chain::None: return "none";
+    case TCase::ScenarioAB: return "free";
+    case TCase::ScenarioBC: return "stop";
+    case TCase::Unproved: return "none";
   }
   return "none";
 }
 
-TProof certify_T(const Model& m, const StartSet& set, Budget& budget, const Lemma1Proof* lemma1) {
-  TProof r;
+MapStepProof certify_T(const ParameterBalls& m, const StartSet& set, Budget& budget, const Lemma1Proof* lemma1) {
+  MapStepProof r;
   r.t1 = certify_T1(m, set, budget);
   r.tests += r.t1.stats.tests;
   if (!r.t1.verdict) {
@@ -25,11 +25,11 @@ TProof certify_T(const Model& m, const StartSet& set, Budget& budget, const Lemm
   r.tests += r.theta2.stats.tests;
   // Where theta2 is not a proved simple zero, T may still be proved constant: the first stop lies
   // in a stop arc (certify_stop_arc).
-  auto try_stop_arc = [&](const Verdict& why) {
+  auto try_stop_arc = [&](const Outcome& why) {
     const StopArcProof s = certify_stop_arc(m, set, r.t1, budget);
     r.tests += s.stats.tests;
     if (!s.verdict) {
-      r.verdict = Verdict::fail(why.step, why.detail + "; stop-arc test: " + s.verdict.describe());
+      r.verdict = Outcome::fail(why.step, why.detail + "; stop-arc test: " + s.verdict.describe());
       return r;
     }
     if (s.needs_lemma1) {
@@ -39,28 +39,28 @@ TProof certify_T(const Model& m, const StartSet& set, Budget& budget, const Lemm
         lemma1 = &own;
       }
       if (!lemma1->verdict) {
-        r.verdict = Verdict::fail("T: stop until t0 needs Lemma 1", lemma1->verdict.describe());
+        r.verdict = Outcome::fail("T: stop until t0 needs Lemma 1", lemma1->verdict.describe());
         return r;
       }
       r.used_lemma1 = true;
     }
-    r.chain = Chain::Stop;
+    r.t_case = TCase::ScenarioBC;
     r.turn = s.k;
     r.theta2_phase = Ball::hull(s.from, s.tau) - Ball(static_cast<double>(s.k)) * m.two_pi;
     r.T = m.t2;
     r.constant_t2 = true;
-    r.verdict = Verdict::ok();
+    r.verdict = Outcome::ok();
     return r;
   };
   if (!r.theta2.verdict) return try_stop_arc(r.theta2.verdict);
   const Ball& lo = r.theta2.u_lo;
   const Ball& hi = r.theta2.u_hi;
-  // Free: [t1 + 2 pi k, t3 + 2 pi k).
+  // Scenarios A, B: [t1 + 2 pi k, t3 + 2 pi k).
   {
     const long long k = static_cast<long long>(std::floor((lo.mid() - m.t1.mid()) / (2 * M_PI)));
     const Ball shift = Ball(static_cast<double>(k)) * m.two_pi;
     if (le(m.t1 + shift, lo) && lt(hi, m.t3 + shift)) {
-      r.chain = Chain::Free;
+      r.t_case = TCase::ScenarioAB;
       r.turn = k;
       r.theta2_phase = r.theta2.enclosure - shift;
       if (lt(hi - shift, m.t2)) {
@@ -69,16 +69,16 @@ TProof certify_T(const Model& m, const StartSet& set, Budget& budget, const Lemm
       } else {
         r.T = max(r.theta2_phase, m.t2);
       }
-      r.verdict = Verdict::ok();
+      r.verdict = Outcome::ok();
       return r;
     }
   }
-  // Stop: [t3 + 2 pi k, t2 + 2 pi (k + 1)).
+  // Scenarios B, C: [t3 + 2 pi k, t2 + 2 pi (k + 1)).
   {
     const long long k = static_cast<long long>(std::floor((lo.mid() - m.t3.mid()) / (2 * M_PI)));
     const Ball shift = Ball(static_cast<double>(k)) * m.two_pi;
     if (le(m.t3 + shift, lo) && lt(hi, m.t2 + shift + m.two_pi)) {
-      r.chain = Chain::Stop;
+      r.t_case = TCase::ScenarioBC;
       r.turn = k;
       r.theta2_phase = r.theta2.enclosure - shift;
       // Lemma 1 is needed unless the whole enclosure lies in [t1, t2) of the next turn (scenario B).
@@ -89,23 +89,23 @@ TProof certify_T(const Model& m, const StartSet& set, Budget& budget, const Lemm
           lemma1 = &own;
         }
         if (!lemma1->verdict) {
-          r.verdict = Verdict::fail("T: stop until t0 needs Lemma 1", lemma1->verdict.describe());
+          r.verdict = Outcome::fail("T: stop until t0 needs Lemma 1", lemma1->verdict.describe());
           return r;
         }
         r.used_lemma1 = true;
       }
       r.T = m.t2;
       r.constant_t2 = true;
-      r.verdict = Verdict::ok();
+      r.verdict = Outcome::ok();
       return r;
     }
   }
-  return try_stop_arc(Verdict::fail("T: chain", "the phase of theta2, " + r.theta2.enclosure.str(12) +
+  return try_stop_arc(Outcome::fail("T: chain", "the phase of theta2, " + r.theta2.enclosure.str(12) +
                                                     ", is not inside one arc [t1, t3) or [t3, t2 + 2 pi) (T may jump at t3)"));
 }
 
-bool derivative_T(const Model& m, const StartSet& set, const TProof& t, Ball& dT) {
-  if (!t.verdict || t.chain != Chain::Free || !lt(m.t2, t.theta2_phase)) return false;
+bool derivative_T(const ParameterBalls& m, const StartSet& set, const MapStepProof& t, Ball& dT) {
+  if (!t.verdict || t.t_case != TCase::ScenarioAB || !lt(m.t2, t.theta2_phase)) return false;
   const Ball th = set.hull(m);
   const Ball& th1 = t.t1.enclosure;
   const Ball& th2 = t.theta2.enclosure;

@@ -4,11 +4,11 @@
 ///
 /// With \f$T_1\f$ (next_hit.hpp) and \f$\theta_2\f$ (progression.hpp) proved simple over the set, the
 /// phase of \f$\theta_2\f$ decides the chain (Section 3):
-///  - **Free**: \f$\theta_2 \in [t_1 + 2\pi k, t_3 + 2\pi k)\f$ for one k and every point. On
+///  - **Free** (TCase::ScenarioAB): \f$\theta_2 \in [t_1 + 2\pi k, t_3 + 2\pi k)\f$ for one k and every point. On
 ///    \f$[t_2, t_3)\f$ the mass flies at once (scenario A), \f$T = \theta_2 - 2\pi k\f$; on
 ///    \f$[t_1, t_2)\f$ it stops until \f$t_2\f$ (scenario B: there \f$0 < F < q\f$), \f$T = t_2\f$. So
 ///    \f$T = \max(\theta_2 - 2\pi k, t_2)\f$, continuous because \f$\theta_2\f$ is.
-///  - **Stop**: \f$\theta_2 \in [t_3 + 2\pi k, t_2 + 2\pi(k+1))\f$. The mass stops (\f$F \ge 0\f$, \f$F < q\f$
+///  - **Stop** (TCase::ScenarioBC): \f$\theta_2 \in [t_3 + 2\pi k, t_2 + 2\pi(k+1))\f$. The mass stops (\f$F \ge 0\f$, \f$F < q\f$
 ///    off \f$(t_0, t_1)\f$, and \f$\theta_2\f$ cannot fall in \f$(t_0, t_1)\f$ where \f$\partial_t G_2 > 0\f$);
 ///    it waits for \f$t_2\f$ (scenario B) or for \f$t_0\f$ and then progresses from rest, which by a
 ///    certified Lemma 1 stops in \f$(t_1, t_2)\f$ and waits for \f$t_2\f$ (scenario C). So \f$T \equiv t_2\f$,
@@ -21,43 +21,50 @@
 
 #include <string>
 
-#include "dfchaos/certified/model.hpp"
+#include "dfchaos/certified/parameters.hpp"
 #include "dfchaos/certified/next_hit.hpp"
 #include "dfchaos/certified/progression.hpp"
 
 namespace dfchaos::certified {
 
-/// How T is determined over the set.
-enum class Chain {
-  Free,  ///< \f$T = \max(\theta_2 \bmod 2\pi, t_2)\f$ (scenarios A and B)
-  Stop,  ///< \f$T \equiv t_2\f$ (scenarios B and C)
-  None   ///< not proved
+/// How T is determined over the set: which of the core's scenarios (return_map.hpp, Scenario) the
+/// steps from the set can follow, decided by where the first progression stops (\f$\theta_2\f$,
+/// Eq. 17). The printed names (t_case_name()) are "free", "stop" and "none".
+enum class TCase {
+  /// \f$\theta_2 \in [t_1, t_3)\f$ modulo \f$2\pi\f$: the mass flies at \f$\theta_2\f$ (scenario A) or
+  /// waits for \f$t_2\f$ (scenario B), so \f$T = \max(\theta_2 \bmod 2\pi, t_2)\f$. Printed "free".
+  ScenarioAB,
+  /// \f$\theta_2 \in [t_3, t_2 + 2\pi)\f$ modulo \f$2\pi\f$: the mass stops and waits for \f$t_2\f$
+  /// (scenario B) or progresses again from \f$t_0\f$ and stops in \f$(t_1, t_2)\f$ by Lemma 1
+  /// (scenario C), so \f$T \equiv t_2\f$. Printed "stop".
+  ScenarioBC,
+  Unproved  ///< neither was proved (T may jump at \f$t_3\f$ on the set). Printed "none".
 };
-const char* chain_name(Chain c);  ///< "free", "stop", "none"
+const char* t_case_name(TCase c);  ///< "free", "stop", "none"
 
 /// The certified T over a start set.
-struct TProof {
-  Verdict verdict;         ///< proved: T continuous on the set, in `T`
-  T1Proof t1;              ///< the next hit
+struct MapStepProof {
+  Outcome verdict;         ///< proved: T continuous on the set, in `T`
+  FirstHitProof t1;              ///< the next hit
   Theta2Proof theta2;      ///< the first progression's stop
-  Chain chain = Chain::None;  ///< which of the two cases
+  TCase t_case = TCase::Unproved;  ///< which of the two cases
   long long turn = 0;      ///< k of the case (phase of \f$\theta_2\f$ is \f$\theta_2 - 2\pi k\f$)
-  Ball theta2_phase;       ///< \f$\theta_2 - 2\pi k\f$ (Free: in \f$[t_1, t_3)\f$; Stop: in \f$[t_3, t_2 + 2\pi)\f$)
+  Ball theta2_phase;       ///< \f$\theta_2 - 2\pi k\f$ (ScenarioAB: in \f$[t_1, t_3)\f$; ScenarioBC: in \f$[t_3, t_2 + 2\pi)\f$)
   Ball T;                  ///< enclosure of T over the set (exactly the ball of \f$t_2\f$ when T ≡ t2)
   bool constant_t2 = false;  ///< T ≡ t2 on the whole set (proved)
-  bool used_lemma1 = false;  ///< the Stop case met [t3, t0]: Lemma 1 was needed and proved
+  bool used_lemma1 = false;  ///< the ScenarioBC case met [t3, t0]: Lemma 1 was needed and proved
   long tests = 0;          ///< interval tests of the negativity proofs
 };
 
 /// T over `set` (Lemma 3 with the general chain of Section 3). `lemma1` (optional): a proved
-/// Lemma 1 over the same box, used when the Stop case needs it (else it is proved here on demand).
-TProof certify_T(const Model& m, const StartSet& set, Budget& budget, const Lemma1Proof* lemma1 = nullptr);
+/// Lemma 1 over the same box, used when the ScenarioBC case needs it (else it is proved here on demand).
+MapStepProof certify_T(const ParameterBalls& m, const StartSet& set, Budget& budget, const Lemma1Proof* lemma1 = nullptr);
 
-/// Enclosure of \f$T'\f$ over a set where `t` proved the Free chain with the phase of \f$\theta_2\f$
+/// Enclosure of \f$T'\f$ over a set where `t` proved the case ScenarioAB with the phase of \f$\theta_2\f$
 /// strictly inside \f$(t_2, t_3)\f$ (scenario A, T smooth), by the implicit function theorem on
 /// Eqs. (11) and (17): \f$T_1' = F(\theta)(\theta_1 - \theta)/\partial_t G_1\f$,
 /// \f$T' = (F(\theta) - q T_1')/(F(\theta_2) - q)\f$. Returns false (and leaves `dT`) if the set is not
 /// of that kind.
-bool derivative_T(const Model& m, const StartSet& set, const TProof& t, Ball& dT);
+bool derivative_T(const ParameterBalls& m, const StartSet& set, const MapStepProof& t, Ball& dT);
 
 }  // namespace dfchaos::certified

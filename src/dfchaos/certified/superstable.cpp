@@ -16,18 +16,18 @@ namespace dfchaos::certified {
 namespace {
 
 /// The phase of a theta2 enclosure, reduced into [t1, t1 + 2 pi) by the turn of its midpoint.
-Ball phase_of(const Model& m, const Ball& x) {
+Ball phase_of(const ParameterBalls& m, const Ball& x) {
   const long long k = static_cast<long long>(std::floor((x.mid() - m.t1.mid()) / (2 * M_PI)));
   return x - Ball(static_cast<double>(k)) * m.two_pi;
 }
 
-TProof T_at_t2(const Model& m, Budget& budget) {
+MapStepProof T_at_t2(const ParameterBalls& m, Budget& budget) {
   return certify_T(m, StartSet::from_t2(m, m.t2.upper()), budget);
 }
 
 }  // namespace
 
-int superstable_condition(const Model& m, const TProof& t) {
+int superstable_condition(const ParameterBalls& m, const MapStepProof& t) {
   if (!t.theta2.verdict) return -1;
   const Ball P = phase_of(m, t.theta2.enclosure);
   if (lt(m.t1, P) && lt(P, m.t2)) return 21;
@@ -39,29 +39,29 @@ int superstable_condition(const Model& m, const TProof& t) {
 SuperstableProof prove_superstable(double a, double b, double q, double eps_try) {
   const auto start = std::chrono::steady_clock::now();
   SuperstableProof r;
-  auto finish = [&](Verdict v) {
+  auto finish = [&](Outcome v) {
     r.verdict = std::move(v);
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return r;
   };
-  const Model m(ParamBox::point(a, b, q));
-  if (Verdict v = m.admissible(); !v) return finish(v);
+  const ParameterBalls m(ParameterBox::point(a, b, q));
+  if (Outcome v = m.admissible(); !v) return finish(v);
   {
     static const Vartheta0 v0 = certify_vartheta0(128);
     r.eq2 = lt(2.0 * m.b, m.a) && lt(m.a * v0.sine, m.q) && lt(m.q, m.a);
     r.eq23 = lt(m.q, m.a);
   }
   Budget budget;
-  const TProof at = T_at_t2(m, budget);
-  if (!at.verdict) return finish(Verdict::fail("Theorem 2: T at t2", at.verdict.describe()));
+  const MapStepProof at = T_at_t2(m, budget);
+  if (!at.verdict) return finish(Outcome::fail("Theorem 2: T at t2", at.verdict.describe()));
   r.T1 = at.t1.enclosure;
   r.theta2 = at.theta2.enclosure;
   r.theta2_phase = phase_of(m, at.theta2.enclosure);
   r.condition = superstable_condition(m, at);
   if (r.condition == 0)
-    return finish(Verdict::refute("Theorem 2: (21) or (22)", "theta2(t2) mod 2pi = " + r.theta2_phase.str(12) + " lies in [t2, t3]: T(t2) = " + at.T.str(10)));
-  if (r.condition < 0) return finish(Verdict::fail("Theorem 2: (21) or (22)", "undecided: theta2(t2) mod 2pi = " + r.theta2_phase.str(12)));
-  if (!at.constant_t2) return finish(Verdict::fail("Theorem 2: T(t2) = t2", "T(t2) = " + at.T.str(10)));
+    return finish(Outcome::refute("Theorem 2: (21) or (22)", "theta2(t2) mod 2pi = " + r.theta2_phase.str(12) + " lies in [t2, t3]: T(t2) = " + at.T.str(10)));
+  if (r.condition < 0) return finish(Outcome::fail("Theorem 2: (21) or (22)", "undecided: theta2(t2) mod 2pi = " + r.theta2_phase.str(12)));
+  if (!at.constant_t2) return finish(Outcome::fail("Theorem 2: T(t2) = t2", "T(t2) = " + at.T.str(10)));
   // epsilon: cover [t2, t2 + eps] with closed balls on which T = t2.
   double eps = eps_try;
   if (std::isnan(eps)) {
@@ -86,7 +86,7 @@ SuperstableProof prove_superstable(double a, double b, double q, double eps_try)
       const Item it = stack.back();
       stack.pop_back();
       const StartSet set = std::isnan(it.lo) ? StartSet::from_t2(m, it.hi) : StartSet::interval(it.lo, it.hi);
-      const TProof t = certify_T(m, set, budget);
+      const MapStepProof t = certify_T(m, set, budget);
       if (t.verdict && t.constant_t2) {
         ++balls;
         used_l1 = used_l1 || t.used_lemma1;
@@ -106,10 +106,10 @@ SuperstableProof prove_superstable(double a, double b, double q, double eps_try)
       r.eps = eps;
       r.balls = balls;
       r.used_lemma1 = used_l1 || at.used_lemma1;
-      return finish(Verdict::ok());
+      return finish(Outcome::ok());
     }
   }
-  return finish(Verdict::fail("Theorem 2: epsilon", "T = t2 on [t2, t2 + eps] not proved for any eps tried (last: " + last_failure + ")"));
+  return finish(Outcome::fail("Theorem 2: epsilon", "T = t2 on [t2, t2 + eps] not proved for any eps tried (last: " + last_failure + ")"));
 }
 
 WindowProof prove_window(double a, double q, double b_lo, double b_hi, double rel) {
@@ -117,14 +117,14 @@ WindowProof prove_window(double a, double q, double b_lo, double b_hi, double re
   WindowProof r;
   r.b_lo_float = b_lo;
   r.b_hi_float = b_hi;
-  auto finish = [&](Verdict v) {
+  auto finish = [&](Outcome v) {
     r.verdict = std::move(v);
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return r;
   };
   const double mid = 0.5 * (b_lo + b_hi);
   r.inside = prove_superstable(a, mid, q);
-  if (!r.inside.verdict) return finish(Verdict::fail("window: inside", r.inside.verdict.describe()));
+  if (!r.inside.verdict) return finish(Outcome::fail("window: inside", r.inside.verdict.describe()));
   std::string last;
   for (int attempt = 0; attempt < 4; ++attempt, rel *= 10) {
     r.left_out = b_lo * (1 - rel);
@@ -135,9 +135,9 @@ WindowProof prove_window(double a, double q, double b_lo, double b_hi, double re
     // Outer points: T(t2) certainly differs from t2.
     bool outer_ok = true;
     for (int side = 0; side < 2 && outer_ok; ++side) {
-      const Model mo(ParamBox::point(a, side == 0 ? r.left_out : r.right_out, q));
+      const ParameterBalls mo(ParameterBox::point(a, side == 0 ? r.left_out : r.right_out, q));
       Budget budget;
-      const TProof t = T_at_t2(mo, budget);
+      const MapStepProof t = T_at_t2(mo, budget);
       Ball& T = side == 0 ? r.T_left_out : r.T_right_out;
       T = t.T;
       if (!t.verdict || t.constant_t2 || !lt(mo.t2, t.T)) {
@@ -156,8 +156,8 @@ WindowProof prove_window(double a, double q, double b_lo, double b_hi, double re
     while (!stack.empty()) {
       const Item it = stack.back();
       stack.pop_back();
-      const Model mb(ParamBox{a, it.lo, it.hi, q, q});
-      const TProof t = certify_T(mb, StartSet::at_t2(), budget);
+      const ParameterBalls mb(ParameterBox{a, it.lo, it.hi, q, q});
+      const MapStepProof t = certify_T(mb, StartSet::at_t2(), budget);
       if (t.verdict && t.constant_t2) {
         ++boxes;
         continue;
@@ -173,26 +173,26 @@ WindowProof prove_window(double a, double q, double b_lo, double b_hi, double re
     }
     if (!ok) continue;
     r.boxes = boxes;
-    return finish(Verdict::ok());
+    return finish(Outcome::ok());
   }
-  return finish(Verdict::fail("window: edges", last));
+  return finish(Outcome::fail("window: edges", last));
 }
 
 Theorem2Counterexample prove_theorem2_counterexample(double a, double b, double q) {
   Theorem2Counterexample r;
-  const Model m(ParamBox::point(a, b, q));
-  if (Verdict v = m.admissible(); !v) {
+  const ParameterBalls m(ParameterBox::point(a, b, q));
+  if (Outcome v = m.admissible(); !v) {
     r.verdict = v;
     return r;
   }
   static const Vartheta0 v0 = certify_vartheta0(128);
   if (!(lt(2.0 * m.b, m.a) && lt(m.a * v0.sine, m.q) && lt(m.q, m.a))) {
-    r.verdict = Verdict::fail("Theorem 2 counterexample: (2)", "assumptions (2) not proved");
+    r.verdict = Outcome::fail("Theorem 2 counterexample: (2)", "assumptions (2) not proved");
     return r;
   }
   Budget budget;
   const StartSet set = StartSet::from_t2(m, m.t2.upper());
-  const T1Proof t1 = certify_T1(m, set, budget);
+  const FirstHitProof t1 = certify_T1(m, set, budget);
   if (!t1.verdict) {
     r.verdict = t1.verdict;
     return r;
@@ -204,19 +204,19 @@ Theorem2Counterexample prove_theorem2_counterexample(double a, double b, double 
   }
   r.theta2_phase = phase_of(m, th.enclosure);
   if (!(lt(m.t3, r.theta2_phase) && lt(r.theta2_phase, m.t0 + m.two_pi))) {
-    r.verdict = Verdict::fail("Theorem 2 counterexample: (22)", "theta2(t2) mod 2pi = " + r.theta2_phase.str(12));
+    r.verdict = Outcome::fail("Theorem 2 counterexample: (22)", "theta2(t2) mod 2pi = " + r.theta2_phase.str(12));
     return r;
   }
   auto u = [&](const Ball& t) { return model::progression_velocity_from_rest(m.a, m.two_c, m.t0, t); };
   r.u_at_t2 = u(m.t2);
   r.u_at_t3 = u(m.t3);
   if (!r.u_at_t2.is_positive() || !r.u_at_t3.is_negative()) {
-    r.verdict = Verdict::fail("Theorem 2 counterexample: u(t2) > 0 > u(t3)", "u(t2) = " + r.u_at_t2.str(8) + ", u(t3) = " + r.u_at_t3.str(8));
+    r.verdict = Outcome::fail("Theorem 2 counterexample: u(t2) > 0 > u(t3)", "u(t2) = " + r.u_at_t2.str(8) + ", u(t3) = " + r.u_at_t3.str(8));
     return r;
   }
   // t4 by bisection on the sign of u in [t2, t3] (u decreasing there).
   r.T = enclose_sign_change(u, m.t2.upper_ball(), m.t3.lower_ball(), 200);
-  r.verdict = Verdict::ok();
+  r.verdict = Outcome::ok();
   return r;
 }
 

@@ -29,7 +29,7 @@ namespace dfchaos::certified {
 
 /// Theorem 2 at a parameter point.
 struct SuperstableProof {
-  Verdict verdict;           ///< proved: T = t2 on [t2, t2 + eps] (and (21) or (22) holds)
+  Outcome verdict;           ///< proved: T = t2 on [t2, t2 + eps] (and (21) or (22) holds)
   int condition = 0;         ///< 21 or 22 when certified; 0 when neither holds (certified); -1 undecided
   Ball T1;                   ///< \f$T_1(t_2)\f$
   Ball theta2;               ///< \f$\theta_2(t_2)\f$ (instant)
@@ -47,7 +47,7 @@ struct SuperstableProof {
 SuperstableProof prove_superstable(double a, double b, double q, double eps_try = 0.0 / 0.0);
 
 /// The condition (21)/(22) of a certified T at \f$t_2\f$: 21, 22, 0 (certainly neither), -1 (undecided).
-int superstable_condition(const Model& m, const TProof& t);
+int superstable_condition(const ParameterBalls& m, const MapStepProof& t);
 
 /// A superstability window in b (q fixed): the maximal interval W of b containing the middle of
 /// the floating estimate on which \f$T(t_2) = t_2\f$.
@@ -59,7 +59,7 @@ int superstable_condition(const Model& m, const TProof& t);
 /// \f$[b^L_{out}, b^L_{in}]\f$ and \f$[b^R_{in}, b^R_{out}]\f$, whatever happens at them (a crossing of
 /// \f$t_2\f$ by \f$\theta_2(t_2)\f$, or the flight from \f$t_2\f$ grazing the delimiter at \f$t_3\f$).
 struct WindowProof {
-  Verdict verdict;                        ///< all parts proved
+  Outcome verdict;                        ///< all parts proved
   double b_lo_float = 0;                  ///< the floating estimate of the window: left end
   double b_hi_float = 0;                  ///< the floating estimate of the window: right end
   SuperstableProof inside;                ///< at the middle: Theorem 2 with a certified epsilon
@@ -83,7 +83,7 @@ WindowProof prove_window(double a, double q, double b_lo, double b_hi, double re
 /// \f$(t_0, t_1]\f$, u decreasing on \f$[t_1, t_3]\f$, \f$u(t_2) > 0 > u(t_3)\f$: it stops once, at
 /// \f$t_4 \in (t_2, t_3)\f$, where the mass flies (scenario D): \f$T(t_2) = t_4 \ne t_2\f$.
 struct Theorem2Counterexample {
-  Verdict verdict;       ///< proved: (2) and (22) hold, and T(t2) = t4 in (t2, t3)
+  Outcome verdict;       ///< proved: (2) and (22) hold, and T(t2) = t4 in (t2, t3)
   Ball theta2_phase;     ///< \f$\theta_2(t_2) \bmod 2\pi\f$ (in \f$(t_3, 2\pi) \cup [0, t_0)\f$)
   Ball u_at_t2;          ///< Eq. (8): positive
   Ball u_at_t3;          ///< negative

@@ -22,7 +22,7 @@ Vartheta0 certify_vartheta0(long bits) {
   auto f = [&](const Ball& v) { return pi - v - cot(v * 0.5); };
   Ball lo(0.5), hi(1.0);
   if (!f(lo).is_negative() || !f(hi).is_positive()) {
-    r.verdict = Verdict::fail("Eq. (1): sign change", "f(1/2) < 0 < f(1) not proved");
+    r.verdict = Outcome::fail("Eq. (1): sign change", "f(1/2) < 0 < f(1) not proved");
     return r;
   }
   // f > 0 at hi, f < 0 at lo; the search stops where the midpoint is within rounding of the root
@@ -32,7 +32,7 @@ Vartheta0 certify_vartheta0(long bits) {
   r.value_double = correctly_rounded(r.value);
   r.sine_double = correctly_rounded(r.sine);
   r.rounding_certified = !std::isnan(r.value_double) && !std::isnan(r.sine_double);
-  r.verdict = Verdict::ok();
+  r.verdict = Outcome::ok();
   return r;
 }
 

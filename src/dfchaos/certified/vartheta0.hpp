@@ -12,13 +12,13 @@
 #include <string>
 
 #include "dfchaos/certified/ball.hpp"
-#include "dfchaos/certified/verdict.hpp"
+#include "dfchaos/certified/outcome.hpp"
 
 namespace dfchaos::certified {
 
 /// \f$\vartheta_0\f$ and \f$\sin\vartheta_0\f$, certified.
 struct Vartheta0 {
-  Verdict verdict;             ///< proved: the unique zero on (0, pi/2] lies in `value`
+  Outcome verdict;             ///< proved: the unique zero on (0, pi/2] lies in `value`
   Ball value;                  ///< \f$\vartheta_0\f$
   Ball sine;                   ///< \f$\sin\vartheta_0\f$
   double value_double = 0;     ///< the double nearest to \f$\vartheta_0\f$ (when rounding_certified)

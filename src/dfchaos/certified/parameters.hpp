@@ -1,5 +1,5 @@
-/// @file model.hpp
-/// @brief The oscillator over a box of parameters, in ball arithmetic: \f$a\f$ fixed, \f$b \in
+/// @file parameters.hpp
+/// @brief The parameters of the oscillator (dfchaos/parameters.hpp) over a box, in ball arithmetic: \f$a\f$ fixed, \f$b \in
 /// [b_{lo}, b_{hi}]\f$, \f$q \in [q_{lo}, q_{hi}]\f$ (a point when the ends coincide), with enclosures
 /// of the switching phases \f$t_0, \dots, t_3\f$ (Section 2) valid for every parameter of the box.
 ///
@@ -10,38 +10,43 @@
 #include <string>
 
 #include "dfchaos/certified/ball.hpp"
-#include "dfchaos/certified/verdict.hpp"
+#include "dfchaos/certified/outcome.hpp"
+#include "dfchaos/parameters.hpp"
 
 namespace dfchaos::certified {
 
-/// A box of parameters \f$\{a\} \times [b_{lo}, b_{hi}] \times [q_{lo}, q_{hi}]\f$.
-struct ParamBox {
+/// A box of parameters \f$\{a\} \times [b_{lo}, b_{hi}] \times [q_{lo}, q_{hi}]\f$: the box form of
+/// dfchaos::Parameters (Section 2).
+struct ParameterBox {
   double a = 1;     ///< forcing amplitude (exact)
   double b_lo = 0;  ///< lower end of b
   double b_hi = 0;  ///< upper end of b
   double q_lo = 0;  ///< lower end of q
   double q_hi = 0;  ///< upper end of q
   /// The single parameter point (a, b, q).
-  static ParamBox point(double a, double b, double q) { return ParamBox{a, b, b, q, q}; }
+  static ParameterBox point(double a, double b, double q) { return ParameterBox{a, b, b, q, q}; }
+  /// The single parameter point of `p`.
+  static ParameterBox point(const Parameters& p) { return point(p.a(), p.b(), p.q()); }
   bool is_point() const { return b_lo == b_hi && q_lo == q_hi; }  ///< both ranges degenerate
   std::string describe() const;  ///< "a=1 b=[..] q=[..]" or "a=1 b=.. q=.."
 };
 
-/// The balls of one parameter box, computed once.
+/// The balls of one parameter box, computed once: a, b, q, \f$2c\f$ and the switching phases, each
+/// enclosing its value for every parameter of the box.
 ///
 /// Phases (Section 2), the ball instantiations of dfchaos/model.hpp: \f$t_0 = \arcsin((q-2b)/a)\f$, \f$t_1 = \pi - t_0\f$,
 /// \f$t_2 = \pi + \arcsin(2b/a)\f$, \f$t_3 = 2\pi - \arcsin(2b/a)\f$, each enclosed over the box.
-class Model {
+class ParameterBalls {
  public:
   /// @throws InvalidParameter (dfchaos/errors.hpp) unless a > 0, 0 < b_lo <= b_hi, 0 < q_lo <= q_hi,
   ///         all finite.
-  explicit Model(const ParamBox& box);
+  explicit ParameterBalls(const ParameterBox& box);
 
-  const ParamBox& box() const { return box_; }  ///< the parameters
+  const ParameterBox& box() const { return box_; }  ///< the parameters
   /// Proves the standing conditions of the return map on the whole box: \f$2b < a\f$ (so
   /// \f$t_2, t_3\f$ exist), \f$q > 2b\f$ (every progression stops, \f$c < 0\f$) and \f$q - 2b < a\f$
   /// (\f$t_0, t_1\f$ exist).
-  Verdict admissible() const;
+  Outcome admissible() const;
 
   Ball a;                  ///< a (exact)
   Ball b;                  ///< the whole range of b
@@ -66,7 +71,7 @@ class Model {
   Ball t2_of(const Ball& bb) const;
 
  private:
-  ParamBox box_;
+  ParameterBox box_;
 };
 
 }  // namespace dfchaos::certified

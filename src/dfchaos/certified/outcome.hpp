@@ -1,5 +1,9 @@
-/// @file verdict.hpp
-/// @brief Three-valued answers and bounded work, in the spirit of Arb's `arb_calc`.
+/// @file outcome.hpp
+/// @brief Three-valued answers of the certified routines (proved, refuted, not proved) and bounded
+/// work, in the spirit of Arb's `arb_calc`.
+///
+/// (Not to be confused with the verdict of a claim, kit/claim.hpp: an experiment turns Outcomes
+/// into claims of kind `certified`.)
 ///
 /// A certified routine answers **proved** (every inequality it needed was shown in ball arithmetic
 /// over the whole set the statement is about) or **not proved**, naming the step that could not be
@@ -12,19 +16,20 @@
 
 namespace dfchaos::certified {
 
-/// The answer of a certified routine.
-struct Verdict {
+/// The answer of a certified routine: proved, or not proved naming the step (refuted when the step
+/// was shown false).
+struct Outcome {
   bool proved = false;      ///< every step was proved
   bool refuted = false;     ///< (when not proved) the computation showed a step false, not merely undecided
   std::string step;         ///< (when not proved) the step that failed, e.g. "T1: no earlier root"
   std::string detail;       ///< (when not proved) where and why, with numbers
 
-  /// A proved verdict.
-  static Verdict ok() { return Verdict{true, false, "", ""}; }
+  /// A proved outcome.
+  static Outcome ok() { return Outcome{true, false, "", ""}; }
   /// A step that could not be shown.
-  static Verdict fail(std::string step, std::string detail) { return Verdict{false, false, std::move(step), std::move(detail)}; }
+  static Outcome fail(std::string step, std::string detail) { return Outcome{false, false, std::move(step), std::move(detail)}; }
   /// A step shown false.
-  static Verdict refute(std::string step, std::string detail) { return Verdict{false, true, std::move(step), std::move(detail)}; }
+  static Outcome refute(std::string step, std::string detail) { return Outcome{false, true, std::move(step), std::move(detail)}; }
   explicit operator bool() const { return proved; }  ///< proved
   /// "proved", or "not proved: STEP (DETAIL)" ("refuted: ..." for a step shown false).
   std::string describe() const {

@@ -1,4 +1,4 @@
-#include "dfchaos/certified/model.hpp"
+#include "dfchaos/certified/parameters.hpp"
 
 #include <cmath>
 
@@ -7,12 +7,12 @@
 
 namespace dfchaos::certified {
 
-std::string ParamBox::describe() const {
+std::string ParameterBox::describe() const {
   auto range = [](double lo, double hi) { return lo == hi ? format_double(lo) : "[" + format_double(lo) + ", " + format_double(hi) + "]"; };
   return "a=" + format_double(a) + " b=" + range(b_lo, b_hi) + " q=" + range(q_lo, q_hi);
 }
 
-Model::Model(const ParamBox& box) : box_(box) {
+ParameterBalls::ParameterBalls(const ParameterBox& box) : box_(box) {
   if (!std::isfinite(box.a) || !(box.a > 0)) throw InvalidParameter("a", "a > 0 and finite", box.a);
   if (!std::isfinite(box.b_lo) || !(box.b_lo > 0)) throw InvalidParameter("b", "b > 0 and finite", box.b_lo);
   if (!std::isfinite(box.b_hi) || !(box.b_hi >= box.b_lo)) throw InvalidParameter("b", "b_lo <= b_hi, finite", box.b_hi);
@@ -36,16 +36,16 @@ Model::Model(const ParamBox& box) : box_(box) {
   t2_at_b_hi = t2_of(b_hi);
 }
 
-Verdict Model::admissible() const {
-  if (!lt(2.0 * b, a)) return Verdict::fail("admissibility", "2b < a not proved over " + box_.describe());
-  if (!lt(2.0 * b, q)) return Verdict::fail("admissibility", "q > 2b not proved over " + box_.describe());
-  if (!lt(q - 2.0 * b, a)) return Verdict::fail("admissibility", "q - 2b < a not proved over " + box_.describe());
-  if (!t0.is_finite() || !t2.is_finite()) return Verdict::fail("admissibility", "phases not enclosed");
-  return Verdict::ok();
+Outcome ParameterBalls::admissible() const {
+  if (!lt(2.0 * b, a)) return Outcome::fail("admissibility", "2b < a not proved over " + box_.describe());
+  if (!lt(2.0 * b, q)) return Outcome::fail("admissibility", "q > 2b not proved over " + box_.describe());
+  if (!lt(q - 2.0 * b, a)) return Outcome::fail("admissibility", "q - 2b < a not proved over " + box_.describe());
+  if (!t0.is_finite() || !t2.is_finite()) return Outcome::fail("admissibility", "phases not enclosed");
+  return Outcome::ok();
 }
 
-Ball Model::F(const Ball& t) const { return model::F(a, b, t); }
+Ball ParameterBalls::F(const Ball& t) const { return model::F(a, b, t); }
 
-Ball Model::t2_of(const Ball& bb) const { return model::t2(a, bb); }
+Ball ParameterBalls::t2_of(const Ball& bb) const { return model::t2(a, bb); }
 
 }  // namespace dfchaos::certified
