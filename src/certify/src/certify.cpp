@@ -53,7 +53,7 @@ ParameterBox box_from(const Request& r, bool need_q, bool allow_box) {
 
 /// The candidate of a given segment, its ends checked to be finite and inside [t2, 3pi/2] at the
 /// box's lower corner (where the covering segments of Lemma 4 lie), in the order top, t2.
-Candidate candidate(const std::string& name, const SegmentEnds& e, const ParamBox& box) {
+Candidate candidate(const std::string& name, const SegmentEnds& e, const ParameterBox& box) {
   const Parameters corner(box.a, box.b_lo, box.q_lo);
   const double t2 = *corner.t2(), top = 1.5 * M_PI;
   for (double x : {e.theta_top, e.theta_t2})
@@ -98,7 +98,7 @@ Result certify(const Request& r) {
     return {p.verdict.proved, to_json(box.a, box.b_lo, p, l2 ? "L2 = [101pi/100, 51pi/50]" : "L0 = [101pi/100, 3pi/2]")};
   }
   if (r.what == "covering") {
-    const ParamBox box = box_from(r, true, true);
+    const ParameterBox box = box_from(r, true, true);
     if (!r.J0 && !r.J1) {
       const CoveringProof p = prove_covering(box);
       return {p.verdict.proved, to_json(p)};
