@@ -9,6 +9,11 @@
 ///   dfchaos certify periodic        --a A --b B --q Q --period M
 ///   dfchaos certify superstable     --a A --b B --q Q [--window LO:HI]
 ///
+/// With `--certificate FILE` (vartheta0, lemma1, b0) a proved statement's certificate is written
+/// to FILE whole or not at all (certify/certificate.hpp), and the record gets "certificate":
+/// {"path", "bytes", "sha256"}; a statement not proved writes none ({"written": false}). A FILE
+/// that cannot be created is bad input (exit 2, one line, no file).
+///
 /// Prints one JSON object: "proved", "statement", enclosures (decimal mid and radius), for covering
 /// "J0" and "J1", and on failure "failed_step". Exit status 0 when proved, 1 when not proved (an
 /// answer, not an error), 2 for bad input (one line on stderr naming the parameter, nothing on stdout).
@@ -31,6 +36,7 @@ struct CertifyOptions {
   int period = 0;            ///< periodic: the minimal period m
   std::string segment = "L0";  ///< discontinuities: L0 = [101pi/100, 3pi/2] or L2 = [101pi/100, 51pi/50]
   std::string window;        ///< superstable: a window LO:HI in b (floating estimate) to certify with its edges
+  std::string certificate;   ///< --certificate FILE: where to write the certificate (empty: none)
   std::string max_seconds = "60";  ///< the time budget of the process (kit/budget.hpp)
   std::string max_memory = "2";    ///< the memory budget of the process in GiB (kit/budget.hpp)
 };
