@@ -57,6 +57,7 @@ py::object to_python(const kit::Json::Value& v) {
 py::object certify_py(const std::string& what, double a, std::optional<NumberOrBox> b, std::optional<NumberOrBox> q, int period,
                     const std::string& segment, std::optional<std::pair<double, double>> window, std::optional<std::string> certificate) {
   certify::check_statement(what);
+  if (certificate && certificate->empty()) throw InvalidParameter("certificate", "a file name (got '')");
   if (certificate && !certify::has_certificate(what))
     throw InvalidParameter("certificate", "a statement with a certificate format: vartheta0, lemma1 or b0 (not certify " + what + ")");
   certify::Request r;

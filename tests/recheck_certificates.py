@@ -137,6 +137,11 @@ def main():
                                   capture_output=True, text=True)
             if os.geteuid() != 0 and (proc.returncode != 2 or os.listdir(ro)):
                 sys.exit(f"FAIL: read-only directory: exit {proc.returncode}, left {os.listdir(ro)}")
+            # an empty file name
+            proc = subprocess.run([cli, "certify", "vartheta0", "--certificate", ""], capture_output=True, text=True)
+            if proc.returncode != 2 or proc.stdout or len(proc.stderr.strip().splitlines()) != 1 or "certificate" not in proc.stderr:
+                sys.exit(f"FAIL: --certificate '': exit {proc.returncode}, stderr {proc.stderr!r}")
+            print(f"ok:   --certificate '': exit 2: {proc.stderr.strip()}")
             # a statement without a certificate format: bad input before any proof
             proc = subprocess.run([cli, "certify", "covering", "--b", "0.001", "--q", "0.85", "--certificate", os.path.join(d, "c.json")],
                                   capture_output=True, text=True)

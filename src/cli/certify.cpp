@@ -68,7 +68,8 @@ CLI::App* add_certify(CLI::App& app, CertifyOptions& o) {
   c->add_option("--segment", o.segment, "discontinuities: L0 (default) or L2");
   c->add_option("--window", o.window, "superstable: certify the window LO:HI (floating estimate of b) and its edges");
   c->add_option("--certificate", o.certificate, "write the proof's certificate (JSON witnesses for dfchaos-recheck) to FILE, whole or not at all; vartheta0, lemma1, b0")
-      ->type_name("FILE");
+      ->type_name("FILE")
+      ->check([](const std::string& s) { return s.empty() ? std::string("certificate: a file name (got '')") : std::string(); });
   c->add_option("--max-seconds", o.max_seconds, "time budget: give up (exit 1, one line) after S seconds, 0 < S <= 1e6 [default 60]")->type_name("S");
   c->add_option("--max-memory", o.max_memory, "memory budget: give up (exit 1, one line) beyond G GiB of address space, 0.25 <= G <= 1e4 [default 2]")
       ->type_name("G");

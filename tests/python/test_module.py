@@ -305,6 +305,8 @@ def test_certify_certificate_refusals(tmp_path):
         dfchaos.certify("covering", b=0.001, q=0.85, certificate=str(tmp_path / "c.json"))
     rec = dfchaos.certify("lemma1", b=0.05, q=0.73, certificate=str(tmp_path / "c.json"))
     assert rec["proved"] is False and rec["certificate"]["written"] is False
+    with pytest.raises(dfchaos.InvalidParameter, match="certificate"):
+        dfchaos.certify("vartheta0", certificate="")
     (tmp_path / "plain").write_text("a file\n")
     with pytest.raises(OSError, match="certificate"):
         dfchaos.certify("vartheta0", certificate=str(tmp_path / "plain" / "c.json"))
