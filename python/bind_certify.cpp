@@ -8,9 +8,11 @@
 #include <utility>
 #include <variant>
 
+#include "certify/certificate.hpp"
 #include "certify/certify.hpp"
 #include "convert.hpp"
 #include "dfchaos/errors.hpp"
+#include "kit/output.hpp"
 
 namespace dfchaos::python {
 
@@ -53,7 +55,11 @@ py::object to_python(const kit::Json::Value& v) {
 }
 
 py::object certify_py(const std::string& what, double a, std::optional<NumberOrBox> b, std::optional<NumberOrBox> q, int period,
-                    const std::string& segment, std::optional<std::pair<double, double>> window) {
+                    const std::string& segment, std::optional<std::pair<double, double>> window, std::optional<std::string> certificate) {
+  certify::check_statement(what);
+  if (certificate && certificate->empty()) throw InvalidParameter("certificate", "a file name (got '')");
+  if (certificate && !certify::has_certificate(what))
+    throw InvalidParameter("certificate", "a statement with a certificate format: vartheta0, lemma1 or b0 (not certify " + what + ")");
   certify::Request r;
   r.what = what;
   r.a = finite("a", a);
@@ -67,6 +73,18 @@ py::object certify_py(const std::string& what, double a, std::optional<NumberOrB
     py::gil_scoped_release nogil;
     c = certify::certify(r);
   }
+  if (certificate) {
+    if (c.certificate.value().is_null()) {
+      c.record.set("certificate", kit::Json::object().set("written", false).set("reason", "not proved: no certificate"));
+    } else {
+      try {
+        c.record.set("certificate", certify::to_json(certify::write_certificate(*certificate, c.certificate)));
+      } catch (const kit::OutputError& e) {
+        PyErr_SetString(PyExc_OSError, ("certificate: " + kit::one_line(e.what())).c_str());
+        throw py::error_already_set();
+      }
+    }
+  }
   return to_python(c.record.value());
 }
 
@@ -75,7 +93,8 @@ py::object certify_py(const std::string& what, double a, std::optional<NumberOrB
 void bind_certify(py::module_& m) {
   m.def("certify", &certify_py, py::arg("what"), py::arg("a") = 1.0, py::arg("b") = py::none(), py::arg("q") = py::none(),
         py::arg("period") = 0, py::arg("segment") = "L0", py::arg("window") = py::none(),
-        R"doc(certify(what, a=1.0, b=None, q=None, period=0, segment='L0', window=None) -> dict
+        py::arg("certificate") = py::none(),
+        R"doc(certify(what, a=1.0, b=None, q=None, period=0, segment='L0', window=None, certificate=None) -> dict
 
 A proof in ball arithmetic (Arb), as `dfchaos certify WHAT` gives it: `what` is one of vartheta0 (Eq. 1),
 lemma1 (Lemma 1), b0 (a certified lower bound of b0(q)), discontinuities (Lemma 2, on segment L0 or L2),
@@ -84,7 +103,12 @@ covering (Lemma 4 / Theorem 1), periodic (Sections 6-7, minimal period `period`)
 boxes where the request allows them. Returns the JSON record as a dict: "proved" (True/False), the
 statement, the enclosures (decimal mid and radius), and on failure the step that failed. Bad input
 raises dfchaos.InvalidParameter with the CLI's message. Doubles are exact binary numbers: the proofs
-are for those numbers (or every parameter of the box).)doc");
+are for those numbers (or every parameter of the box).
+
+With `certificate="path"` (vartheta0, lemma1, b0) a proved statement's certificate (the witnesses, for
+the independent checker dfchaos-recheck; docs/certificates.md) is written to path whole or not at all,
+and the dict gets "certificate": {"path", "bytes", "sha256"} ({"written": False} when not proved).
+A path that cannot be written raises OSError and leaves no file.)doc");
 }
 
 }  // namespace dfchaos::python

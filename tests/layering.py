@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The layers only point down: core <- kit <- certify, sweep <- cli, python, experiments.
 
-Two checks, each able to fail:
+Three checks, each able to fail:
   1. includes: every quoted #include of a file in a lower layer resolves to a header of the same or a
      lower layer (core: src/dfchaos; kit: src/kit; certify: src/certify; sweep: src/sweep; the tool:
      src/cli). A header is looked up as the compiler would: beside the including file, then in each
@@ -9,6 +9,9 @@ Two checks, each able to fail:
   2. links: the direct link libraries of each library target (written by CMake at generate time into
      the file given as the second argument, one `target=lib;lib;...` a line), followed transitively,
      never reach a target of a higher or sibling layer; the Python module links no CLI library.
+  3. the independent checker src/recheck (dfchaos-recheck) includes nothing of src/ outside its own
+     folder (quoted or angle includes, looked up beside the file and in every layer's include
+     directory) and links no library of the project.
 
 usage: layering.py SOURCE_DIR LINKS_FILE
 """
@@ -104,17 +107,52 @@ def check_links(links_file):
     return problems
 
 
+ANY_INCLUDE = re.compile(r'^\s*#\s*include\s*[<"]([^">]+)[">]')
+PROJECT_PREFIXES = ("dfchaos/", "kit/", "certify/", "sweep/", "cli/", "recheck/")
+
+
+def check_recheck(src, links_file):
+    """src/recheck shares no code with the prover: no include of src/ outside it, no project library."""
+    folder = src / "recheck"
+    problems = []
+    files = [f for f in sorted(folder.rglob("*")) if f.suffix in (".hpp", ".cpp", ".h")]
+    if not files:
+        return [f"{folder}: no sources found"]
+    for f in files:
+        for n, line in enumerate(f.read_text(errors="replace").splitlines(), 1):
+            m = ANY_INCLUDE.match(line)
+            if not m:
+                continue
+            target = resolve(m.group(1), f, src)
+            outside = target is not None and folder.resolve() not in target.parents
+            if outside or m.group(1).startswith(PROJECT_PREFIXES):
+                problems.append(f"{f.relative_to(src.parent)}:{n}: the independent checker includes \"{m.group(1)}\" of the project")
+    direct = {}
+    for line in Path(links_file).read_text().splitlines():
+        if "=" in line:
+            target, libs = line.split("=", 1)
+            direct[target] = [lib for lib in libs.split(";") if lib]
+    if "dfchaos_recheck" not in direct:
+        return problems + [f"{links_file}: no link libraries written for dfchaos_recheck"]
+    for lib in direct["dfchaos_recheck"]:
+        name = lib.split("::")[-1]
+        if lib.startswith("dfchaos") or name in TARGET_LAYER or name in ("kit", "sweep", "certify", "certified"):
+            problems.append(f"target dfchaos_recheck (the independent checker) links {lib} of the project")
+    return problems
+
+
 def main():
     if len(sys.argv) != 3:
         print(__doc__.strip().splitlines()[-1], file=sys.stderr)
         return 2
     src = Path(sys.argv[1]).resolve() / "src"
-    problems = check_includes(src) + check_links(sys.argv[2])
+    problems = check_includes(src) + check_links(sys.argv[2]) + check_recheck(src, sys.argv[2])
     for p in problems:
         print("FAIL:", p)
     if problems:
         return 1
-    print("ok: includes of src/dfchaos, src/kit, src/certify, src/sweep and the link libraries point down")
+    print("ok: includes of src/dfchaos, src/kit, src/certify, src/sweep and the link libraries point down; "
+          "src/recheck includes and links nothing of the project")
     return 0
 
 

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <new>
 
+#include "certify/certificate.hpp"
 #include "certify/certify.hpp"
 #include "dfchaos/certified/ball.hpp"
 #include "dfchaos/errors.hpp"
@@ -43,6 +44,8 @@ certify::SegmentEnds segment_ends(const std::string& name, const std::string& s)
 /// a, b, q, window (b0 takes one number q, not a box).
 certify::Request request_from(const CertifyOptions& o) {
   certify::check_statement(o.what);
+  if (!o.certificate.empty() && !certify::has_certificate(o.what))
+    throw InvalidParameter("certificate", "a statement with a certificate format: vartheta0, lemma1 or b0 (not certify " + o.what + ")");
   certify::Request r;
   r.what = o.what;
   r.period = o.period;
@@ -78,6 +81,9 @@ CLI::App* add_certify(CLI::App& app, CertifyOptions& o) {
   c->add_option("--J0", o.J0, "covering: prove this segment J0, given as TOP:T2 (the phases where T >= 3pi/2 and T = t2; e.g. from "
                               "certified_region's data), with --J1, instead of searching candidates");
   c->add_option("--J1", o.J1, "covering: the segment J1 (right of J0), as TOP:T2");
+  c->add_option("--certificate", o.certificate, "write the proof's certificate (JSON witnesses for dfchaos-recheck) to FILE, whole or not at all; vartheta0, lemma1, b0")
+      ->type_name("FILE")
+      ->check([](const std::string& s) { return s.empty() ? std::string("certificate: a file name (got '')") : std::string(); });
   c->add_option("--max-seconds", o.max_seconds, "time budget: give up (exit 1, one line) after S seconds, 0 < S <= 1e6 [default 60]")->type_name("S");
   c->add_option("--max-memory", o.max_memory, "memory budget: give up (exit 1, one line) beyond G GiB of address space, 0.25 <= G <= 1e4 [default 2]")
       ->type_name("G");
@@ -99,6 +105,18 @@ int run_certify(const CertifyOptions& o) {
   } catch (const std::bad_alloc&) {
     std::fprintf(stderr, "dfchaos: gave up: %s\n", kit::memory_budget_line().c_str());
     return 1;
+  }
+  if (!o.certificate.empty()) {
+    if (c.certificate.value().is_null()) {
+      c.record.set("certificate", kit::Json::object().set("written", false).set("reason", "not proved: no certificate"));
+    } else {
+      try {
+        c.record.set("certificate", certify::to_json(certify::write_certificate(o.certificate, c.certificate)));
+      } catch (const kit::OutputError& e) {
+        std::fprintf(stderr, "dfchaos: error: certificate: %s\n", kit::one_line(e.what()).c_str());
+        return e.bad_path() ? 2 : 1;
+      }
+    }
   }
   const std::string text = c.record.dump(2) + "\n";
   std::fwrite(text.data(), 1, text.size(), stdout);

@@ -9,6 +9,11 @@
 ///   dfchaos certify periodic        --a A --b B --q Q --period M
 ///   dfchaos certify superstable     --a A --b B --q Q [--window LO:HI]
 ///
+/// With `--certificate FILE` (vartheta0, lemma1, b0) a proved statement's certificate is written
+/// to FILE whole or not at all (certify/certificate.hpp), and the record gets "certificate":
+/// {"path", "bytes", "sha256"}; a statement not proved writes none ({"written": false}). A FILE
+/// that cannot be created is bad input (exit 2, one line, no file).
+///
 /// Prints one JSON object: "proved", "statement", enclosures (decimal mid and radius), for covering
 /// "J0" and "J1", and on failure "failed_step". Exit status 0 when proved, 1 when not proved (an
 /// answer, not an error), 2 for bad input (one line on stderr naming the parameter, nothing on stdout).
@@ -33,6 +38,7 @@ struct CertifyOptions {
   std::string window;        ///< superstable: a window LO:HI in b (floating estimate) to certify with its edges
   std::string J0;            ///< covering: the segment J0 as TOP:T2 (its candidate ends, as certified_region records them)
   std::string J1;            ///< covering: the segment J1 as TOP:T2
+  std::string certificate;   ///< --certificate FILE: where to write the certificate (empty: none)
   std::string max_seconds = "60";  ///< the time budget of the process (kit/budget.hpp)
   std::string max_memory = "2";    ///< the memory budget of the process in GiB (kit/budget.hpp)
 };

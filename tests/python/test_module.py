@@ -283,6 +283,37 @@ def test_ctrl_c_stops_a_long_call():
 
 
 @pytest.mark.crossval
+def test_certify_writes_the_certificate_of_the_cli(cli, tmp_path):
+    """certificate= writes the same bytes as `dfchaos certify --certificate`, and dfchaos-recheck accepts them."""
+    import os
+    import subprocess
+    mine, theirs = tmp_path / "py.json", tmp_path / "cli.json"
+    rec = dfchaos.certify("lemma1", b=(0.001, 0.0035), q=(0.73, 0.76), certificate=str(mine))
+    rc, out, err = cli.run("certify", "lemma1", "--b", "0.001:0.0035", "--q", "0.73:0.76", "--certificate", str(theirs))
+    assert rc == 0, err
+    assert mine.read_bytes() == theirs.read_bytes()
+    assert rec["certificate"]["bytes"] == os.path.getsize(mine) and len(rec["certificate"]["sha256"]) == 64
+    checker = os.path.join(os.path.dirname(cli.path), "dfchaos-recheck")
+    proc = subprocess.run([checker, str(mine)], capture_output=True, text=True)
+    assert proc.returncode == 0 and proc.stdout.startswith("OK "), proc.stdout + proc.stderr
+
+
+@pytest.mark.failure
+def test_certify_certificate_refusals(tmp_path):
+    """No certificate for a statement without a format, none for a statement not proved, OSError for a bad path."""
+    with pytest.raises(dfchaos.InvalidParameter, match="certificate"):
+        dfchaos.certify("covering", b=0.001, q=0.85, certificate=str(tmp_path / "c.json"))
+    rec = dfchaos.certify("lemma1", b=0.05, q=0.73, certificate=str(tmp_path / "c.json"))
+    assert rec["proved"] is False and rec["certificate"]["written"] is False
+    with pytest.raises(dfchaos.InvalidParameter, match="certificate"):
+        dfchaos.certify("vartheta0", certificate="")
+    (tmp_path / "plain").write_text("a file\n")
+    with pytest.raises(OSError, match="certificate"):
+        dfchaos.certify("vartheta0", certificate=str(tmp_path / "plain" / "c.json"))
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["plain"]
+
+
+@pytest.mark.crossval
 def test_certify_matches_the_cli_and_refuses_bad_input(cli):
     """dfchaos.certify gives the record of `dfchaos certify`, as a dict."""
     import json

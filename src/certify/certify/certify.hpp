@@ -54,6 +54,9 @@ struct Request {
 struct Result {
   bool proved = false;  ///< the statement was proved in ball arithmetic
   kit::Json record;     ///< statement, parameters, enclosures, verdict and on failure the failed step
+  /// When proved and the statement has a certificate format (certificate.hpp: vartheta0, lemma1,
+  /// b0): the certificate, the witnesses for the independent checker; else null.
+  kit::Json certificate = kit::Json();
 };
 
 /// Whether `what` names a statement. Lets a caller check the name before reading other input.

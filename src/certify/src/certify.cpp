@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "certify/certificate.hpp"
 #include "certify/json.hpp"
 #include "dfchaos/errors.hpp"
 #include "dfchaos/parameters.hpp"
@@ -11,6 +12,9 @@ namespace dfchaos::certify {
 namespace {
 
 using namespace dfchaos::certified;
+
+/// The record's "statement" (every record has one).
+std::string claim_of(const Result& c) { return c.record.value().at("statement").get<std::string>(); }
 
 /// x itself, after checking |x| <= kMaxParameter (which also refuses NaN). @throws InvalidParameter naming `name`.
 double bounded(const std::string& name, double x) {
@@ -73,12 +77,16 @@ Result certify(const Request& r) {
   check_statement(r.what);
   if (r.what == "vartheta0") {
     const Vartheta0 v = certify_vartheta0(200);
-    return {v.verdict.proved, to_json(v)};
+    Result c{v.verdict.proved, to_json(v)};
+    if (c.proved) c.certificate = certificate_vartheta0(v, claim_of(c));
+    return c;
   }
   if (r.what == "lemma1") {
     const ParameterBox box = box_from(r, true, true);
     const Lemma1Proof p = certify_lemma1(ParameterBalls(box));
-    return {p.verdict.proved, to_json(box, p)};
+    Result c{p.verdict.proved, to_json(box, p)};
+    if (c.proved) c.certificate = certificate_lemma1(box.a, Range{box.b_lo, box.b_hi}, Range{box.q_lo, box.q_hi}, p, claim_of(c));
+    return c;
   }
   if (r.what == "b0") {
     const double a = bounded("a", r.a);
@@ -88,7 +96,9 @@ Result certify(const Request& r) {
     const double q = bounded("q", r.q->lo);
     if (!(q > 0 && q < a)) throw InvalidParameter("q", "0 < q < a", q);
     const Lemma1Bound p = lemma1_b0_lower_bound(a, q);
-    return {p.verdict.proved, to_json(a, q, p)};
+    Result c{p.verdict.proved, to_json(a, q, p)};
+    if (c.proved) c.certificate = certificate_b0(a, q, p, claim_of(c));
+    return c;
   }
   if (r.what == "discontinuities") {
     const ParameterBox box = box_from(r, false, false);

@@ -219,7 +219,10 @@ Lemma1Proof certify_lemma1(const ParameterBalls& m, int max_pieces) {
     const Ball u = lemma1_velocity_at_t2(m.a, Ball::interval(p.b_lo, p.b_hi), Ball::interval(p.q_lo, p.q_hi));
     r.u_at_t2 = first ? u : Ball::hull(r.u_at_t2, u);
     first = false;
-    if (u.is_negative()) continue;
+    if (u.is_negative()) {
+      r.sub_boxes.push_back({p.b_lo, p.b_hi, p.q_lo, p.q_hi});
+      continue;
+    }
     if (u.is_positive()) {
       r.verdict = Outcome::refute("Lemma 1: u(t2) < 0 (Eq. 8)", "u(t2) = " + u.str(8) + " > 0 at b in [" + format_double(p.b_lo) + ", " +
                                                                        format_double(p.b_hi) + "], q in [" + format_double(p.q_lo) + ", " + format_double(p.q_hi) + "]");
@@ -276,12 +279,16 @@ Lemma1Bound lemma1_b0_lower_bound(double a, double q, double resolution, int max
     std::vector<std::pair<double, double>> stack{{0.0, b_low}};
     int pieces = 0;
     bool ok = true;
+    r.b_pieces.clear();
     while (!stack.empty() && ok) {
       const auto [x, y] = stack.back();
       stack.pop_back();
       if (++pieces > max_pieces) { ok = false; break; }
       const Ball u = lemma1_velocity_at_t2(A, Ball::interval(x, y), Q);
-      if (u.is_negative()) continue;
+      if (u.is_negative()) {
+        r.b_pieces.push_back({x, y, q, q});
+        continue;
+      }
       const double mid = 0.5 * (x + y);
       if (u.is_positive() || !(mid > x && mid < y)) { ok = false; break; }
       stack.push_back({mid, y});

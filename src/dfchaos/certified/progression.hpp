@@ -22,6 +22,8 @@
 /// \f$0 < F < q\f$: the mass stays until \f$t_2\f$ and flies. Only \f$u(t_2) < 0\f$ needs computing.
 #pragma once
 
+#include <vector>
+
 #include "dfchaos/certified/ball.hpp"
 #include "dfchaos/certified/parameters.hpp"
 #include "dfchaos/certified/next_hit.hpp"
@@ -66,12 +68,22 @@ StopArcProof certify_stop_arc(const ParameterBalls& m, const StartSet& set, cons
 /// (b = 0 allowed; needs \f$|q - 2b| < a\f$, \f$2b < a\f$).
 Ball lemma1_velocity_at_t2(const Ball& a, const Ball& b, const Ball& q);
 
+/// One sub-box \f$[b_{lo}, b_{hi}] \times [q_{lo}, q_{hi}]\f$ (exact double ends) on which a proof showed
+/// Eq. (8) \f$u(t_2) < 0\f$: a witness of Lemma 1, written into certificates.
+struct Lemma1SubBox {
+  double b_lo = 0;  ///< lower end of b
+  double b_hi = 0;  ///< upper end of b
+  double q_lo = 0;  ///< lower end of q
+  double q_hi = 0;  ///< upper end of q
+};
+
 /// Lemma 1 over a parameter box.
 struct Lemma1Proof {
   Outcome verdict;   ///< proved: for every parameter of the box the progression from rest at t0 stops at t4 in (t1, t2)
   Ball u_at_t2;      ///< enclosure of Eq. (8) over the box (hull of the pieces)
   Ball t4;           ///< enclosure of the stop (point boxes only; else the whole of [t1, t2])
   int pieces = 0;    ///< sub-boxes used
+  std::vector<Lemma1SubBox> sub_boxes;  ///< (when proved) the leaves of the split, covering the box: u(t2) < 0 on each
 };
 
 /// Proves Lemma 1's conclusion over the box (sub-boxes split in b and q, at most `max_pieces`).
@@ -83,6 +95,7 @@ struct Lemma1Bound {
   double b_low = 0;        ///< the bound (a double)
   double b_float = 0;      ///< floating-point estimate of the first b with u(t2) = 0 (not certified)
   int pieces = 0;          ///< b-balls used in the proof
+  std::vector<Lemma1SubBox> b_pieces;  ///< (when proved) the leaves [x, y] (as b ranges, q = q_lo = q_hi) covering [0, b_low]
 };
 
 /// Searches the largest \f$b_{low} = b_{\mathrm{float}}(1 - \text{resolution})\f$ (shrinking by 10% on

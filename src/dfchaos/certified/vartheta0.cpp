@@ -28,6 +28,13 @@ Vartheta0 certify_vartheta0(long bits) {
   // f > 0 at hi, f < 0 at lo; the search stops where the midpoint is within rounding of the root
   // (the bracket is then as narrow as it gets)
   r.value = enclose_sign_change(f, hi, lo, static_cast<int>(4 * bits));
+  // The ends of the enclosure as exact numbers with proved signs: the witnesses of a certificate.
+  r.bracket_lo = r.value.lower_ball();
+  r.bracket_hi = r.value.upper_ball();
+  if (!f(r.bracket_lo).is_negative() || !f(r.bracket_hi).is_positive()) {
+    r.verdict = Outcome::fail("Eq. (1): bracket ends", "f < 0 < f at the ends of the enclosure not proved");
+    return r;
+  }
   r.sine = sin(r.value);
   r.value_double = correctly_rounded(r.value);
   r.sine_double = correctly_rounded(r.sine);

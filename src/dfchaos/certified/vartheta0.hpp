@@ -25,6 +25,8 @@ struct Vartheta0 {
   double sine_double = 0;      ///< the double nearest to \f$\sin\vartheta_0\f$
   bool rounding_certified = false;  ///< both enclosures lie strictly inside one rounding interval of a double
   long bits = 0;               ///< working precision
+  Ball bracket_lo;             ///< (when proved) an exact number with f(bracket_lo) < 0 proved: the witness below \f$\vartheta_0\f$
+  Ball bracket_hi;             ///< (when proved) an exact number with f(bracket_hi) > 0 proved: the witness above \f$\vartheta_0\f$
 };
 
 /// Encloses \f$\vartheta_0\f$ with `bits` bits of working precision (200 gives more than 50 digits).

@@ -1,0 +1,66 @@
+/// @file certificate.hpp
+/// @brief Certificates: the witnesses of a certified proof as a JSON document that an independent
+/// checker (`dfchaos-recheck`, src/recheck/, MPFI) verifies again without the prover's code.
+///
+/// A certificate holds the format name and version, the statement, the parameters as exact binary
+/// numbers (hexadecimal floating-point strings such as `"0x1.0624dd2f1a9fcp-10"`, which denote a
+/// binary number exactly, with a decimal beside them for humans) and every witness of the proof.
+/// The format, statement by statement, and what the checker does with it: docs/certificates.md.
+/// Statements with a certificate so far: vartheta0, lemma1, b0.
+#pragma once
+
+#include <cstddef>
+#include <filesystem>
+#include <string>
+
+#include "certify/certify.hpp"
+#include "dfchaos/certified/ball.hpp"
+#include "dfchaos/certified/progression.hpp"
+#include "dfchaos/certified/vartheta0.hpp"
+#include "kit/json.hpp"
+
+namespace dfchaos::certify {
+
+/// The format name written in every certificate (`"format"`).
+inline constexpr const char* kCertificateFormat = "dfchaos-certificate";
+/// The format version (`"version"`); a checker refuses any other.
+inline constexpr int kCertificateVersion = 1;
+
+/// Whether statement `what` has a certificate format (vartheta0, lemma1, b0).
+bool has_certificate(const std::string& what);
+
+/// The double x as a C99 hexadecimal floating-point string (`%a`: exactly x, e.g. "0x1p+0").
+std::string hex_double(double x);
+/// An exact ball (radius 0, finite) as a hexadecimal floating-point string with as many hex digits
+/// as its binary midpoint needs ("0x1.<digits>p<exponent>", or "0x0p+0").
+/// @throws std::logic_error if the ball is not exact and finite.
+std::string hex_exact(const certified::Ball& x);
+/// `{"hex": hex_double(x), "decimal": shortest decimal of x}`.
+kit::Json exact_number(double x);
+
+/// The certificate of Eq. (1): the bracket [lo, hi] around vartheta0 with exact ends, and the
+/// correctly rounded doubles of vartheta0 and sin vartheta0 (when certified). `v` must be proved;
+/// `claim` is the statement in words (the record's "statement"), as in every certificate below.
+kit::Json certificate_vartheta0(const certified::Vartheta0& v, const std::string& claim);
+/// The certificate of Lemma 1 over {a} x b x q: the parameters and the sub-boxes on which Eq. (8)
+/// u(t2) < 0 was shown. `p` must be proved.
+kit::Json certificate_lemma1(double a, const Range& b, const Range& q, const certified::Lemma1Proof& p, const std::string& claim);
+/// The certificate of a lower bound of b0(q): a, q, b_low and the b-intervals covering [0, b_low]
+/// on which Eq. (8) u(t2) < 0 was shown. `p` must be proved.
+kit::Json certificate_b0(double a, double q, const certified::Lemma1Bound& p, const std::string& claim);
+
+/// What was written: where, how many bytes, and their SHA-256.
+struct WrittenCertificate {
+  std::string path;    ///< the path as given
+  std::size_t bytes = 0;  ///< size of the file
+  std::string sha256;  ///< SHA-256 of its bytes, 64 hexadecimal digits
+};
+
+/// Writes the certificate to `path` whole or not at all (a temporary beside it, then renamed;
+/// kit::write_atomically). @throws kit::OutputError (bad_path() true when the place is unusable).
+WrittenCertificate write_certificate(const std::filesystem::path& path, const kit::Json& certificate);
+
+/// `{"path", "bytes", "sha256"}` of a written certificate, for the JSON record.
+kit::Json to_json(const WrittenCertificate& w);
+
+}  // namespace dfchaos::certify

@@ -1,0 +1,165 @@
+#include "certify/certificate.hpp"
+
+#include <cstdio>
+#include <stdexcept>
+
+#include <flint/fmpz.h>
+
+#include "certify/json.hpp"
+#include "kit/digest.hpp"
+#include "kit/output.hpp"
+
+namespace dfchaos::certify {
+
+namespace {
+
+/// The fields every certificate starts with.
+kit::Json header(const std::string& statement, const std::string& claim) {
+  kit::Json j = kit::Json::object();
+  j.set("format", kCertificateFormat);
+  j.set("version", kCertificateVersion);
+  j.set("statement", statement);
+  j.set("claim", claim);
+  return j;
+}
+
+/// `{"lo": exact_number(r.lo), "hi": exact_number(r.hi)}`.
+kit::Json exact_range(const Range& r) {
+  kit::Json j = kit::Json::object();
+  j.set("lo", exact_number(r.lo));
+  j.set("hi", exact_number(r.hi));
+  return j;
+}
+
+/// An array of hex_double strings.
+kit::Json hex_array(std::initializer_list<double> xs) {
+  kit::Json j = kit::Json::array();
+  for (double x : xs) j.push(hex_double(x));
+  return j;
+}
+
+}  // namespace
+
+bool has_certificate(const std::string& what) { return what == "vartheta0" || what == "lemma1" || what == "b0"; }
+
+std::string hex_double(double x) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%a", x);
+  return buf;
+}
+
+std::string hex_exact(const certified::Ball& x) {
+  if (!x.is_exact() || !x.is_finite()) throw std::logic_error("hex_exact: not an exact finite ball: " + x.str(20));
+  fmpz_t m, e, frac;
+  fmpz_init(m);
+  fmpz_init(e);
+  fmpz_init(frac);
+  arf_get_fmpz_2exp(m, e, arb_midref(x.get()));  // x = m 2^e, m odd (or 0)
+  std::string s;
+  if (fmpz_is_zero(m)) {
+    s = "0x0p+0";
+  } else {
+    if (fmpz_sgn(m) < 0) {
+      s = "-";
+      fmpz_neg(m, m);
+    }
+    const slong n = static_cast<slong>(fmpz_bits(m));  // m = 1.f * 2^(n-1)
+    const slong frac_bits = n - 1, pad = (4 - frac_bits % 4) % 4, digits = (frac_bits + pad) / 4;
+    fmpz_one(frac);
+    fmpz_mul_2exp(frac, frac, static_cast<ulong>(n - 1));
+    fmpz_sub(frac, m, frac);
+    fmpz_mul_2exp(frac, frac, static_cast<ulong>(pad));
+    s += "0x1";
+    if (digits > 0) {
+      char* h = fmpz_get_str(nullptr, 16, frac);
+      std::string hex(h);
+      flint_free(h);
+      hex.insert(0, static_cast<std::size_t>(digits) - hex.size(), '0');
+      while (!hex.empty() && hex.back() == '0') hex.pop_back();
+      if (!hex.empty()) s += "." + hex;
+    }
+    fmpz_add_si(e, e, n - 1);
+    const slong exponent = fmpz_get_si(e);
+    s += (exponent < 0 ? "p" : "p+") + std::to_string(exponent);
+  }
+  fmpz_clear(m);
+  fmpz_clear(e);
+  fmpz_clear(frac);
+  return s;
+}
+
+kit::Json exact_number(double x) {
+  kit::Json j = kit::Json::object();
+  j.set("hex", hex_double(x));
+  j.set("decimal", shortest_double(x));
+  return j;
+}
+
+kit::Json certificate_vartheta0(const certified::Vartheta0& v, const std::string& claim) {
+  if (!v.verdict.proved) throw std::logic_error("certificate_vartheta0: not proved");
+  kit::Json j = header("vartheta0", claim);
+  j.set("parameters", kit::Json::object());
+  kit::Json w = kit::Json::object();
+  kit::Json bracket = kit::Json::object();
+  for (const auto& [name, ball] : {std::pair<const char*, const certified::Ball*>{"lo", &v.bracket_lo}, {"hi", &v.bracket_hi}}) {
+    kit::Json end = kit::Json::object();
+    end.set("hex", hex_exact(*ball));
+    end.set("decimal", ball->mid_str(70));
+    bracket.set(name, end);
+  }
+  w.set("bracket", bracket);
+  if (v.rounding_certified) {
+    w.set("value_double", exact_number(v.value_double));
+    w.set("sine_double", exact_number(v.sine_double));
+  }
+  j.set("witnesses", w);
+  return j;
+}
+
+kit::Json certificate_lemma1(double a, const Range& b, const Range& q, const certified::Lemma1Proof& p, const std::string& claim) {
+  if (!p.verdict.proved) throw std::logic_error("certificate_lemma1: not proved");
+  kit::Json j = header("lemma1", claim);
+  kit::Json par = kit::Json::object();
+  par.set("a", exact_number(a));
+  par.set("b", exact_range(b));
+  par.set("q", exact_range(q));
+  j.set("parameters", par);
+  kit::Json boxes = kit::Json::array();
+  for (const certified::Lemma1SubBox& s : p.sub_boxes) boxes.push(hex_array({s.b_lo, s.b_hi, s.q_lo, s.q_hi}));
+  kit::Json w = kit::Json::object();
+  w.set("sub_boxes", boxes);
+  j.set("witnesses", w);
+  return j;
+}
+
+kit::Json certificate_b0(double a, double q, const certified::Lemma1Bound& p, const std::string& claim) {
+  if (!p.verdict.proved) throw std::logic_error("certificate_b0: not proved");
+  kit::Json j = header("b0", claim);
+  kit::Json par = kit::Json::object();
+  par.set("a", exact_number(a));
+  par.set("q", exact_number(q));
+  j.set("parameters", par);
+  kit::Json pieces = kit::Json::array();
+  for (const certified::Lemma1SubBox& s : p.b_pieces) pieces.push(hex_array({s.b_lo, s.b_hi}));
+  kit::Json w = kit::Json::object();
+  w.set("b_low", exact_number(p.b_low));
+  w.set("b_pieces", pieces);
+  j.set("witnesses", w);
+  return j;
+}
+
+WrittenCertificate write_certificate(const std::filesystem::path& path, const kit::Json& certificate) {
+  const std::string text = certificate.dump(1);
+  kit::write_atomically(kit::output_target(path, "certificate"), text);
+  return WrittenCertificate{path.string(), text.size(), kit::sha256_hex(text)};
+}
+
+kit::Json to_json(const WrittenCertificate& w) {
+  kit::Json j = kit::Json::object();
+  j.set("path", w.path);
+  j.set("bytes", static_cast<long long>(w.bytes));
+  j.set("sha256", w.sha256);
+  return j;
+}
+
+}  // namespace dfchaos::certify
