@@ -108,14 +108,19 @@ $(BUILD)/tables/build-info.tex: $(BUILD)/bin/dfchaos
 	@mkdir -p $(@D)
 	@$< provenance --latex > $@.tmp && mv $@.tmp $@
 
-report: $(FIGS) $(BUILD)/tables/build-info.tex $(wildcard $(BUILD)/bench/bench.tex)
+# Every certificate the experiments wrote, re-checked by the independent checker (a rejection fails
+# the reproduction); the report's table of certified claims with their certificates' SHA-256.
+$(BUILD)/tables/certificates.tex: $(STAMPS) $(BUILD)/bin/dfchaos-recheck scripts/recheck_certificates.py
+	@python3 scripts/recheck_certificates.py $(BUILD) $(BUILD)/bin/dfchaos-recheck
+
+report: $(FIGS) $(BUILD)/tables/build-info.tex $(BUILD)/tables/certificates.tex $(wildcard $(BUILD)/bench/bench.tex)
 	@bash scripts/build-report.sh $(BUILD)
 
 claims-map: $(STAMPS)
 	@python3 scripts/claims_map.py $(BUILD) .
 
 manifest:
-	@cd $(BUILD) && find data tables -type f ! -name '*.tmp' | LC_ALL=C sort | xargs sha256sum > MANIFEST.sha256
+	@cd $(BUILD) && find data tables $$(test -d certificates && echo certificates) -type f ! -name '*.tmp*' | LC_ALL=C sort | xargs sha256sum > MANIFEST.sha256
 	@echo "manifest: $(BUILD)/MANIFEST.sha256 ($$(wc -l < $(BUILD)/MANIFEST.sha256) files)"
 
 docs: deps-report configure

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "certify/certificate.hpp"
 #include "certify/json.hpp"
 #include "dfchaos/superstable.hpp"
 #include "kit/experiment.hpp"
@@ -76,7 +77,9 @@ const Experiment experiment{
                 data("discontinuities", "Lemma 2: the discontinuities z_k of T1, enclosed, with T1(z_k) and a lower bound of the jump"),
                 data("b0", "certified lower bounds of b0(q): Lemma 1 holds for every b in (0, b0_lower_bound]"),
                 data("windows", "superstability windows at q/a = 0.85: the certified brackets of both edges"),
-                latex("certified_claims", "the certified results: enclosures, outcomes, proof sizes")},
+                latex("certified_claims", "the certified results: enclosures, outcomes, proof sizes"),
+                certificate("cert.*", "the witnesses of the proofs that have a certificate format (docs/certificates.md), one file per "
+                                      "claim (CLAIM.json) or per part of a claim (CLAIM--PART.json), for dfchaos-recheck")},
     .body = [](Run& run) {
         Output& out = run.out;
         const int max_period = run.count_int("max-period");
@@ -101,6 +104,7 @@ const Experiment experiment{
           auto& c0 = certified_claim(out, "cert.eq1.vartheta0", "Eq. (1)", statement_vartheta0(), to_json(v), v.verdict.proved && v.rounding_certified,
                                      &v.verdict);
           c0.evidence("seconds", secs);
+          if (v.verdict.proved) run.certificate("cert.eq1.vartheta0", certificate_text(certificate_vartheta0(v, statement_vartheta0())));
           // The paper prints 0.81047 and 0.724611: correctly rounded to 5 and 6 decimals iff the balls
           // lie in [0.810465, 0.810475) and [0.7246105, 0.7246115).
           const bool d1 = le(Ball::decimal("0.810465"), v.value) && lt(v.value, Ball::decimal("0.810475"));
@@ -138,6 +142,9 @@ const Experiment experiment{
             const Lemma1Proof l = certify_lemma1(ParameterBalls(box));
             auto& c = certified_claim(out, std::string("cert.lemma1.") + pt.tag, "Lemma 1", statement_lemma1(box), to_json(box, l), l.verdict.proved, &l.verdict);
             c.parameter_object(params);
+            if (l.verdict.proved)
+              run.certificate(std::string("cert.lemma1.") + pt.tag,
+                              certificate_text(certificate_lemma1(1.0, Range::point(pt.b), Range::point(pt.q), l, statement_lemma1(box))));
             const auto [t4_mid, t4_rad] = l.t4.enclosing_doubles();
             tl1.row({std::string(pt.tag), pt.q, pt.b, static_cast<long long>(l.verdict.proved), l.u_at_t2.mid(), t4_mid, t4_rad});
           }
@@ -289,6 +296,11 @@ const Experiment experiment{
             const Lemma1Bound l = lemma1_b0_lower_bound(1.0, q);
             all = all && l.verdict.proved;
             arr.push(to_json(1.0, q, l));
+            char part[32];
+            std::snprintf(part, sizeof part, "--q%.2f", q);  // the grid's q/a are k/100
+            if (l.verdict.proved)
+              run.certificate(std::string("cert.lemma1.b0_grid") + part,
+                              certificate_text(certificate_b0(1.0, q, l, statement_b0(1.0, q, l.b_low))));
             t.row({q, static_cast<long long>(l.verdict.proved), l.b_low, l.b_float, static_cast<long long>(l.pieces)});
           }
           const double secs = since(t0);

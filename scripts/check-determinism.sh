@@ -8,7 +8,7 @@
 set -euo pipefail
 build=${1:-build}
 abs=$(cd "$build" && pwd)
-manifest() { (cd "$1" && find data tables -type f ! -name '*.tmp' ! -name 'build-info.tex' | LC_ALL=C sort | xargs sha256sum); }
+manifest() { (cd "$1" && find data tables $(test -d certificates && echo certificates) -type f ! -name '*.tmp*' ! -name 'build-info.tex' | LC_ALL=C sort | xargs sha256sum); }
 rm -rf "$abs/determinism"  # no manifest of an earlier check is compared
 threads=(1 2)
 if [[ -f "$abs/MANIFEST.sha256" && $(nproc) -ge 2 && -z "${OMP_NUM_THREADS:-}" ]]; then threads=(1); fi

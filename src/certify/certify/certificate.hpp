@@ -49,6 +49,9 @@ kit::Json certificate_lemma1(double a, const Range& b, const Range& q, const cer
 /// on which Eq. (8) u(t2) < 0 was shown. `p` must be proved.
 kit::Json certificate_b0(double a, double q, const certified::Lemma1Bound& p, const std::string& claim);
 
+/// The text of a certificate as every writer stores it (the tool, Python and the experiments).
+std::string certificate_text(const kit::Json& certificate);
+
 /// What was written: where, how many bytes, and their SHA-256.
 struct WrittenCertificate {
   std::string path;    ///< the path as given

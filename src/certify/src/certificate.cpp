@@ -148,8 +148,10 @@ kit::Json certificate_b0(double a, double q, const certified::Lemma1Bound& p, co
   return j;
 }
 
+std::string certificate_text(const kit::Json& certificate) { return certificate.dump(1); }
+
 WrittenCertificate write_certificate(const std::filesystem::path& path, const kit::Json& certificate) {
-  const std::string text = certificate.dump(1);
+  const std::string text = certificate_text(certificate);
   kit::write_atomically(kit::output_target(path, "certificate"), text);
   return WrittenCertificate{path.string(), text.size(), kit::sha256_hex(text)};
 }

@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# The certificates that certified_claims writes (as in make reproduce, here in --fast mode) are all
+# accepted by dfchaos-recheck through scripts/recheck_certificates.py, which lists them with their
+# SHA-256; a certificate changed after the fact makes the script fail and write no table.
+# usage: recheck_experiment.sh CERTIFIED_CLAIMS DFCHAOS_RECHECK SCRIPT PYTHON
+set -u
+exe=$1 checker=$2 script=$3 py=$4
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+fails=0
+check() { if eval "$2"; then echo "ok:   $1"; else echo "FAIL: $1"; fails=$((fails + 1)); fi; }
+"$exe" --fast --out "$tmp" >/dev/null 2>"$tmp/log" || { cat "$tmp/log"; echo "FAIL: certified_claims --fast"; exit 1; }
+n=$(ls "$tmp"/certificates/*.json 2>/dev/null | wc -l)
+check "certified_claims wrote certificates ($n)" '((n >= 3))'
+check "the checker accepts every one" '"$py" "$script" "$tmp" "$checker" >"$tmp/out" 2>&1'
+cat "$tmp/out"
+rows=$(grep -c '{accepted}$' "$tmp/tables/certificates.tex" 2>/dev/null || echo 0)
+check "one accepted row per certificate ($rows of $n)" '((rows == n))'
+for f in "$tmp"/certificates/*.json; do
+  sha=$(sha256sum "$f" | cut -d' ' -f1)
+  check "$(basename "$f")'s row carries its SHA-256" 'grep -q "{$sha}" "$tmp/tables/certificates.tex"'
+done
+# Tamper: the lemma1 certificate of point A claims another q, which its sub-boxes do not cover.
+victim=$tmp/certificates/cert.lemma1.A.json
+check "the lemma1 certificate of point A exists" '[[ -f $victim ]]'
+before=$(sha256sum "$tmp/tables/certificates.tex")
+"$py" - "$victim" <<'PY'
+import json, sys
+p = sys.argv[1]
+d = json.load(open(p))
+for end in ("lo", "hi"):   # q = 0.75 instead of 0.85: the sub-boxes no longer cover it
+    d["parameters"]["q"][end]["hex"] = "0x1.8p-1"
+json.dump(d, open(p, "w"), indent=1)
+PY
+check "a tampered certificate fails the script" '! "$py" "$script" "$tmp" "$checker" >"$tmp/out2" 2>&1'
+check "and names the file" 'grep -q "cert.lemma1.A.json" "$tmp/out2"'
+check "and leaves the table as it was" '[[ "$(sha256sum "$tmp/tables/certificates.tex")" == "$before" ]]'
+echo "recheck_experiment: $fails failures"
+exit $((fails > 0))
