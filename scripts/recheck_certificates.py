@@ -11,8 +11,10 @@ its SHA-256 and size are recorded. Writes BUILD/tables/certificates.tex, one
 row with the claim id as file stem, "---" for hash and size, and status "none" per certified claim
 that has no certificate yet, and BUILD/tables/certificates-macros.tex with \\dfcCertificatesAccepted,
 \\dfcCertifiedClaims and \\dfcCertifiedClaimsWithout. Exits 1, writing nothing, when the checker
-rejects a certificate or a certificate names no certified claim; the table is written whole (a
-temporary file renamed into place).
+rejects a certificate, when a certificate names no certified claim, and when an accepted certificate
+does not prove what its claim states (bind(): the claim holds, and the certificate's claim text,
+parameters and decisive values, b_low or the rounded doubles of vartheta0, are the claim's record);
+the tables are written whole (a temporary file renamed into place).
 """
 import glob
 import hashlib
@@ -24,6 +26,49 @@ import sys
 
 def fail(msg):
     sys.exit(f"recheck_certificates: {msg}")
+
+
+def exact(x):
+    """The binary number of an exact hexadecimal float string."""
+    return float.fromhex(x)
+
+
+def bind(path, cert, claim, part):
+    """Checks that the certificate (already accepted by the checker) proves what the claim states:
+    the claim holds, and the certificate's claim text, statement parameters and decisive values are
+    those of the claim's record (for a claim resting on several proofs, the record of its PART).
+    Returns None, or what differs."""
+    if claim["verdict"] != "holds":
+        return f"its claim {claim['id']} does not hold (verdict {claim['verdict']})"
+    ev = claim["evidence"]
+    if "grid" in ev:  # one certificate per proof of the grid, named by its q/a
+        recs = {f"q{float(r['parameters']['q']):.2f}": r for r in ev["grid"]}
+        if part not in recs:
+            return f"part '{part}' is none of the claim's proofs ({', '.join(recs)})"
+        rec = recs[part]
+    elif part is not None:
+        return f"part '{part}' given, but the claim rests on one proof"
+    else:
+        rec = ev
+    if not rec.get("proved"):
+        return "the claim's record of this proof is not proved"
+    if cert.get("claim") != rec.get("statement"):
+        return "its claim text is not the claim's statement"
+    cp, rp = cert.get("parameters", {}), rec.get("parameters", {})
+    if set(cp) != set(rp):
+        return f"parameters {sorted(cp)} instead of {sorted(rp)}"
+    for k, v in cp.items():
+        ends = [v["hex"]] if "hex" in v else [v["lo"]["hex"], v["hi"]["hex"]]
+        if any(exact(e) != float(rp[k]) for e in ends):
+            return f"parameter {k} is not the claim's {rp[k]!r}"
+    w = cert.get("witnesses", {})
+    if cert.get("statement") == "b0" and exact(w["b_low"]["hex"]) != float(rec["b0_lower_bound"]):
+        return "its b_low is not the claim's b0 lower bound"
+    if cert.get("statement") == "vartheta0" and rec.get("rounding_certified"):
+        for key, want in (("value_double", "vartheta0_double"), ("sine_double", "sin_vartheta0_double")):
+            if key not in w or exact(w[key]["hex"]) != float(rec[want]):
+                return f"its {key} is missing or not the claim's correctly rounded double"
+    return None
 
 
 def write(path, text):
@@ -41,10 +86,14 @@ def main():
     if not os.access(recheck, os.X_OK):
         fail(f"the checker {recheck} is not an executable")
     claims = []  # certified claim ids, in experiment and claim order
+    record = {}  # id -> the claim
     for path in sorted(glob.glob(os.path.join(build, "claims", "*.json"))):
         with open(path) as f:
             doc = json.load(f)
-        claims += [c["id"] for c in doc["claims"] if c["evidence_kind"] == "certified"]
+        for c in doc["claims"]:
+            if c["evidence_kind"] == "certified":
+                claims.append(c["id"])
+                record[c["id"]] = c
     by_claim = {cid: [] for cid in claims}
     for path in sorted(glob.glob(os.path.join(build, "certificates", "*.json"))):
         stem = os.path.basename(path)[: -len(".json")]
@@ -64,6 +113,13 @@ def main():
             run = subprocess.run([recheck, path], capture_output=True, text=True, timeout=600)
             if run.returncode != 0:
                 rejected.append(f"{path}: exit {run.returncode}: {(run.stdout + run.stderr).strip()}")
+                continue
+            # The checker verified the file's own statement and parameters; they must be the claim's.
+            stem = os.path.basename(path)[: -len(".json")]
+            part = stem.split("--", 1)[1] if "--" in stem else None
+            why = bind(path, json.loads(data), record[cid], part)
+            if why:
+                rejected.append(f"{path}: accepted by the checker, but not a proof of claim {cid}: {why}")
                 continue
             accepted += 1
             rows.append(f"\\dfccertrow{{{cid}}}{{{os.path.basename(path)[: -len('.json')]}}}{{{hashlib.sha256(data).hexdigest()}}}"

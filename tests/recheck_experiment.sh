@@ -35,5 +35,12 @@ PY
 check "a tampered certificate fails the script" '! "$py" "$script" "$tmp" "$checker" >"$tmp/out2" 2>&1'
 check "and names the file" 'grep -q "cert.lemma1.A.json" "$tmp/out2"'
 check "and leaves the table as it was" '[[ "$(sha256sum "$tmp/tables/certificates.tex")" == "$before" ]]'
+# Swap: a valid certificate of another statement filed under point B's Lemma 1 claim. The checker
+# accepts the file on its own; the script must see that it does not prove the claim.
+rm -rf "$tmp/swap" && mkdir -p "$tmp/swap" && "$exe" --fast --out "$tmp/swap" >/dev/null 2>&1
+cp "$tmp/swap/certificates/cert.eq1.vartheta0.json" "$tmp/swap/certificates/cert.lemma1.B.json"
+check "the checker alone accepts the swapped file" '"$checker" "$tmp/swap/certificates/cert.lemma1.B.json" >/dev/null'
+check "a certificate of another statement filed under a claim fails the script" \
+      '! "$py" "$script" "$tmp/swap" "$checker" >"$tmp/out3" 2>&1 && grep -q "not a proof of claim cert.lemma1.B" "$tmp/out3"'
 echo "recheck_experiment: $fails failures"
 exit $((fails > 0))
