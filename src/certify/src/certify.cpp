@@ -55,13 +55,15 @@ ParameterBox box_from(const Request& r, bool need_q, bool allow_box) {
   return ParameterBox{a, blo, bhi, qlo, qhi};
 }
 
-/// The candidate of a given segment, its ends checked to be finite and inside [t2, 3pi/2] at the
-/// box's lower corner (where the covering segments of Lemma 4 lie), in the order top, t2.
+/// The candidate of a given segment, its ends checked to be finite and inside [t2(b_hi), 3pi/2] (t2
+/// grows with b: a covering segment of Lemma 4 lies above t2 for every b of the box), in the order
+/// top, t2.
 Candidate candidate(const std::string& name, const SegmentEnds& e, const ParameterBox& box) {
-  const Parameters corner(box.a, box.b_lo, box.q_lo);
+  const Parameters corner(box.a, box.b_hi, box.q_lo);
   const double t2 = *corner.t2(), top = 1.5 * M_PI;
   for (double x : {e.theta_top, e.theta_t2})
-    if (!(x >= t2 && x <= top)) throw InvalidParameter(name, "both ends in [t2, 3pi/2] = [" + format_double(t2) + ", " + format_double(top) + "]", x);
+    if (!(x >= t2 && x <= top))
+      throw InvalidParameter(name, "both ends in [t2(b_hi), 3pi/2] = [" + format_double(t2) + ", " + format_double(top) + "]", x);
   return Candidate{e.theta_top, e.theta_t2};
 }
 

@@ -84,8 +84,8 @@ std::string statement_superstable() {
   return "Theorem 2's conclusion at the double values of a, b, q: T1(t2) and theta2(t2) are enclosed, theta2(t2) mod 2pi satisfies "
          "the printed condition ((21): in (t1, t2); (22): in (t3, 2pi) u [0, t0)) with certified margins, and T = t2 on the whole "
          "of [t2, t2 + eps] (closed balls on which the chain is proved to stop before t2): T sends [t2, t2 + eps] to t2, so t2 is "
-         "a superstable fixed point. This is Theorem 2 only where its hypotheses (2) hold as well: 'theorem2' is true when both "
-         "the conclusion and assumptions (2) are proved, false otherwise.";
+         "a superstable fixed point. This is Theorem 2 only where its hypotheses hold as well, (2) with (22) or (21) with (23): "
+         "'theorem2' is true when the conclusion and one of those pairs are proved, false otherwise.";
 }
 std::string statement_window() {
   return "Superstability window in b at fixed a, q: for every b in [left_in, right_in], T(t2(b)) = t2 (proved over b-boxes, with "
@@ -181,7 +181,9 @@ Json to_json(double a, double b, double q, const SuperstableProof& p) {
   j.set("condition", p.condition).set("T1_at_t2", ball_json(p.T1, 20)).set("theta2_at_t2", ball_json(p.theta2, 20));
   j.set("theta2_phase", ball_json(p.theta2_phase, 15)).set("epsilon", p.eps).set("balls", p.balls);
   j.set("used_lemma1", p.used_lemma1).set("assumptions_2", p.eq2).set("assumptions_23", p.eq23);
-  j.set("theorem2", p.verdict.proved && p.eq2).set("seconds", p.seconds);
+  // Theorem 2's hypotheses: (2) and (22), or (21) and (23).
+  const bool hypotheses = (p.eq2 && p.condition == 22) || (p.eq23 && p.condition == 21);
+  j.set("theorem2", p.verdict.proved && hypotheses).set("seconds", p.seconds);
   return j;
 }
 
