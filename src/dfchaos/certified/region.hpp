@@ -44,10 +44,11 @@ struct RegionBox {
   bool proved = false;          ///< Lemma 4 proved for every parameter in it
   int sub_boxes = 0;            ///< sub-boxes of the proof (1 unless it was split)
   std::string failed_step;      ///< when not proved
-  /// When proved: the candidate ends of the proved segments J0 and J1 (of the last sub-box when the
-  /// box was split), so that the box can be re-proved alone (`dfchaos certify covering --J0 --J1`)
-  /// without a fresh search for candidates.
-  Candidate J0, J1;
+  /// When proved: the candidate ends of the proved segment J0 (of the last sub-box when the box was
+  /// split), so that the box can be re-proved alone (`dfchaos certify covering --J0 --J1`) without
+  /// a fresh search for candidates.
+  Candidate J0;
+  Candidate J1;  ///< the same for J1
 };
 
 /// The tiling of one column.
