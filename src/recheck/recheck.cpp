@@ -13,11 +13,11 @@
 #include <mpfr.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
-#include <regex>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -106,12 +106,36 @@ const json& field(const json& j, const std::string& key, const std::string& wher
   return j.at(key);
 }
 
+/// Whether s has the form -?0x H(.H+)? p[+-]?D{1,6} (H a hexadecimal digit, D a decimal digit).
+bool is_hex_float(const std::string& s) {
+  std::size_t i = 0;
+  const auto digits = [&](auto is_digit, std::size_t at_most) {
+    std::size_t n = 0;
+    while (i < s.size() && n < at_most && is_digit(static_cast<unsigned char>(s[i]))) ++i, ++n;
+    return n;
+  };
+  const auto hex = [](int c) { return std::isxdigit(c) != 0; };
+  const auto dec = [](int c) { return std::isdigit(c) != 0; };
+  if (i < s.size() && s[i] == '-') ++i;
+  if (s.compare(i, 2, "0x") != 0) return false;
+  i += 2;
+  if (digits(hex, 1) != 1) return false;
+  if (i < s.size() && s[i] == '.') {
+    ++i;
+    if (digits(hex, s.size()) == 0) return false;
+  }
+  if (i >= s.size() || s[i] != 'p') return false;
+  ++i;
+  if (i < s.size() && (s[i] == '+' || s[i] == '-')) ++i;
+  const std::size_t e = digits(dec, 6);
+  return e >= 1 && i == s.size();
+}
+
 /// An exact hexadecimal floating-point string ("0x1.8p-3"), parsed exactly at kPrecision bits.
 Num exact(const json& j, const std::string& where) {
-  static const std::regex hex("-?0x[0-9a-fA-F](\\.[0-9a-fA-F]+)?p[+-]?[0-9]{1,6}");
   if (!j.is_string()) throw Malformed("'" + where + "' is not a string");
   const std::string s = j.get<std::string>();
-  if (!std::regex_match(s, hex)) throw Malformed("'" + where + "' = '" + s + "' is not an exact hexadecimal float");
+  if (!is_hex_float(s)) throw Malformed("'" + where + "' = '" + s + "' is not an exact hexadecimal float");
   Num n;
   char* end = nullptr;
   if (mpfr_strtofr(n.x, s.c_str(), &end, 16, MPFR_RNDN) != 0 || *end != '\0')
