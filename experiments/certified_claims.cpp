@@ -367,7 +367,7 @@ const Experiment experiment{
                                      "(certified), but the progression from rest at t0 does not stop before t2 (u(t2) > 0 > u(t3), Eq. 8 reversed): "
                                      "it stops at t4 in (t2, t3) where the mass flies (scenario D), so T(t2) = t4 != t2 and t2 is not superstable.",
                                      e, x.verdict.proved, &x.verdict);
-          ce.parameter_object(Json::object().set("a", 1.0).set("b", bx).set("q", q));
+          ce.erratum().parameter_object(Json::object().set("a", 1.0).set("b", bx).set("q", q));
           const Ball::Printed t4 = x.T.printed(10);  // a ball that encloses t4 = T(t2)
           tex_row("Theorem 2 (erratum)", "(0.85, " + num(bx) + ")",
                   x.verdict.proved ? "(2), (22) hold; $T(t_2)=t_4\\in[" + t4.mid + "\\pm" + latex_number(t4.rad) +

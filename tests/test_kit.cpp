@@ -127,6 +127,19 @@ TEST(Claims, PrecisionLimitedIsInconclusiveNeverFails) {
   EXPECT_NE(c.to_json().dump().find("\"evidence_kind\": \"precision-limited\""), std::string::npos);
 }
 
+TEST(Claims, AnErratumThatHoldsIsShownAsARefutationNeverAsHolds) {
+  Claim c("x.err", "Theorem 2", EvidenceKind::Certified, "the paper's statement fails here");
+  c.erratum().holds(true);
+  EXPECT_EQ(c.verdict(), Verdict::Holds);
+  EXPECT_STREQ(c.report_verdict(), "refutes");
+  const std::string j = c.to_json().dump();
+  EXPECT_NE(j.find("\"origin\": \"erratum\""), std::string::npos);
+  EXPECT_NE(j.find("\"report_verdict\": \"refutes\""), std::string::npos);
+  Claim d("x.err2", "Theorem 2", EvidenceKind::Certified, "not shown");
+  d.erratum().holds(false);
+  EXPECT_STREQ(d.report_verdict(), "fails");
+}
+
 TEST(Claims, RejectsMalformedIds) {
   EXPECT_THROW(Claim("bad id", "", EvidenceKind::Sampled, "s"), std::logic_error);
   EXPECT_THROW(Claim("", "", EvidenceKind::Sampled, "s"), std::logic_error);

@@ -23,7 +23,9 @@ const char* evidence_kind_name(EvidenceKind k);
 
 /// Who makes the claim: the paper asserts it, or it is ours (a hypothesis, a finding, or a
 /// cross-check of this implementation).
-enum class Origin { Paper, Ours };
+/// Whose statement a claim is: the paper's, ours (a hypothesis, finding or cross-check), or an
+/// erratum (ours: when it holds, a statement of the paper is refuted).
+enum class Origin { Paper, Ours, Erratum };
 /// "paper" or "ours".
 const char* origin_name(Origin o);
 
@@ -53,6 +55,9 @@ class Claim {
 
   /// Marks the claim as ours (a hypothesis, finding or cross-check), not the paper's.
   Claim& ours();
+  /// Marks the claim as an erratum: ours, and when it holds the paper's statement it names is refuted
+  /// (the report shows "refutes the paper", never "holds").
+  Claim& erratum();
   /// The experiment does not assert this claim: its failure is reported, not an error (exit 0).
   Claim& not_expected();
   /// Records a parameter the claim was checked at.
@@ -78,7 +83,10 @@ class Claim {
   const std::string& reference() const { return reference_; }  ///< where in the paper
   std::string statement() const;                               ///< the statement, tolerance filled in
   EvidenceKind kind() const { return kind_; }                  ///< kind of evidence
-  Origin origin() const { return origin_; }                    ///< paper or ours
+  Origin origin() const { return origin_; }                    ///< paper, ours or erratum
+  /// The verdict as the report words it: verdict_name(), except that an erratum that holds is
+  /// "refutes" (the paper's statement is refuted).
+  const char* report_verdict() const;
   Verdict verdict() const { return verdict_; }                 ///< the verdict
   bool expected() const { return expected_; }                  ///< asserted by the experiment
   /// The claim as a JSON object (id, reference, statement, origin, evidence_kind, parameters,

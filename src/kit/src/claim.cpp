@@ -20,7 +20,7 @@ const char* evidence_kind_name(EvidenceKind k) {
   return "?";
 }
 
-const char* origin_name(Origin o) { return o == Origin::Paper ? "paper" : "ours"; }
+const char* origin_name(Origin o) { return o == Origin::Paper ? "paper" : o == Origin::Ours ? "ours" : "erratum"; }
 
 const char* verdict_name(Verdict v) {
   switch (v) {
@@ -43,6 +43,13 @@ Claim::Claim(std::string id, std::string reference, EvidenceKind kind, std::stri
 Claim& Claim::ours() {
   origin_ = Origin::Ours;
   return *this;
+}
+Claim& Claim::erratum() {
+  origin_ = Origin::Erratum;
+  return *this;
+}
+const char* Claim::report_verdict() const {
+  return origin_ == Origin::Erratum && verdict_ == Verdict::Holds ? "refutes" : verdict_name(verdict_);
 }
 Claim& Claim::not_expected() {
   expected_ = false;
@@ -129,7 +136,7 @@ Json Claim::to_json() const {
   j.set("id", id_).set("reference", reference_).set("reference_tex", latex_escape(reference_)).set("statement", statement());
   j.set("origin", origin_name(origin_)).set("evidence_kind", evidence_kind_name(kind_));
   j.set("parameters", parameters_).set("evidence", evidence_);
-  j.set("verdict", verdict_name(verdict_)).set("expected_to_hold", expected_);
+  j.set("verdict", verdict_name(verdict_)).set("report_verdict", report_verdict()).set("expected_to_hold", expected_);
   return j;
 }
 
