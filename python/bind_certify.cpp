@@ -59,9 +59,10 @@ py::object certify_py(const std::string& what, double a, std::optional<NumberOrB
   certify::check_statement(what);
   if (certificate && certificate->empty()) throw InvalidParameter("certificate", "a file name (got '')");
   if (certificate && !certify::has_certificate(what))
-    throw InvalidParameter("certificate", "a statement with a certificate format: vartheta0, lemma1 or b0 (not certify " + what + ")");
+    throw InvalidParameter("certificate", std::string("a statement with a certificate format: ") + certify::kCertificateStatements + " (not certify " + what + ")");
   certify::Request r;
   r.what = what;
+  r.certificate = certificate.has_value();
   r.a = finite("a", a);
   if (b) r.b = range("b", *b);
   if (q) r.q = range("q", *q);
@@ -75,7 +76,7 @@ py::object certify_py(const std::string& what, double a, std::optional<NumberOrB
   }
   if (certificate) {
     if (c.certificate.value().is_null()) {
-      c.record.set("certificate", kit::Json::object().set("written", false).set("reason", "not proved: no certificate"));
+      c.record.set("certificate", kit::Json::object().set("written", false).set("reason", c.no_certificate.empty() ? std::string("not proved: no certificate") : "not written: " + c.no_certificate));
     } else {
       try {
         c.record.set("certificate", certify::to_json(certify::write_certificate(*certificate, c.certificate)));

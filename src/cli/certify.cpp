@@ -45,9 +45,10 @@ certify::SegmentEnds segment_ends(const std::string& name, const std::string& s)
 certify::Request request_from(const CertifyOptions& o) {
   certify::check_statement(o.what);
   if (!o.certificate.empty() && !certify::has_certificate(o.what))
-    throw InvalidParameter("certificate", "a statement with a certificate format: vartheta0, lemma1 or b0 (not certify " + o.what + ")");
+    throw InvalidParameter("certificate", std::string("a statement with a certificate format: ") + certify::kCertificateStatements + " (not certify " + o.what + ")");
   certify::Request r;
   r.what = o.what;
+  r.certificate = !o.certificate.empty();
   r.period = o.period;
   r.segment = o.segment;
   if (o.what == "vartheta0") return r;
@@ -81,7 +82,7 @@ CLI::App* add_certify(CLI::App& app, CertifyOptions& o) {
   c->add_option("--J0", o.J0, "covering: prove this segment J0, given as TOP:T2 (the phases where T >= 3pi/2 and T = t2; e.g. from "
                               "certified_region's data), with --J1, instead of searching candidates");
   c->add_option("--J1", o.J1, "covering: the segment J1 (right of J0), as TOP:T2");
-  c->add_option("--certificate", o.certificate, "write the proof's certificate (JSON witnesses for dfchaos-recheck) to FILE, whole or not at all; vartheta0, lemma1, b0")
+  c->add_option("--certificate", o.certificate, "write the proof's certificate (JSON witnesses for dfchaos-recheck) to FILE, whole or not at all; vartheta0, lemma1, b0, covering")
       ->type_name("FILE")
       ->check([](const std::string& s) { return s.empty() ? std::string("certificate: a file name (got '')") : std::string(); });
   c->add_option("--max-seconds", o.max_seconds, "time budget: give up (exit 1, one line) after S seconds, 0 < S <= 1e6 [default 60]")->type_name("S");
@@ -108,7 +109,7 @@ int run_certify(const CertifyOptions& o) {
   }
   if (!o.certificate.empty()) {
     if (c.certificate.value().is_null()) {
-      c.record.set("certificate", kit::Json::object().set("written", false).set("reason", "not proved: no certificate"));
+      c.record.set("certificate", kit::Json::object().set("written", false).set("reason", c.no_certificate.empty() ? std::string("not proved: no certificate") : "not written: " + c.no_certificate));
     } else {
       try {
         c.record.set("certificate", certify::to_json(certify::write_certificate(o.certificate, c.certificate)));
@@ -120,6 +121,10 @@ int run_certify(const CertifyOptions& o) {
   }
   const std::string text = c.record.dump(2) + "\n";
   std::fwrite(text.data(), 1, text.size(), stdout);
+  if (!o.certificate.empty() && c.proved && !c.no_certificate.empty()) {
+    std::fprintf(stderr, "dfchaos: certificate not written: %s\n", kit::one_line(c.no_certificate).c_str());
+    return 1;
+  }
   return c.proved ? 0 : 1;
 }
 

@@ -6,7 +6,7 @@
 /// numbers (hexadecimal floating-point strings such as `"0x1.0624dd2f1a9fcp-10"`, which denote a
 /// binary number exactly, with a decimal beside them for humans) and every witness of the proof.
 /// The format, statement by statement, and what the checker does with it: docs/certificates.md.
-/// Statements with a certificate so far: vartheta0, lemma1, b0.
+/// Statements with a certificate so far: vartheta0, lemma1, b0, covering.
 #pragma once
 
 #include <cstddef>
@@ -15,6 +15,7 @@
 
 #include "certify/certify.hpp"
 #include "dfchaos/certified/ball.hpp"
+#include "dfchaos/certified/covering.hpp"
 #include "dfchaos/certified/progression.hpp"
 #include "dfchaos/certified/vartheta0.hpp"
 #include "kit/json.hpp"
@@ -26,8 +27,10 @@ inline constexpr const char* kCertificateFormat = "dfchaos-certificate";
 /// The format version (`"version"`); a checker refuses any other.
 inline constexpr int kCertificateVersion = 1;
 
-/// Whether statement `what` has a certificate format (vartheta0, lemma1, b0).
+/// Whether statement `what` has a certificate format (vartheta0, lemma1, b0, covering).
 bool has_certificate(const std::string& what);
+/// The statements with a certificate format, in words (for messages).
+inline constexpr const char* kCertificateStatements = "vartheta0, lemma1, b0 or covering";
 
 /// The double x as a C99 hexadecimal floating-point string (`%a`: exactly x, e.g. "0x1p+0").
 std::string hex_double(double x);
@@ -48,6 +51,14 @@ kit::Json certificate_lemma1(double a, const Range& b, const Range& q, const cer
 /// The certificate of a lower bound of b0(q): a, q, b_low and the b-intervals covering [0, b_low]
 /// on which Eq. (8) u(t2) < 0 was shown. `p` must be proved.
 kit::Json certificate_b0(double a, double q, const certified::Lemma1Bound& p, const std::string& claim);
+
+/// The certificate of Lemma 4 over p.box: the two segments, every ball of their proofs with the
+/// brackets of T1 and theta2 (or the stop arc), the departure length and the pieces of every
+/// negativity proof with the test that closed each, and Lemma 1's sub-boxes over the box when a ball
+/// needed it. `p` must be proved with CoveringOptions::record.
+/// @throws std::logic_error if it was not, or if a witness is missing (a ball needed Lemma 1 and
+/// p.lemma1 is not proved).
+kit::Json certificate_covering(const certified::CoveringProof& p, const std::string& claim);
 
 /// The text of a certificate as every writer stores it (the tool, Python and the experiments).
 std::string certificate_text(const kit::Json& certificate);

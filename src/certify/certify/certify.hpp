@@ -47,6 +47,9 @@ struct Request {
   /// covering: the segments to prove (both or neither; J0 left of J1). Given, no candidates are searched,
   /// so a box of certified_region can be re-proved alone with the J0, J1 it recorded.
   std::optional<SegmentEnds> J0, J1;
+  /// Build the certificate (Result::certificate) when the statement has a format and is proved. A
+  /// covering proof then keeps every ball's witnesses (more memory).
+  bool certificate = false;
 };
 
 /// The result of a request: proved or not, and the record that says what was proved. (Not a
@@ -54,9 +57,11 @@ struct Request {
 struct Result {
   bool proved = false;  ///< the statement was proved in ball arithmetic
   kit::Json record;     ///< statement, parameters, enclosures, verdict and on failure the failed step
-  /// When proved and the statement has a certificate format (certificate.hpp: vartheta0, lemma1,
-  /// b0): the certificate, the witnesses for the independent checker; else null.
+  /// When asked (Request::certificate), proved and the statement has a certificate format
+  /// (certificate.hpp): the certificate, the witnesses for the independent checker; else null.
   kit::Json certificate = kit::Json();
+  /// Why `certificate` is null although it was asked for (empty otherwise).
+  std::string no_certificate = "";
 };
 
 /// Whether `what` names a statement. Lets a caller check the name before reading other input.

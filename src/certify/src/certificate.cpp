@@ -40,7 +40,7 @@ kit::Json hex_array(std::initializer_list<double> xs) {
 
 }  // namespace
 
-bool has_certificate(const std::string& what) { return what == "vartheta0" || what == "lemma1" || what == "b0"; }
+bool has_certificate(const std::string& what) { return what == "vartheta0" || what == "lemma1" || what == "b0" || what == "covering"; }
 
 std::string hex_double(double x) {
   char buf[64];
@@ -144,6 +144,92 @@ kit::Json certificate_b0(double a, double q, const certified::Lemma1Bound& p, co
   kit::Json w = kit::Json::object();
   w.set("b_low", exact_number(p.b_low));
   w.set("b_pieces", pieces);
+  j.set("witnesses", w);
+  return j;
+}
+
+namespace {
+
+/// The pieces of one negativity proof: `[[lo, hi, test], ...]` (exact hex ends).
+kit::Json pieces(const certified::NegativityRecord& r) {
+  kit::Json j = kit::Json::array();
+  for (const certified::NegativityPiece& p : r) {
+    kit::Json e = kit::Json::array();
+    e.push(hex_exact(p.lo)).push(hex_exact(p.hi)).push(certified::negativity_test_name(p.test));
+    j.push(e);
+  }
+  return j;
+}
+
+/// One ball of a covering proof: its set, the T1 witnesses, the case and the first progression's.
+kit::Json ball(const certified::BallProof& b) {
+  using certified::TCase;
+  const certified::MapStepProof& T = b.T;
+  if (!T.verdict.proved || T.t_case == TCase::Unproved) throw std::logic_error("certificate_covering: a ball is not proved");
+  if (T.t1.no_contact.empty() && T.t1.simple_root.empty()) throw std::logic_error("certificate_covering: the proof was not recorded");
+  kit::Json j = kit::Json::object();
+  j.set("theta", hex_array({b.theta_lo, b.theta_hi}));
+  j.set("b", hex_array({b.box.b_lo, b.box.b_hi}));
+  j.set("q", hex_array({b.box.q_lo, b.box.q_hi}));
+  kit::Json t1 = kit::Json::object();
+  t1.set("s0", hex_exact(T.t1.s0)).set("t_lo", hex_exact(T.t1.t_lo)).set("t_hi", hex_exact(T.t1.t_hi));
+  t1.set("no_contact", pieces(T.t1.no_contact)).set("simple_root", pieces(T.t1.simple_root));
+  j.set("T1", t1);
+  j.set("case", T.t_case == TCase::ScenarioAB ? "AB" : "BC");
+  j.set("k", static_cast<long long>(T.turn));
+  if (T.stop_arc.verdict.proved) {
+    kit::Json s = kit::Json::object();
+    s.set("tau", hex_exact(T.stop_arc.tau));
+    if (T.stop_arc.from_impact) s.set("from", "impact");
+    else s.set("from", hex_exact(T.stop_arc.from_end));
+    s.set("no_stop_before_t3", pieces(T.stop_arc.no_stop_before_t3));
+    j.set("stop_arc", s);
+  } else {
+    kit::Json s = kit::Json::object();
+    s.set("u_lo", hex_exact(T.theta2.u_lo)).set("u_hi", hex_exact(T.theta2.u_hi));
+    s.set("no_earlier_stop", pieces(T.theta2.no_earlier_stop)).set("simple_zero", pieces(T.theta2.simple_zero));
+    j.set("theta2", s);
+  }
+  return j;
+}
+
+kit::Json balls(const std::vector<certified::BallProof>& v) {
+  kit::Json j = kit::Json::array();
+  for (const certified::BallProof& b : v) j.push(ball(b));
+  return j;
+}
+
+kit::Json segment(const certified::SegmentProof& s) {
+  if (s.top_balls.empty() || s.t2_balls.empty() || s.cover_balls.empty())
+    throw std::logic_error("certificate_covering: the proof was not recorded (CoveringOptions::record)");
+  kit::Json j = kit::Json::object();
+  j.set("lo", hex_double(s.lo)).set("hi", hex_double(s.hi)).set("theta_top", hex_double(s.theta_top)).set("theta_t2", hex_double(s.theta_t2));
+  j.set("top", balls(s.top_balls)).set("t2_end", balls(s.t2_balls)).set("cover", balls(s.cover_balls));
+  return j;
+}
+
+}  // namespace
+
+kit::Json certificate_covering(const certified::CoveringProof& p, const std::string& claim) {
+  if (!p.verdict.proved) throw std::logic_error("certificate_covering: not proved");
+  kit::Json j = header("covering", claim);
+  kit::Json par = kit::Json::object();
+  par.set("a", exact_number(p.box.a));
+  par.set("b", exact_range(Range{p.box.b_lo, p.box.b_hi}));
+  par.set("q", exact_range(Range{p.box.q_lo, p.box.q_hi}));
+  j.set("parameters", par);
+  kit::Json w = kit::Json::object();
+  if (p.J0.used_lemma1 || p.J1.used_lemma1) {
+    if (!p.lemma1.verdict.proved) throw std::logic_error("certificate_covering: a ball needed Lemma 1, which is not proved over the whole box");
+    kit::Json boxes = kit::Json::array();
+    for (const certified::Lemma1SubBox& s : p.lemma1.sub_boxes) boxes.push(hex_array({s.b_lo, s.b_hi, s.q_lo, s.q_hi}));
+    kit::Json l = kit::Json::object();
+    l.set("sub_boxes", boxes);
+    w.set("lemma1", l);
+  }
+  kit::Json segs = kit::Json::array();
+  segs.push(segment(p.J0)).push(segment(p.J1));
+  w.set("segments", segs);
   j.set("witnesses", w);
   return j;
 }

@@ -80,14 +80,14 @@ Result certify(const Request& r) {
   if (r.what == "vartheta0") {
     const Vartheta0 v = certify_vartheta0(200);
     Result c{v.verdict.proved, to_json(v)};
-    if (c.proved) c.certificate = certificate_vartheta0(v, claim_of(c));
+    if (c.proved && r.certificate) c.certificate = certificate_vartheta0(v, claim_of(c));
     return c;
   }
   if (r.what == "lemma1") {
     const ParameterBox box = box_from(r, true, true);
     const Lemma1Proof p = certify_lemma1(ParameterBalls(box));
     Result c{p.verdict.proved, to_json(box, p)};
-    if (c.proved) c.certificate = certificate_lemma1(box.a, Range{box.b_lo, box.b_hi}, Range{box.q_lo, box.q_hi}, p, claim_of(c));
+    if (c.proved && r.certificate) c.certificate = certificate_lemma1(box.a, Range{box.b_lo, box.b_hi}, Range{box.q_lo, box.q_hi}, p, claim_of(c));
     return c;
   }
   if (r.what == "b0") {
@@ -99,7 +99,7 @@ Result certify(const Request& r) {
     if (!(q > 0 && q < a)) throw InvalidParameter("q", "0 < q < a", q);
     const Lemma1Bound p = lemma1_b0_lower_bound(a, q);
     Result c{p.verdict.proved, to_json(a, q, p)};
-    if (c.proved) c.certificate = certificate_b0(a, q, p, claim_of(c));
+    if (c.proved && r.certificate) c.certificate = certificate_b0(a, q, p, claim_of(c));
     return c;
   }
   if (r.what == "discontinuities") {
@@ -111,15 +111,26 @@ Result certify(const Request& r) {
   }
   if (r.what == "covering") {
     const ParameterBox box = box_from(r, true, true);
+    CoveringOptions opt;
+    opt.record = r.certificate;
+    CoveringProof p;
     if (!r.J0 && !r.J1) {
-      const CoveringProof p = prove_covering(box);
-      return {p.verdict.proved, to_json(p)};
+      p = prove_covering(box, opt);
+    } else {
+      if (!r.J0 || !r.J1) throw InvalidParameter(r.J0 ? "J1" : "J0", "given together with " + std::string(r.J0 ? "J0" : "J1"));
+      const Candidate c0 = candidate("J0", *r.J0, box), c1 = candidate("J1", *r.J1, box);
+      if (!(c0.hi() < c1.lo())) throw InvalidParameter("J1", "J1 to the right of J0 (J0 and J1 disjoint)", c1.lo());
+      p = prove_covering(box, std::vector<Candidate>{c0, c1}, opt);
     }
-    if (!r.J0 || !r.J1) throw InvalidParameter(r.J0 ? "J1" : "J0", "given together with " + std::string(r.J0 ? "J0" : "J1"));
-    const Candidate c0 = candidate("J0", *r.J0, box), c1 = candidate("J1", *r.J1, box);
-    if (!(c0.hi() < c1.lo())) throw InvalidParameter("J1", "J1 to the right of J0 (J0 and J1 disjoint)", c1.lo());
-    const CoveringProof p = prove_covering(box, std::vector<Candidate>{c0, c1});
-    return {p.verdict.proved, to_json(p)};
+    Result c{p.verdict.proved, to_json(p)};
+    if (c.proved && r.certificate) {
+      try {
+        c.certificate = certificate_covering(p, claim_of(c));
+      } catch (const std::logic_error& e) {
+        c.no_certificate = e.what();
+      }
+    }
+    return c;
   }
   if (r.what == "periodic") {
     const ParameterBox box = box_from(r, true, false);

@@ -298,24 +298,26 @@ SegmentProof prove_segment(const ParameterBalls& m, const Candidate& c, const Co
   // The two ends (over sub-boxes of b if needed).
   Outcome v = cover_2d(m.box(), c.theta_top, c.theta_top, opt, opt.end_depth, budget, r, "covering: T >= 3pi/2 at the top end",
                        [&](const ParameterBalls& mm, double t0, double t1, Outcome& why) {
-                         MapStepProof top = certify_T(mm, StartSet::interval(t0, t1), budget);
+                         MapStepProof top = certify_T(mm, StartSet::interval(t0, t1), budget, nullptr, opt.record);
                          r.tests += top.tests;
                          if (!top.verdict) { why = top.verdict; return false; }
                          if (!le(1.5 * mm.pi, top.T)) { why = Outcome::fail("T >= 3pi/2", "T = " + top.T.str(12)); return false; }
                          r.T_top = first_top ? top.T : Ball::hull(r.T_top, top.T);
                          first_top = false;
+                         if (opt.record) r.top_balls.push_back({t0, t1, mm.box(), std::move(top)});
                          return true;
                        });
   if (!v) { r.verdict = v; return r; }
   v = cover_2d(m.box(), c.theta_t2, c.theta_t2, opt, opt.end_depth, budget, r, "covering: T = t2 at the t2 end",
                [&](const ParameterBalls& mm, double t0, double t1, Outcome& why) {
-                 MapStepProof bot = certify_T(mm, StartSet::interval(t0, t1), budget);
+                 MapStepProof bot = certify_T(mm, StartSet::interval(t0, t1), budget, nullptr, opt.record);
                  r.tests += bot.tests;
                  if (!bot.verdict) { why = bot.verdict; return false; }
                  if (!bot.constant_t2) { why = Outcome::fail("T = t2", "T = " + bot.T.str(12)); return false; }
                  r.theta2_t2end = first_bot ? bot.theta2_phase : Ball::hull(r.theta2_t2end, bot.theta2_phase);
                  first_bot = false;
                  r.used_lemma1 = r.used_lemma1 || bot.used_lemma1;
+                 if (opt.record) r.t2_balls.push_back({t0, t1, mm.box(), std::move(bot)});
                  return true;
                });
   if (!v) { r.verdict = v; return r; }
@@ -323,10 +325,11 @@ SegmentProof prove_segment(const ParameterBalls& m, const Candidate& c, const Co
   // Continuity on J.
   v = cover_2d(m.box(), r.lo, r.hi, opt, opt.max_depth, budget, r, "covering: continuity on J",
                [&](const ParameterBalls& mm, double t0, double t1, Outcome& why) {
-                 MapStepProof t = certify_T(mm, StartSet::interval(t0, t1), budget);
+                 MapStepProof t = certify_T(mm, StartSet::interval(t0, t1), budget, nullptr, opt.record);
                  r.tests += t.tests;
                  if (!t.verdict) { why = t.verdict; return false; }
                  r.used_lemma1 = r.used_lemma1 || t.used_lemma1;
+                 if (opt.record) r.cover_balls.push_back({t0, t1, mm.box(), std::move(t)});
                  return true;
                });
   r.balls -= end_balls;
@@ -353,6 +356,7 @@ CoveringProof prove_covering(const ParameterBox& box, const std::vector<Candidat
     r.J0 = proved[0];
     r.J1 = proved[1];
     r.verdict = Outcome::ok();
+    if (opt.record && (r.J0.used_lemma1 || r.J1.used_lemma1)) r.lemma1 = certify_lemma1(m);
   } else if (candidates.empty()) {
     r.verdict = Outcome::fail("covering: candidates", "the floating-point search proposed no covering segment");
   } else if (!last_failure.verdict.proved && !last_failure.verdict.step.empty()) {

@@ -36,6 +36,9 @@ struct CoveringOptions {
   int candidates = 6;             ///< floating-point candidates examined (at most)
   double lo = 0.0 / 0.0;          ///< search window for candidates (NaN: \f$t_2\f$)
   double hi = 0.0 / 0.0;          ///< (NaN: \f$3\pi/2\f$)
+  /// Keep every ball's proof (SegmentProof::top_balls, t2_balls, cover_balls) and Lemma 1 over the
+  /// box when a ball used it (CoveringProof::lemma1): the witnesses of a certificate.
+  bool record = false;
 };
 
 /// A candidate segment from the floating layer.
@@ -56,6 +59,15 @@ std::vector<Candidate> covering_candidates(double a, double b, double q, const C
 /// covering_candidates()).
 std::vector<Candidate> track_candidates(double a, double b, double q, const std::vector<Candidate>& old, const CoveringOptions& opt = {});
 
+/// One closed ball of a covering proof, the start phases \f$[\theta_{lo}, \theta_{hi}]\f$ over a
+/// sub-box of the parameters, with the proof of T on it.
+struct BallProof {
+  double theta_lo = 0;  ///< lower end of the start phases
+  double theta_hi = 0;  ///< upper end
+  ParameterBox box;     ///< the sub-box
+  MapStepProof T;       ///< T on the ball, with its witnesses
+};
+
 /// The proof of one covering segment.
 struct SegmentProof {
   Outcome verdict;          ///< proved: T continuous on J, T = t2 at theta_t2, T >= 3pi/2 at theta_top
@@ -70,6 +82,10 @@ struct SegmentProof {
   double min_width = 0;     ///< narrowest ball
   long tests = 0;           ///< interval tests
   bool used_lemma1 = false; ///< some ball needed Lemma 1 (T = t2 through scenario C)
+  // Kept when CoveringOptions::record:
+  std::vector<BallProof> top_balls;    ///< the balls at theta_top (T >= 3pi/2 on each)
+  std::vector<BallProof> t2_balls;     ///< the balls at theta_t2 (T = t2 on each)
+  std::vector<BallProof> cover_balls;  ///< the balls covering J (T continuous on each)
 };
 
 /// Proves that `c` is a covering segment for every parameter of the model's box.
@@ -83,6 +99,9 @@ struct CoveringProof {
   SegmentProof J1;          ///< the right segment (J0.hi < J1.lo)
   int candidates_tried = 0; ///< candidates examined
   double seconds = 0;       ///< wall time of the whole proof
+  /// (CoveringOptions::record, proved, and some ball needed Lemma 1) Lemma 1 over the whole box, for
+  /// the certificate; not proved otherwise.
+  Lemma1Proof lemma1;
 };
 
 /// Lemma 4 over `box`, with candidates from the floating layer at the box's centre.

@@ -5,8 +5,17 @@
 
 namespace dfchaos::certified {
 
+const char* negativity_test_name(NegativityTest t) {
+  switch (t) {
+    case NegativityTest::Envelope: return "envelope";
+    case NegativityTest::Taylor: return "taylor";
+    case NegativityTest::Monotone: return "monotone";
+  }
+  return "?";
+}
+
 Outcome prove_negative(const NegativityTarget& f, const Ball& lo, const Ball& hi, Budget& budget, const std::string& step,
-                       NegativityStats* stats) {
+                       NegativityStats* stats, NegativityRecord* record) {
   NegativityStats local;
   NegativityStats& st = stats ? *stats : local;
   if (!le(lo, hi)) return Outcome::fail(step, "empty or unordered interval " + lo.mid_str(17) + " .. " + hi.mid_str(17));
@@ -23,6 +32,7 @@ Outcome prove_negative(const NegativityTarget& f, const Ball& lo, const Ball& hi
                                                        f.variable() + " = " + x1.mid_str(17));
     if (f.envelope_negative(x1, x2)) {
       ++st.envelope;
+      if (record) record->push_back({x1, x2, NegativityTest::Envelope});
       continue;
     }
     const Ball m = ((x1 + x2) * 0.5).mid_ball();
@@ -36,11 +46,13 @@ Outcome prove_negative(const NegativityTarget& f, const Ball& lo, const Ball& hi
     const Ball taylor = fm + r * abs(dm) + 0.5 * sqr(r) * max(cX, Ball(0.0));
     if (taylor.is_negative()) {
       ++st.taylor;
+      if (record) record->push_back({x1, x2, NegativityTest::Taylor});
       continue;
     }
     const Ball dX = dm + Ball::interval(-1.0, 1.0) * r * cX;
     if ((dX.is_positive() && f.value(x2).is_negative()) || (dX.is_negative() && f.value(x1).is_negative())) {
       ++st.monotone;
+      if (record) record->push_back({x1, x2, NegativityTest::Monotone});
       continue;
     }
     if (lt(r, min_r))

@@ -44,9 +44,25 @@ struct NegativityStats {
   long monotone = 0;   ///< closed by monotonicity
 };
 
+/// Which of the three tests of the file comment closed a sub-interval.
+enum class NegativityTest { Envelope, Taylor, Monotone };
+/// "envelope", "taylor", "monotone" (the names certificates use).
+const char* negativity_test_name(NegativityTest t);
+
+/// One closed sub-interval \f$[lo, hi]\f$ (exact ends) of a proof of \f$f < 0\f$ and the test that
+/// closed it: a witness that an independent checker re-evaluates (docs/certificates.md).
+struct NegativityPiece {
+  Ball lo;              ///< left end (exact)
+  Ball hi;              ///< right end (exact)
+  NegativityTest test;  ///< the test that proved \f$f < 0\f$ on it
+};
+/// The pieces of one proof, covering its interval.
+using NegativityRecord = std::vector<NegativityPiece>;
+
 /// Proves \f$f < 0\f$ on the closed interval \f$[lo, hi]\f$ (exact balls, lo <= hi).
-/// `step` names the statement in a failure ("T1: no earlier root").
+/// `step` names the statement in a failure ("T1: no earlier root"). With `record`, the closed
+/// sub-intervals are appended to it (in the order they were closed).
 Outcome prove_negative(const NegativityTarget& f, const Ball& lo, const Ball& hi, Budget& budget, const std::string& step,
-                       NegativityStats* stats = nullptr);
+                       NegativityStats* stats = nullptr, NegativityRecord* record = nullptr);
 
 }  // namespace dfchaos::certified

@@ -143,7 +143,8 @@ Ball newton_G1(const ParameterBalls& m, const Ball& theta, const Ball& b, const 
 }
 
 Outcome certify_no_contact(const ParameterBalls& m, const StartSet& set, const Ball& t_end, Budget& budget,
-                           const std::vector<std::pair<Ball, Ball>>& skip, NegativityStats* stats) {
+                           const std::vector<std::pair<Ball, Ball>>& skip, NegativityStats* stats, Ball* s0_used,
+                           NegativityRecord* record) {
   if (Outcome v = set.valid(m); !v) return v;
   const Ball th_min = set.theta_min(m), th_max = set.theta_max(m);
   // 1. departure over the whole set.
@@ -157,6 +158,7 @@ Outcome certify_no_contact(const ParameterBalls& m, const StartSet& set, const B
     if (dep) break;
   }
   if (!dep) return dep;
+  if (s0_used) *s0_used = s0;
   // 2. no earlier root at the max corner, s in [s0, t_end - theta_max] minus the skipped windows.
   FlightGap gap(m, th_max, m.b_hi);
   std::vector<std::pair<Ball, Ball>> segs;
@@ -170,7 +172,7 @@ Outcome certify_no_contact(const ParameterBalls& m, const StartSet& set, const B
   if (lt(start, s_end)) segs.emplace_back(start, s_end);
   for (const auto& [x1, x2] : segs) {
     if (!le(x1, x2)) continue;
-    Outcome v = prove_negative(gap, x1, x2, budget, "T1: no earlier root", stats);
+    Outcome v = prove_negative(gap, x1, x2, budget, "T1: no earlier root", stats, record);
     if (!v) return v;
   }
   return Outcome::ok();
@@ -226,7 +228,7 @@ FirstHitProof certify_T1(const ParameterBalls& m, const StartSet& set, Budget& b
   // 4. simple root: dG1/dt > 0 on the bracket at the min corner.
   {
     MinusVelocity mv(m, th_min, m.b_lo);
-    Outcome v = prove_negative(mv, r.t_lo, r.t_hi, budget, "T1: simple root (dG1/dt > 0)", &r.stats);
+    Outcome v = prove_negative(mv, r.t_lo, r.t_hi, budget, "T1: simple root (dG1/dt > 0)", &r.stats, opt.record ? &r.simple_root : nullptr);
     if (!v) {
       v.refuted = false;  // the bracket is ours: dG1/dt <= 0 somewhere in it refutes nothing about T1
       r.verdict = v;
@@ -234,7 +236,7 @@ FirstHitProof certify_T1(const ParameterBalls& m, const StartSet& set, Budget& b
     }
   }
   // 1-2. departure, and no earlier root.
-  if (Outcome v = certify_no_contact(m, set, r.t_lo, budget, opt.skip, &r.stats); !v) {
+  if (Outcome v = certify_no_contact(m, set, r.t_lo, budget, opt.skip, &r.stats, &r.s0, opt.record ? &r.no_contact : nullptr); !v) {
     r.verdict = v;
     return r;
   }

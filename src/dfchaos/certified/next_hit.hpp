@@ -84,8 +84,11 @@ Outcome prove_departure(const ParameterBalls& m, const StartSet& set, const Ball
 /// No contact before \f$t_{end}\f$: \f$G_1(\theta, t; b) < 0\f$ for \f$t \in (\theta, t_{end}]\f$, every start and b
 /// (steps 1 and 2 of the file comment: departure over the set, then prove_negative() at the max
 /// corner), except on the `skip` windows of t (sorted, disjoint), which the caller proves otherwise.
+/// With `s0`, the departure length used is stored there; with `record`, the pieces of the
+/// negativity proof (in the variable s at the max corner) are appended to it.
 Outcome certify_no_contact(const ParameterBalls& m, const StartSet& set, const Ball& t_end, Budget& budget,
-                           const std::vector<std::pair<Ball, Ball>>& skip = {}, NegativityStats* stats = nullptr);
+                           const std::vector<std::pair<Ball, Ball>>& skip = {}, NegativityStats* stats = nullptr, Ball* s0 = nullptr,
+                           NegativityRecord* record = nullptr);
 
 /// Options of certify_T1().
 struct FirstHitOptions {
@@ -95,6 +98,8 @@ struct FirstHitOptions {
   /// Float guesses of \f$T_1\f$ at the max and min corners (NaN: ask the floating-point layer).
   double guess_at_max = 0.0 / 0.0;
   double guess_at_min = 0.0 / 0.0;  ///< the same at the min corner
+  /// Keep the witnesses of the proof (FirstHitProof::s0, no_contact, simple_root) for a certificate.
+  bool record = false;
 };
 
 /// The certified next hit over a start set and a parameter box.
@@ -105,6 +110,10 @@ struct FirstHitProof {
   Ball enclosure;         ///< \f$[t_{lo}, t_{hi}]\f$
   Ball v1_at_max;         ///< \f$\partial_t G_1\f$ at the max corner's root side (impact velocity, for reports)
   NegativityStats stats;  ///< work of the negativity proofs
+  // The witnesses, kept when FirstHitOptions::record (docs/certificates.md, statement covering):
+  Ball s0;                       ///< the departure length: \f$G_1 < 0\f$ for \f$s \in (0, s_0]\f$ (step 1)
+  NegativityRecord no_contact;   ///< step 2: \f$G_1(\theta_{\max}, \theta_{\max} + s; b_{hi}) < 0\f$ on these s-pieces
+  NegativityRecord simple_root;  ///< step 4: \f$\partial_t G_1(\theta_{\min}, t; b_{lo}) > 0\f$ on these t-pieces
 };
 
 /// \f$T_1\f$ over `set` (Eq. 11), with the four steps of the file comment. Bounded by `budget`.

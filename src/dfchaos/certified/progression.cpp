@@ -65,7 +65,7 @@ Ball delta_for(const Ball& x) {
 
 }  // namespace
 
-Theta2Proof certify_theta2(const ParameterBalls& m, const StartSet& set, const FirstHitProof& t1, Budget& budget) {
+Theta2Proof certify_theta2(const ParameterBalls& m, const StartSet& set, const FirstHitProof& t1, Budget& budget, bool record) {
   Theta2Proof r;
   if (!t1.verdict) {
     r.verdict = Outcome::fail("theta2: needs T1", "T1 not proved");
@@ -115,14 +115,17 @@ Theta2Proof certify_theta2(const ParameterBalls& m, const StartSet& set, const F
   // G2 > 0 from the impact to u_lo: the first zero is not earlier.
   const Velocity minus_gmin(m, th_min, t1.t_lo, m.b_lo, m.q_hi, -1.0);
   // (Failures of the corner functions refute nothing: they mix the corners of the set.)
-  if (Outcome v = prove_negative(minus_gmin, t1.t_lo, r.u_lo, budget, "theta2: no earlier stop", &r.stats); !v) {
+  if (Outcome v = prove_negative(minus_gmin, t1.t_lo, r.u_lo, budget, "theta2: no earlier stop", &r.stats,
+                                 record ? &r.no_earlier_stop : nullptr);
+      !v) {
     v.refuted = false;
     r.verdict = v;
     return r;
   }
   // dG2/dt < 0 on the bracket: a simple zero.
   const Acceleration acc(m, m.b_hi, m.q_lo);
-  if (Outcome v = prove_negative(acc, r.u_lo, r.u_hi, budget, "theta2: simple zero (F - q < 0)", &r.stats); !v) {
+  if (Outcome v = prove_negative(acc, r.u_lo, r.u_hi, budget, "theta2: simple zero (F - q < 0)", &r.stats, record ? &r.simple_zero : nullptr);
+      !v) {
     v.refuted = false;
     r.verdict = v;
     return r;
@@ -131,7 +134,7 @@ Theta2Proof certify_theta2(const ParameterBalls& m, const StartSet& set, const F
   return r;
 }
 
-StopArcProof certify_stop_arc(const ParameterBalls& m, const StartSet& set, const FirstHitProof& t1, Budget& budget) {
+StopArcProof certify_stop_arc(const ParameterBalls& m, const StartSet& set, const FirstHitProof& t1, Budget& budget, bool record) {
   StopArcProof r;
   if (!t1.verdict) {
     r.verdict = Outcome::fail("stop arc: needs T1", "T1 not proved");
@@ -165,6 +168,7 @@ StopArcProof certify_stop_arc(const ParameterBalls& m, const StartSet& set, cons
   }
   if (le(A, t1.t_lo)) {
     r.from = t1.t_lo;
+    r.from_impact = true;
   } else {
     const Ball A_up = A.upper_ball();
     if (!lt(t1.t_lo, A_up) || !lt(A_up, r.tau)) {
@@ -172,12 +176,15 @@ StopArcProof certify_stop_arc(const ParameterBalls& m, const StartSet& set, cons
       return r;
     }
     const Velocity minus_gmin(m, th_min, t1.t_lo, m.b_lo, m.q_hi, -1.0);
-    if (Outcome v = prove_negative(minus_gmin, t1.t_lo, A_up, budget, "stop arc: no stop before t3", &r.stats); !v) {
+    if (Outcome v = prove_negative(minus_gmin, t1.t_lo, A_up, budget, "stop arc: no stop before t3", &r.stats,
+                                 record ? &r.no_stop_before_t3 : nullptr);
+        !v) {
       v.refuted = false;
       r.verdict = v;
       return r;
     }
     r.from = A;
+    r.from_end = A_up;
   }
   r.needs_lemma1 = !le(m.t1 + shift + m.two_pi, r.from);
   r.verdict = Outcome::ok();

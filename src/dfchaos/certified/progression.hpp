@@ -41,10 +41,14 @@ struct Theta2Proof {
   Ball u_hi;              ///< right end of the bracket (exact)
   Ball enclosure;         ///< \f$[u_{lo}, u_{hi}]\f$
   NegativityStats stats;  ///< work
+  // The witnesses, kept when asked (docs/certificates.md, statement covering):
+  NegativityRecord no_earlier_stop;  ///< \f$G_2^{\min} > 0\f$ on these pieces of \f$[t_{lo}, u_{lo}]\f$
+  NegativityRecord simple_zero;      ///< \f$a\sin t + 2b_{hi} - q_{lo} < 0\f$ on these pieces of \f$[u_{lo}, u_{hi}]\f$
 };
 
-/// \f$\theta_2\f$ over `set` given the certified \f$T_1\f$ (which must be proved).
-Theta2Proof certify_theta2(const ParameterBalls& m, const StartSet& set, const FirstHitProof& t1, Budget& budget);
+/// \f$\theta_2\f$ over `set` given the certified \f$T_1\f$ (which must be proved); with `record`, the
+/// witnesses are kept.
+Theta2Proof certify_theta2(const ParameterBalls& m, const StartSet& set, const FirstHitProof& t1, Budget& budget, bool record = false);
 
 /// The weaker statement that suffices where T is constant: the first zero of \f$G_2\f$ after
 /// \f$\theta_1\f$ lies in the stop arc \f$R_k = [t_3 + 2\pi k, t_2 + 2\pi(k+1))\f$, for every point of the set.
@@ -59,10 +63,15 @@ struct StopArcProof {
   Ball tau;               ///< and before this
   bool needs_lemma1 = true;  ///< the range meets [t3, t0] + 2 pi k (the mass may wait for t0)
   NegativityStats stats;  ///< work
+  // The witnesses, kept when asked (docs/certificates.md, statement covering):
+  bool from_impact = false;  ///< the impact is already past \f$t_3 + 2\pi k\f$ (from = t_lo); else from = \f$t_3 + 2\pi k\f$
+  Ball from_end;             ///< (not from_impact) the exact upper end of \f$t_3 + 2\pi k\f$ up to which \f$G_2^{\min} > 0\f$ was proved
+  NegativityRecord no_stop_before_t3;  ///< (not from_impact) \f$G_2^{\min} > 0\f$ on these pieces of \f$[t_{lo}, \f$ from_end\f$]\f$
 };
 
-/// Proves that the first progression ends in a stop arc (see StopArcProof).
-StopArcProof certify_stop_arc(const ParameterBalls& m, const StartSet& set, const FirstHitProof& t1, Budget& budget);
+/// Proves that the first progression ends in a stop arc (see StopArcProof); with `record`, the
+/// witnesses are kept.
+StopArcProof certify_stop_arc(const ParameterBalls& m, const StartSet& set, const FirstHitProof& t1, Budget& budget, bool record = false);
 
 /// \f$u(t_2) = -a(\cos t_2 - \cos t_0) + (2b - q)(t_2 - t_0)\f$ (Eq. 8) over balls of b and q
 /// (b = 0 allowed; needs \f$|q - 2b| < a\f$, \f$2b < a\f$).

@@ -13,20 +13,23 @@ const char* t_case_name(TCase c) {
   return "none";
 }
 
-MapStepProof certify_T(const ParameterBalls& m, const StartSet& set, Budget& budget, const Lemma1Proof* lemma1) {
+MapStepProof certify_T(const ParameterBalls& m, const StartSet& set, Budget& budget, const Lemma1Proof* lemma1, bool record) {
   MapStepProof r;
-  r.t1 = certify_T1(m, set, budget);
+  FirstHitOptions t1_options;
+  t1_options.record = record;
+  r.t1 = certify_T1(m, set, budget, t1_options);
   r.tests += r.t1.stats.tests;
   if (!r.t1.verdict) {
     r.verdict = r.t1.verdict;
     return r;
   }
-  r.theta2 = certify_theta2(m, set, r.t1, budget);
+  r.theta2 = certify_theta2(m, set, r.t1, budget, record);
   r.tests += r.theta2.stats.tests;
   // Where theta2 is not a proved simple zero, T may still be proved constant: the first stop lies
   // in a stop arc (certify_stop_arc).
   auto try_stop_arc = [&](const Outcome& why) {
-    const StopArcProof s = certify_stop_arc(m, set, r.t1, budget);
+    r.stop_arc = certify_stop_arc(m, set, r.t1, budget, record);
+    const StopArcProof& s = r.stop_arc;
     r.tests += s.stats.tests;
     if (!s.verdict) {
       r.verdict = Outcome::fail(why.step, why.detail + "; stop-arc test: " + s.verdict.describe());

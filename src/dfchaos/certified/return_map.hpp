@@ -47,6 +47,9 @@ struct MapStepProof {
   Outcome verdict;         ///< proved: T continuous on the set, in `T`
   FirstHitProof t1;              ///< the next hit
   Theta2Proof theta2;      ///< the first progression's stop
+  /// When \f$\theta_2\f$ was not bracketed but the first stop was proved to lie in a stop arc (TCase::ScenarioBC):
+  /// that proof (`stop_arc.verdict` proved); else not proved.
+  StopArcProof stop_arc;
   TCase t_case = TCase::Unproved;  ///< which of the two cases
   long long turn = 0;      ///< k of the case (phase of \f$\theta_2\f$ is \f$\theta_2 - 2\pi k\f$)
   Ball theta2_phase;       ///< \f$\theta_2 - 2\pi k\f$ (ScenarioAB: in \f$[t_1, t_3)\f$; ScenarioBC: in \f$[t_3, t_2 + 2\pi)\f$)
@@ -58,7 +61,9 @@ struct MapStepProof {
 
 /// T over `set` (Lemma 3 with the general chain of Section 3). `lemma1` (optional): a proved
 /// Lemma 1 over the same box, used when the ScenarioBC case needs it (else it is proved here on demand).
-MapStepProof certify_T(const ParameterBalls& m, const StartSet& set, Budget& budget, const Lemma1Proof* lemma1 = nullptr);
+/// With `record`, the witnesses of the T1, theta2 and stop-arc proofs are kept (for a certificate).
+MapStepProof certify_T(const ParameterBalls& m, const StartSet& set, Budget& budget, const Lemma1Proof* lemma1 = nullptr,
+                       bool record = false);
 
 /// Enclosure of \f$T'\f$ over a set where `t` proved the case ScenarioAB with the phase of \f$\theta_2\f$
 /// strictly inside \f$(t_2, t_3)\f$ (scenario A, T smooth), by the implicit function theorem on
