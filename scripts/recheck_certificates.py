@@ -9,11 +9,14 @@ ID of BUILD/claims/*.json. Each is given to RECHECK (dfchaos-recheck: MPFI, no c
 its SHA-256 and size are recorded. Writes BUILD/tables/certificates.tex, one
 \\dfccertrow{claim}{file stem}{sha256}{bytes}{status} per certificate (status "accepted") and one
 row with the claim id as file stem, "---" for hash and size, and status "none" per certified claim
-that has no certificate yet, and BUILD/tables/certificates-macros.tex with \\dfcCertificatesAccepted,
+that has no certificate yet; a certified claim whose evidence names the claim it follows from
+("rests_on", e.g. the entropy bound of Section 7 from the certified covering) is listed with that
+claim's accepted certificates (status "premise"). Also BUILD/tables/certificates-macros.tex with \\dfcCertificatesAccepted,
 \\dfcCertifiedClaims and \\dfcCertifiedClaimsWithout. Exits 1, writing nothing, when the checker
 rejects a certificate, when a certificate names no certified claim, and when an accepted certificate
 does not prove what its claim states (bind(): the claim holds, and the certificate's claim text,
-parameters and decisive values, b_low or the rounded doubles of vartheta0, are the claim's record);
+parameters and decisive values, b_low, the rounded doubles of vartheta0 or the segments J0 and J1,
+are the claim's record);
 the tables are written whole (a temporary file renamed into place).
 """
 import glob
@@ -35,7 +38,8 @@ def exact(x):
 
 def bind(path, cert, claim, part):
     """Checks that the certificate (already accepted by the checker) proves what the claim states:
-    the claim holds, and the certificate's claim text, statement parameters and decisive values are
+    the claim holds, and the certificate's claim text, statement parameters and decisive values (b_low,
+    the rounded doubles of vartheta0, the segments J0, J1 of a covering) are
     those of the claim's record (for a claim resting on several proofs, the record of its PART).
     Returns None, or what differs."""
     if claim["verdict"] != "holds":
@@ -64,6 +68,13 @@ def bind(path, cert, claim, part):
     w = cert.get("witnesses", {})
     if cert.get("statement") == "b0" and exact(w["b_low"]["hex"]) != float(rec["b0_lower_bound"]):
         return "its b_low is not the claim's b0 lower bound"
+    if cert.get("statement") == "covering":
+        segs = w.get("segments", [])
+        for name, seg in zip(("J0", "J1"), segs):
+            if [exact(seg["lo"]), exact(seg["hi"])] != [float(x) for x in rec.get(name, [])]:
+                return f"its {name} is not the claim's {name}"
+        if len(segs) != 2:
+            return "it does not hold two segments"
     if cert.get("statement") == "vartheta0" and rec.get("rounding_certified"):
         for key, want in (("value_double", "vartheta0_double"), ("sine_double", "sin_vartheta0_double")):
             if key not in w or exact(w[key]["hex"]) != float(rec[want]):
@@ -103,7 +114,15 @@ def main():
         by_claim[cid].append(path)
 
     rows, accepted, rejected, without = [], 0, [], 0
+    accepted_of = {}  # claim id -> [(file stem, sha256, bytes)] of its accepted certificates
     for cid in claims:
+        rests_on = record[cid]["evidence"].get("rests_on")
+        if not by_claim[cid] and rests_on in accepted_of and record[cid]["verdict"] == "holds":
+            # a claim that follows from another certified claim by an argument of the paper (e.g. the
+            # entropy bound from the certified covering, Section 7): that claim's certificate
+            for stem, sha, size in accepted_of[rests_on]:
+                rows.append(f"\\dfccertrow{{{cid}}}{{{cid}}}{{{sha}}}{{{size}}}{{premise}}")
+            continue
         if not by_claim[cid]:
             without += 1
             rows.append(f"\\dfccertrow{{{cid}}}{{{cid}}}{{---}}{{---}}{{none}}")
@@ -122,6 +141,7 @@ def main():
                 rejected.append(f"{path}: accepted by the checker, but not a proof of claim {cid}: {why}")
                 continue
             accepted += 1
+            accepted_of.setdefault(cid, []).append((stem, hashlib.sha256(data).hexdigest(), len(data)))
             rows.append(f"\\dfccertrow{{{cid}}}{{{os.path.basename(path)[: -len('.json')]}}}{{{hashlib.sha256(data).hexdigest()}}}"
                         f"{{{len(data)}}}{{accepted}}")
     if rejected:

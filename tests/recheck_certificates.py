@@ -20,6 +20,14 @@ REQUESTS = {
     # a box across which u(t2) is near 0 at the low q: the prover splits it into several sub-boxes
     "lemma1_box": ["lemma1", "--a", "1", "--b", "0.001:0.0035", "--q", "0.73:0.76"],
     "b0": ["b0", "--a", "1", "--q", "0.85"],
+    # Lemma 4 at point A of the report: every ball in case AB (theta2 bracketed)
+    "covering_point": ["covering", "--a", "1", "--b", "0.001", "--q", "0.85"],
+    # at q/a = 0.76 the t2 ends are proved by the stop arc, through Lemma 1 (witnesses.lemma1)
+    "covering_stop": ["covering", "--a", "1", "--b", "0.001", "--q", "0.76"],
+    # a box of certified_region, re-proved with the J0, J1 its row records
+    "covering_box": ["covering", "--a", "1", "--b", "0.0019697602976329739:0.00196980455453853",
+                     "--q", "0.80000000000000004:0.81000000000000005", "--J0", "3.2595461317302936:3.3248980967076651",
+                     "--J1", "3.3397741191384851:3.3845640013715848"],
 }
 
 
@@ -102,6 +110,94 @@ def main():
                 b = c["parameters"]["b"]["lo"]
                 b["hex"] = next_double_hex(b["hex"], -1)
             recheck(checker, mutate(path, bad, ulp), 1, "parameter b_lo changed in its last bit")
+        elif case == "accepts_covering_scaled":
+            # Scale invariance, G1(.; a, b) = a G1(.; 1, b/a) and the same for G2 (docs/certified.md): the
+            # covering at a = 1 with a, b, q (and every ball's b, q) doubled exactly is a covering at a = 2,
+            # with the same phases; the checker must accept it as it stands.
+            path, _ = write_certificate(cli, "covering_stop", d)
+
+            def double(c):
+                two = lambda h: float.hex(2 * float.fromhex(h))
+                p = c["parameters"]
+                p["a"]["hex"] = two(p["a"]["hex"])
+                for k in ("b", "q"):
+                    for end in ("lo", "hi"):
+                        p[k][end]["hex"] = two(p[k][end]["hex"])
+                w = c["witnesses"]
+                for box in w.get("lemma1", {}).get("sub_boxes", []):
+                    box[:] = [two(x) for x in box]
+                for seg in w["segments"]:
+                    for lst in ("top", "t2_end", "cover"):
+                        for ball in seg[lst]:
+                            ball["b"] = [two(x) for x in ball["b"]]
+                            ball["q"] = [two(x) for x in ball["q"]]
+            recheck(checker, mutate(path, bad, double), 0, "the covering at a = 1 scaled to a = 2")
+        elif case == "rejects_covering_piece_deleted":  # one piece of a no-contact proof deleted: a gap in t
+            path, _ = write_certificate(cli, "covering_point", d)
+
+            def drop(c):
+                pieces = c["witnesses"]["segments"][0]["cover"][0]["T1"]["no_contact"]
+                if len(pieces) < 3:
+                    sys.exit(f"FAIL: the no-contact proof has {len(pieces)} piece(s); the case needs several")
+                pieces.pop(len(pieces) // 2)
+            recheck(checker, mutate(path, bad, drop), 1, "a piece of a negativity proof deleted")
+        elif case == "rejects_covering_overlap":  # J1 replaced by a copy of J0: each segment valid, not disjoint
+            path, _ = write_certificate(cli, "covering_point", d)
+
+            def same(c):
+                segs = c["witnesses"]["segments"]
+                segs[1] = json.loads(json.dumps(segs[0]))
+            recheck(checker, mutate(path, bad, same), 1, "J0 and J1 overlapping")
+        elif case == "rejects_covering_bracket_off_root":  # a T1 bracket moved by 0.01 past its root
+            path, _ = write_certificate(cli, "covering_point", d)
+
+            def shift(c):
+                t1 = c["witnesses"]["segments"][1]["cover"][0]["T1"]
+                t1["t_lo"], t1["t_hi"] = float.hex(float.fromhex(t1["t_lo"]) + 0.01), float.hex(float.fromhex(t1["t_hi"]) + 0.01)
+            recheck(checker, mutate(path, bad, shift), 1, "a T1 bracket moved off its root")
+        elif case == "rejects_covering_across_discontinuity":  # J0 widened beyond its t2 end, across the jump of T1 there
+            path, _ = write_certificate(cli, "covering_point", d)
+
+            def widen(c):
+                j = c["witnesses"]["segments"][0]
+                top, t2 = float.fromhex(j["theta_top"]), float.fromhex(j["theta_t2"])
+                new_t2 = t2 + (0.05 if t2 > top else -0.05)
+                j["theta_t2"] = float.hex(new_t2)
+                j["lo"], j["hi"] = float.hex(min(top, new_t2)), float.hex(max(top, new_t2))
+                for b in j["t2_end"]:
+                    b["theta"] = [float.hex(new_t2)] * 2
+                # the cover ball at the t2 end stretched to the new end
+                edge = max if t2 > top else min
+                ball = edge(j["cover"], key=lambda b: float.fromhex(b["theta"][1 if t2 > top else 0]))
+                ball["theta"][1 if t2 > top else 0] = float.hex(new_t2)
+            recheck(checker, mutate(path, bad, widen), 1, "J0 widened across a discontinuity of T1")
+        elif case == "rejects_covering_turn":  # the number of whole turns k of one ball changed by one
+            path, _ = write_certificate(cli, "covering_point", d)
+
+            def turn(c):
+                c["witnesses"]["segments"][0]["top"][0]["k"] += 1
+            recheck(checker, mutate(path, bad, turn), 1, "the turn k of a ball changed")
+        elif case == "rejects_covering_lemma1_dropped":  # the stop arcs need Lemma 1: its witness deleted
+            path, _ = write_certificate(cli, "covering_stop", d)
+
+            def drop(c):
+                if "lemma1" not in c["witnesses"]:
+                    sys.exit("FAIL: the covering at q/a = 0.76 did not use Lemma 1; the case needs it")
+                del c["witnesses"]["lemma1"]
+            recheck(checker, mutate(path, bad, drop), 1, "the Lemma 1 witness deleted")
+        elif case == "rejects_covering_parameter_last_bit":  # q one ulp higher: the balls no longer lie in the box
+            path, _ = write_certificate(cli, "covering_point", d)
+
+            def ulp(c):
+                for end in ("lo", "hi"):
+                    c["parameters"]["q"][end]["hex"] = next_double_hex(c["parameters"]["q"][end]["hex"], +1)
+            recheck(checker, mutate(path, bad, ulp), 1, "parameter q changed in its last bit")
+        elif case == "rejects_covering_unknown_test":  # a piece closed by a test the format does not have
+            path, _ = write_certificate(cli, "covering_point", d)
+
+            def rename(c):
+                c["witnesses"]["segments"][0]["cover"][0]["T1"]["simple_root"][0][2] = "trust-me"
+            recheck(checker, mutate(path, bad, rename), 2, "a piece with an unknown test")
         elif case == "rejects_truncated":
             path, _ = write_certificate(cli, "lemma1_point", d)
             with open(path, "rb") as f:
@@ -143,11 +239,11 @@ def main():
                 sys.exit(f"FAIL: --certificate '': exit {proc.returncode}, stderr {proc.stderr!r}")
             print(f"ok:   --certificate '': exit 2: {proc.stderr.strip()}")
             # a statement without a certificate format: bad input before any proof
-            proc = subprocess.run([cli, "certify", "covering", "--b", "0.001", "--q", "0.85", "--certificate", os.path.join(d, "c.json")],
-                                  capture_output=True, text=True)
+            proc = subprocess.run([cli, "certify", "periodic", "--b", "0.001", "--q", "0.85", "--period", "2", "--certificate",
+                                   os.path.join(d, "c.json")], capture_output=True, text=True)
             if proc.returncode != 2 or proc.stdout or os.path.exists(os.path.join(d, "c.json")) or "certificate" not in proc.stderr:
-                sys.exit(f"FAIL: covering --certificate: exit {proc.returncode}, stderr {proc.stderr!r}")
-            print(f"ok:   covering --certificate: exit 2: {proc.stderr.strip()}")
+                sys.exit(f"FAIL: periodic --certificate: exit {proc.returncode}, stderr {proc.stderr!r}")
+            print(f"ok:   periodic --certificate: exit 2: {proc.stderr.strip()}")
             # a statement not proved writes no certificate (exit 1)
             target = os.path.join(d, "not-proved.json")
             proc = subprocess.run([cli, "certify", "lemma1", "--b", "0.05", "--q", "0.73", "--certificate", target], capture_output=True, text=True)
