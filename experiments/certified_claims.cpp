@@ -334,8 +334,10 @@ const Experiment experiment{
           for (const auto& [lo, hi] : chosen) {
             ++i;
             const auto t0 = Clock::now();
-            const WindowProof w = prove_window(1.0, q, lo, hi);
+            const WindowProof w = prove_window(1.0, q, lo, hi, 1e-9, true);
             time_row("Theorem 2 window " + std::to_string(i), since(t0));
+            if (w.verdict.proved)
+              run.certificate("cert.thm2.window" + std::to_string(i), certificate_text(certificate_window(1.0, q, w, statement_window())));
             auto& c = certified_claim(out, "cert.thm2.window" + std::to_string(i), "Theorem 2", statement_window(), to_json(1.0, q, w), w.verdict.proved,
                                       &w.verdict);
             c.parameter_object(Json::object().set("a", 1.0).set("q", q));
@@ -351,27 +353,30 @@ const Experiment experiment{
               out.macro("CertWindowLeftIn", w.left_in, 12);
               out.macro("CertWindowRightIn", w.right_in, 12);
               // Just outside the edge: superstability is refuted (T(t2) is in the free arc).
-              const SuperstableProof s = prove_superstable(1.0, w.right_out, q);
+              const SuperstableProof s = prove_superstable(1.0, w.right_out, q, 0.0 / 0.0, true);
               Json e = to_json(1.0, w.right_out, q, s);
-              auto& c2 = certified_claim(out, "cert.thm2.outside", "Theorem 2",
-                                         "Just outside the right edge of the window near b/a = " + fmt(hi, 4) +
-                                             " (b/a = " + fmt(w.right_out, 12) + "), t2 is not superstable: T(t2) is certified in the free arc, != t2.",
-                                         e, s.verdict.refuted);
+              const std::string outside = "Just outside the right edge of the window near b/a = " + fmt(hi, 4) + " (b/a = " + fmt(w.right_out, 12) +
+                                          "), t2 is not superstable: T(t2) is certified in the free arc, != t2.";
+              auto& c2 = certified_claim(out, "cert.thm2.outside", "Theorem 2", outside, e, s.verdict.refuted);
+              if (s.verdict.refuted)
+                run.certificate("cert.thm2.outside", certificate_text(certificate_not_superstable(1.0, w.right_out, q, s, outside)));
               c2.parameter_object(Json::object().set("a", 1.0).set("b", w.right_out).set("q", q));
             }
           }
           out.table("windows", t, "superstability windows at q/a = 0.85: the certified brackets of both edges");
           // Erratum: (2) and (22) do not suffice when b exceeds b0(q) (Lemma 1 fails).
           const double bx = 0.10854;
-          const Theorem2Counterexample x = prove_theorem2_counterexample(1.0, bx, q);
+          const Theorem2Counterexample x = prove_theorem2_counterexample(1.0, bx, q, true);
           Json e = Json::object();
           e.set("theta2_phase", ball_json(x.theta2_phase, 15)).set("u_at_t2", ball_json(x.u_at_t2, 10)).set("u_at_t3", ball_json(x.u_at_t3, 10));
           e.set("T_at_t2", ball_json(x.T, 15));
-          auto& ce = certified_claim(out, "cert.thm2.erratum", "Theorem 2, Lemma 1",
-                                     "Theorem 2 needs b < b0(q) besides (2) and (22): at (q/a, b/a) = (0.85, 0.10854) (doubles), (2) and (22) hold "
-                                     "(certified), but the progression from rest at t0 does not stop before t2 (u(t2) > 0 > u(t3), Eq. 8 reversed): "
-                                     "it stops at t4 in (t2, t3) where the mass flies (scenario D), so T(t2) = t4 != t2 and t2 is not superstable.",
-                                     e, x.verdict.proved, &x.verdict);
+          const std::string erratum =
+              "Theorem 2 needs b < b0(q) besides (2) and (22): at (q/a, b/a) = (0.85, 0.10854) (doubles), (2) and (22) hold "
+              "(certified), but the progression from rest at t0 does not stop before t2 (u(t2) > 0 > u(t3), Eq. 8 reversed): "
+              "it stops at t4 in (t2, t3) where the mass flies (scenario D), so T(t2) = t4 != t2 and t2 is not superstable.";
+          auto& ce = certified_claim(out, "cert.thm2.erratum", "Theorem 2, Lemma 1", erratum, e, x.verdict.proved, &x.verdict);
+          if (x.verdict.proved)
+            run.certificate("cert.thm2.erratum", certificate_text(certificate_theorem2_counterexample(1.0, bx, q, x, erratum)));
           ce.erratum().parameter_object(Json::object().set("a", 1.0).set("b", bx).set("q", q));
           const Ball::Printed t4 = x.T.printed(10);  // a ball that encloses t4 = T(t2)
           tex_row("Theorem 2 (erratum)", "(0.85, " + num(bx) + ")",

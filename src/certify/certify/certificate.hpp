@@ -6,7 +6,8 @@
 /// numbers (hexadecimal floating-point strings such as `"0x1.0624dd2f1a9fcp-10"`, which denote a
 /// binary number exactly, with a decimal beside them for humans) and every witness of the proof.
 /// The format, statement by statement, and what the checker does with it: docs/certificates.md.
-/// Statements with a certificate so far: vartheta0, lemma1, b0, covering.
+/// Statements with a certificate so far: vartheta0, lemma1, b0, covering, superstable (with or without
+/// a window), and in the experiments not_superstable and theorem2_counterexample.
 #pragma once
 
 #include <cstddef>
@@ -17,6 +18,7 @@
 #include "dfchaos/certified/ball.hpp"
 #include "dfchaos/certified/covering.hpp"
 #include "dfchaos/certified/progression.hpp"
+#include "dfchaos/certified/superstable.hpp"
 #include "dfchaos/certified/vartheta0.hpp"
 #include "kit/json.hpp"
 
@@ -27,10 +29,10 @@ inline constexpr const char* kCertificateFormat = "dfchaos-certificate";
 /// The format version (`"version"`); a checker refuses any other.
 inline constexpr int kCertificateVersion = 1;
 
-/// Whether statement `what` has a certificate format (vartheta0, lemma1, b0, covering).
+/// Whether `dfchaos certify what` can write a certificate (vartheta0, lemma1, b0, covering, superstable).
 bool has_certificate(const std::string& what);
 /// The statements with a certificate format, in words (for messages).
-inline constexpr const char* kCertificateStatements = "vartheta0, lemma1, b0 or covering";
+inline constexpr const char* kCertificateStatements = "vartheta0, lemma1, b0, covering or superstable";
 
 /// The double x as a C99 hexadecimal floating-point string (`%a`: exactly x, e.g. "0x1p+0").
 std::string hex_double(double x);
@@ -59,6 +61,23 @@ kit::Json certificate_b0(double a, double q, const certified::Lemma1Bound& p, co
 /// @throws std::logic_error if it was not, or if a witness is missing (a ball needed Lemma 1 and
 /// p.lemma1 is not proved).
 kit::Json certificate_covering(const certified::CoveringProof& p, const std::string& claim);
+
+/// The certificate of Theorem 2's conclusion at (a, b, q) (statement superstable): T = t2 on
+/// [t2, theta_end] by closed balls from t2, the condition (21) or (22) from theta2(t2), and the
+/// hypotheses (2), (23) that were certified, with the bracket of vartheta0. `p` must be proved with
+/// its witnesses recorded. @throws std::logic_error otherwise.
+kit::Json certificate_superstable(double a, double b, double q, const certified::SuperstableProof& p, const std::string& claim);
+/// The certificate that t2 is not superstable at (a, b, q) (statement not_superstable): T(t2) is the
+/// phase of theta2, strictly above t2 (scenario A). `p` must be refuted with its witnesses recorded.
+kit::Json certificate_not_superstable(double a, double b, double q, const certified::SuperstableProof& p, const std::string& claim);
+/// The certificate of a superstability window in b at (a, q) (statement window): T(t2(b)) = t2 on
+/// b-boxes covering [left_in, right_in], T(t2) > t2 at left_out and right_out, and Theorem 2's
+/// conclusion at the middle. `p` must be proved with its witnesses recorded.
+kit::Json certificate_window(double a, double q, const certified::WindowProof& p, const std::string& claim);
+/// The certificate of the erratum to Theorem 2 (statement theorem2_counterexample): (2) and (22)
+/// hold at (a, b, q) but u(t2) > 0 > u(t3). `p` must be proved with its witnesses recorded.
+kit::Json certificate_theorem2_counterexample(double a, double b, double q, const certified::Theorem2Counterexample& p,
+                                              const std::string& claim);
 
 /// The text of a certificate as every writer stores it (the tool, Python and the experiments).
 std::string certificate_text(const kit::Json& certificate);

@@ -1,5 +1,6 @@
 #include "certify/certificate.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <stdexcept>
 
@@ -40,7 +41,9 @@ kit::Json hex_array(std::initializer_list<double> xs) {
 
 }  // namespace
 
-bool has_certificate(const std::string& what) { return what == "vartheta0" || what == "lemma1" || what == "b0" || what == "covering"; }
+bool has_certificate(const std::string& what) {
+  return what == "vartheta0" || what == "lemma1" || what == "b0" || what == "covering" || what == "superstable";
+}
 
 std::string hex_double(double x) {
   char buf[64];
@@ -165,17 +168,25 @@ kit::Json pieces(const certified::NegativityRecord& r) {
 kit::Json ball(const certified::BallProof& b) {
   using certified::TCase;
   const certified::MapStepProof& T = b.T;
-  if (!T.verdict.proved || T.t_case == TCase::Unproved) throw std::logic_error("certificate_covering: a ball is not proved");
-  if (T.t1.no_contact.empty() && T.t1.simple_root.empty()) throw std::logic_error("certificate_covering: the proof was not recorded");
+  if (!T.verdict.proved) throw std::logic_error("certificate: a ball is not proved");
+  if (T.t1.no_contact.empty() && T.t1.simple_root.empty()) throw std::logic_error("certificate: the proof was not recorded");
   kit::Json j = kit::Json::object();
-  j.set("theta", hex_array({b.theta_lo, b.theta_hi}));
+  if (b.at_t2) {
+    j.set("theta", "t2");
+  } else if (b.from_t2) {
+    kit::Json th = kit::Json::array();
+    th.push("t2").push(hex_double(b.theta_hi));
+    j.set("theta", th);
+  } else {
+    j.set("theta", hex_array({b.theta_lo, b.theta_hi}));
+  }
   j.set("b", hex_array({b.box.b_lo, b.box.b_hi}));
   j.set("q", hex_array({b.box.q_lo, b.box.q_hi}));
   kit::Json t1 = kit::Json::object();
   t1.set("s0", hex_exact(T.t1.s0)).set("t_lo", hex_exact(T.t1.t_lo)).set("t_hi", hex_exact(T.t1.t_hi));
   t1.set("no_contact", pieces(T.t1.no_contact)).set("simple_root", pieces(T.t1.simple_root));
   j.set("T1", t1);
-  j.set("case", T.t_case == TCase::ScenarioAB ? "AB" : "BC");
+  j.set("case", T.t_case == TCase::ScenarioAB ? "AB" : T.t_case == TCase::ScenarioBC ? "BC" : "none");
   j.set("k", static_cast<long long>(T.turn));
   if (T.stop_arc.verdict.proved) {
     kit::Json s = kit::Json::object();
@@ -208,7 +219,89 @@ kit::Json segment(const certified::SegmentProof& s) {
   return j;
 }
 
+/// `{"lo", "hi"}` of the bracket of vartheta0 (exact hex), for the hypotheses (2) of Theorem 2.
+kit::Json vartheta0_bracket() {
+  static const certified::Vartheta0 v = certified::certify_vartheta0(128);
+  if (!v.verdict.proved) throw std::logic_error("certificate: vartheta0 not certified");
+  kit::Json j = kit::Json::object();
+  j.set("lo", hex_exact(v.bracket_lo)).set("hi", hex_exact(v.bracket_hi));
+  return j;
+}
+
+/// The witnesses of Theorem 2's conclusion at a point (statement superstable; also a window's middle).
+kit::Json superstable_witnesses(const certified::SuperstableProof& p) {
+  if (!p.verdict.proved || p.at.size() != 1 || p.cover.empty()) throw std::logic_error("certificate_superstable: not proved, or not recorded");
+  kit::Json w = kit::Json::object();
+  w.set("vartheta0", vartheta0_bracket());
+  kit::Json hyp = kit::Json::array();
+  if (p.eq2) hyp.push("(2)");
+  if (p.eq23) hyp.push("(23)");
+  w.set("hypotheses", hyp);
+  w.set("at_t2", ball(p.at.front()));
+  w.set("phase_turn", p.phase_turn);
+  w.set("condition", static_cast<long long>(p.condition));
+  double end = 0;
+  for (const certified::BallProof& b : p.cover) end = std::max(end, b.theta_hi);
+  w.set("theta_end", hex_double(end));
+  w.set("cover", balls(p.cover));
+  return w;
+}
+
+kit::Json point_parameters(double a, double b, double q) {
+  kit::Json par = kit::Json::object();
+  par.set("a", exact_number(a)).set("b", exact_number(b)).set("q", exact_number(q));
+  return par;
+}
+
 }  // namespace
+
+kit::Json certificate_superstable(double a, double b, double q, const certified::SuperstableProof& p, const std::string& claim) {
+  kit::Json j = header("superstable", claim);
+  j.set("parameters", point_parameters(a, b, q));
+  j.set("witnesses", superstable_witnesses(p));
+  return j;
+}
+
+kit::Json certificate_not_superstable(double a, double b, double q, const certified::SuperstableProof& p, const std::string& claim) {
+  if (!p.verdict.refuted || p.at.size() != 1) throw std::logic_error("certificate_not_superstable: not refuted, or not recorded");
+  kit::Json j = header("not_superstable", claim);
+  j.set("parameters", point_parameters(a, b, q));
+  kit::Json w = kit::Json::object();
+  w.set("at_t2", ball(p.at.front()));
+  j.set("witnesses", w);
+  return j;
+}
+
+kit::Json certificate_window(double a, double q, const certified::WindowProof& p, const std::string& claim) {
+  if (!p.verdict.proved || p.outer.size() != 2 || p.box_proofs.empty()) throw std::logic_error("certificate_window: not proved, or not recorded");
+  kit::Json j = header("window", claim);
+  kit::Json par = kit::Json::object();
+  par.set("a", exact_number(a)).set("q", exact_number(q));
+  j.set("parameters", par);
+  kit::Json w = kit::Json::object();
+  w.set("left_out", hex_double(p.left_out)).set("left_in", hex_double(p.left_in));
+  w.set("right_in", hex_double(p.right_in)).set("right_out", hex_double(p.right_out));
+  w.set("outer", balls(p.outer));
+  w.set("boxes", balls(p.box_proofs));
+  kit::Json inside = superstable_witnesses(p.inside);
+  inside.set("b", hex_double(p.inside.at.front().box.b_lo));
+  w.set("inside", inside);
+  j.set("witnesses", w);
+  return j;
+}
+
+kit::Json certificate_theorem2_counterexample(double a, double b, double q, const certified::Theorem2Counterexample& p,
+                                              const std::string& claim) {
+  if (!p.verdict.proved || p.at.size() != 1) throw std::logic_error("certificate_theorem2_counterexample: not proved, or not recorded");
+  kit::Json j = header("theorem2_counterexample", claim);
+  j.set("parameters", point_parameters(a, b, q));
+  kit::Json w = kit::Json::object();
+  w.set("vartheta0", vartheta0_bracket());
+  w.set("at_t2", ball(p.at.front()));
+  w.set("phase_turn", p.at.front().T.turn);
+  j.set("witnesses", w);
+  return j;
+}
 
 kit::Json certificate_covering(const certified::CoveringProof& p, const std::string& claim) {
   if (!p.verdict.proved) throw std::logic_error("certificate_covering: not proved");

@@ -142,13 +142,17 @@ Result certify(const Request& r) {
   // superstable
   const ParameterBox box = box_from(r, true, false);
   if (!r.window) {
-    const SuperstableProof p = prove_superstable(box.a, box.b_lo, box.q_lo);
-    return {p.verdict.proved, to_json(box.a, box.b_lo, box.q_lo, p)};
+    const SuperstableProof p = prove_superstable(box.a, box.b_lo, box.q_lo, 0.0 / 0.0, r.certificate);
+    Result c{p.verdict.proved, to_json(box.a, box.b_lo, box.q_lo, p)};
+    if (c.proved && r.certificate) c.certificate = certificate_superstable(box.a, box.b_lo, box.q_lo, p, claim_of(c));
+    return c;
   }
   const auto [lo, hi] = bounded("window", *r.window);
   if (!(lo > 0 && lo < hi && 2 * hi < box.a)) throw InvalidParameter("window", "0 < LO < HI < a/2", lo);
-  const WindowProof w = prove_window(box.a, box.q_lo, lo, hi);
-  return {w.verdict.proved, to_json(box.a, box.q_lo, w)};
+  const WindowProof w = prove_window(box.a, box.q_lo, lo, hi, 1e-9, r.certificate);
+  Result c{w.verdict.proved, to_json(box.a, box.q_lo, w)};
+  if (c.proved && r.certificate) c.certificate = certificate_window(box.a, box.q_lo, w, claim_of(c));
+  return c;
 }
 
 }  // namespace dfchaos::certify

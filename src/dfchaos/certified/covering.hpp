@@ -59,15 +59,6 @@ std::vector<Candidate> covering_candidates(double a, double b, double q, const C
 /// covering_candidates()).
 std::vector<Candidate> track_candidates(double a, double b, double q, const std::vector<Candidate>& old, const CoveringOptions& opt = {});
 
-/// One closed ball of a covering proof, the start phases \f$[\theta_{lo}, \theta_{hi}]\f$ over a
-/// sub-box of the parameters, with the proof of T on it.
-struct BallProof {
-  double theta_lo = 0;  ///< lower end of the start phases
-  double theta_hi = 0;  ///< upper end
-  ParameterBox box;     ///< the sub-box
-  MapStepProof T;       ///< T on the ball, with its witnesses
-};
-
 /// The proof of one covering segment.
 struct SegmentProof {
   Outcome verdict;          ///< proved: T continuous on J, T = t2 at theta_t2, T >= 3pi/2 at theta_top

@@ -107,6 +107,19 @@ MapStepProof certify_T(const ParameterBalls& m, const StartSet& set, Budget& bud
                                                     ", is not inside one arc [t1, t3) or [t3, t2 + 2 pi) (T may jump at t3)"));
 }
 
+BallProof BallProof::of(const StartSet& set, const ParameterBox& box, MapStepProof T) {
+  BallProof b;
+  b.box = box;
+  b.T = std::move(T);
+  b.at_t2 = set.kind == StartSet::Kind::AtT2;
+  b.from_t2 = set.lo_is_t2;
+  if (!b.at_t2) {
+    b.theta_lo = b.from_t2 ? set.lo.upper() : set.lo.mid();  // (from_t2: not used)
+    b.theta_hi = set.hi.mid();
+  }
+  return b;
+}
+
 bool derivative_T(const ParameterBalls& m, const StartSet& set, const MapStepProof& t, Ball& dT) {
   if (!t.verdict || t.t_case != TCase::ScenarioAB || !lt(m.t2, t.theta2_phase)) return false;
   const Ball th = set.hull(m);

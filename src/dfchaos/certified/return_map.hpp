@@ -65,6 +65,19 @@ struct MapStepProof {
 MapStepProof certify_T(const ParameterBalls& m, const StartSet& set, Budget& budget, const Lemma1Proof* lemma1 = nullptr,
                        bool record = false);
 
+/// One closed ball of a proof about T (a covering, Theorem 2): start phases over a sub-box of the
+/// parameters, with the proof of T on it and its witnesses (for a certificate).
+struct BallProof {
+  double theta_lo = 0;  ///< lower end of the start phases (unless from_t2 or at_t2)
+  double theta_hi = 0;  ///< upper end (unless at_t2)
+  ParameterBox box;     ///< the sub-box
+  MapStepProof T;       ///< T on the ball, with its witnesses
+  bool from_t2 = false; ///< the phases are \f$[t_2, \theta_{hi}]\f$, from \f$t_2\f$ exactly (a point box)
+  bool at_t2 = false;   ///< the phases are the family \f$\theta = t_2(b)\f$, b in the box
+  /// The ball of `set` over `box` with its proof (the kind of start set is kept).
+  static BallProof of(const StartSet& set, const ParameterBox& box, MapStepProof T);
+};
+
 /// Enclosure of \f$T'\f$ over a set where `t` proved the case ScenarioAB with the phase of \f$\theta_2\f$
 /// strictly inside \f$(t_2, t_3)\f$ (scenario A, T smooth), by the implicit function theorem on
 /// Eqs. (11) and (17): \f$T_1' = F(\theta)(\theta_1 - \theta)/\partial_t G_1\f$,

@@ -21,8 +21,13 @@ Ball phase_of(const ParameterBalls& m, const Ball& x) {
   return x - Ball(static_cast<double>(k)) * m.two_pi;
 }
 
-MapStepProof T_at_t2(const ParameterBalls& m, Budget& budget) {
-  return certify_T(m, StartSet::from_t2(m, m.t2.upper()), budget);
+MapStepProof T_at_t2(const ParameterBalls& m, Budget& budget, bool record = false) {
+  return certify_T(m, StartSet::from_t2(m, m.t2.upper()), budget, nullptr, record);
+}
+
+/// The turn k with which phase_of() reduces x.
+long long phase_turn_of(const ParameterBalls& m, const Ball& x) {
+  return static_cast<long long>(std::floor((x.mid() - m.t1.mid()) / (2 * M_PI)));
 }
 
 }  // namespace
@@ -36,7 +41,7 @@ int superstable_condition(const ParameterBalls& m, const MapStepProof& t) {
   return -1;
 }
 
-SuperstableProof prove_superstable(double a, double b, double q, double eps_try) {
+SuperstableProof prove_superstable(double a, double b, double q, double eps_try, bool record) {
   const auto start = std::chrono::steady_clock::now();
   SuperstableProof r;
   auto finish = [&](Outcome v) {
@@ -52,8 +57,12 @@ SuperstableProof prove_superstable(double a, double b, double q, double eps_try)
     r.eq23 = lt(m.q, m.a);
   }
   Budget budget;
-  const MapStepProof at = T_at_t2(m, budget);
+  const MapStepProof at = T_at_t2(m, budget, record);
   if (!at.verdict) return finish(Outcome::fail("Theorem 2: T at t2", at.verdict.describe()));
+  if (record) {
+    r.at.push_back(BallProof::of(StartSet::from_t2(m, m.t2.upper()), m.box(), at));
+    if (at.theta2.verdict) r.phase_turn = phase_turn_of(m, at.theta2.enclosure);
+  }
   r.T1 = at.t1.enclosure;
   r.theta2 = at.theta2.enclosure;
   r.theta2_phase = phase_of(m, at.theta2.enclosure);
@@ -82,14 +91,16 @@ SuperstableProof prove_superstable(double a, double b, double q, double eps_try)
     std::vector<Item> stack{{NAN, hi, 0}};
     int balls = 0;
     bool used_l1 = false, ok = true;
+    r.cover.clear();
     while (!stack.empty() && ok) {
       const Item it = stack.back();
       stack.pop_back();
       const StartSet set = std::isnan(it.lo) ? StartSet::from_t2(m, it.hi) : StartSet::interval(it.lo, it.hi);
-      const MapStepProof t = certify_T(m, set, budget);
+      MapStepProof t = certify_T(m, set, budget, nullptr, record);
       if (t.verdict && t.constant_t2) {
         ++balls;
         used_l1 = used_l1 || t.used_lemma1;
+        if (record) r.cover.push_back(BallProof::of(set, m.box(), std::move(t)));
         continue;
       }
       const double from = std::isnan(it.lo) ? t2_up : it.lo;
@@ -112,7 +123,7 @@ SuperstableProof prove_superstable(double a, double b, double q, double eps_try)
   return finish(Outcome::fail("Theorem 2: epsilon", "T = t2 on [t2, t2 + eps] not proved for any eps tried (last: " + last_failure + ")"));
 }
 
-WindowProof prove_window(double a, double q, double b_lo, double b_hi, double rel) {
+WindowProof prove_window(double a, double q, double b_lo, double b_hi, double rel, bool record) {
   const auto start = std::chrono::steady_clock::now();
   WindowProof r;
   r.b_lo_float = b_lo;
@@ -123,7 +134,7 @@ WindowProof prove_window(double a, double q, double b_lo, double b_hi, double re
     return r;
   };
   const double mid = 0.5 * (b_lo + b_hi);
-  r.inside = prove_superstable(a, mid, q);
+  r.inside = prove_superstable(a, mid, q, 0.0 / 0.0, record);
   if (!r.inside.verdict) return finish(Outcome::fail("window: inside", r.inside.verdict.describe()));
   std::string last;
   for (int attempt = 0; attempt < 4; ++attempt, rel *= 10) {
@@ -134,10 +145,12 @@ WindowProof prove_window(double a, double q, double b_lo, double b_hi, double re
     if (!(r.left_in < r.right_in)) { last = "window narrower than the edge brackets"; break; }
     // Outer points: T(t2) certainly differs from t2.
     bool outer_ok = true;
+    r.outer.clear();
     for (int side = 0; side < 2 && outer_ok; ++side) {
       const ParameterBalls mo(ParameterBox::point(a, side == 0 ? r.left_out : r.right_out, q));
       Budget budget;
-      const MapStepProof t = T_at_t2(mo, budget);
+      const MapStepProof t = T_at_t2(mo, budget, record);
+      if (record) r.outer.push_back(BallProof::of(StartSet::from_t2(mo, mo.t2.upper()), mo.box(), t));
       Ball& T = side == 0 ? r.T_left_out : r.T_right_out;
       T = t.T;
       if (!t.verdict || t.constant_t2 || !lt(mo.t2, t.T)) {
@@ -151,15 +164,17 @@ WindowProof prove_window(double a, double q, double b_lo, double b_hi, double re
     std::vector<Item> stack{{r.left_in, r.right_in, 0}};
     int boxes = 0;
     bool ok = true;
+    r.box_proofs.clear();
     Budget budget;
     budget.max_tests = 20'000'000;
     while (!stack.empty()) {
       const Item it = stack.back();
       stack.pop_back();
       const ParameterBalls mb(ParameterBox{a, it.lo, it.hi, q, q});
-      const MapStepProof t = certify_T(mb, StartSet::at_t2(), budget);
+      MapStepProof t = certify_T(mb, StartSet::at_t2(), budget, nullptr, record);
       if (t.verdict && t.constant_t2) {
         ++boxes;
+        if (record) r.box_proofs.push_back(BallProof::of(StartSet::at_t2(), mb.box(), std::move(t)));
         continue;
       }
       const double m2 = 0.5 * (it.lo + it.hi);
@@ -178,7 +193,7 @@ WindowProof prove_window(double a, double q, double b_lo, double b_hi, double re
   return finish(Outcome::fail("window: edges", last));
 }
 
-Theorem2Counterexample prove_theorem2_counterexample(double a, double b, double q) {
+Theorem2Counterexample prove_theorem2_counterexample(double a, double b, double q, bool record) {
   Theorem2Counterexample r;
   const ParameterBalls m(ParameterBox::point(a, b, q));
   if (Outcome v = m.admissible(); !v) {
@@ -192,12 +207,14 @@ Theorem2Counterexample prove_theorem2_counterexample(double a, double b, double 
   }
   Budget budget;
   const StartSet set = StartSet::from_t2(m, m.t2.upper());
-  const FirstHitProof t1 = certify_T1(m, set, budget);
+  FirstHitOptions t1_options;
+  t1_options.record = record;
+  const FirstHitProof t1 = certify_T1(m, set, budget, t1_options);
   if (!t1.verdict) {
     r.verdict = t1.verdict;
     return r;
   }
-  const Theta2Proof th = certify_theta2(m, set, t1, budget);
+  const Theta2Proof th = certify_theta2(m, set, t1, budget, record);
   if (!th.verdict) {
     r.verdict = th.verdict;
     return r;
@@ -217,6 +234,15 @@ Theorem2Counterexample prove_theorem2_counterexample(double a, double b, double 
   // t4 by bisection on the sign of u in [t2, t3] (u decreasing there).
   r.T = enclose_sign_change(u, m.t2.upper_ball(), m.t3.lower_ball(), 200);
   r.verdict = Outcome::ok();
+  if (record) {
+    MapStepProof step;  // the T1 and theta2 proofs from t2; the phase's turn in `turn`
+    step.verdict = Outcome::ok();
+    step.t1 = t1;
+    step.theta2 = th;
+    step.t_case = TCase::Unproved;  // T(t2) = t4 comes from scenario D, not from a case of certify_T
+    step.turn = phase_turn_of(m, th.enclosure);
+    r.at.push_back(BallProof::of(set, m.box(), std::move(step)));
+  }
   return r;
 }
 

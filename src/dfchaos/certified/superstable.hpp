@@ -23,6 +23,8 @@
 
 #include <string>
 
+#include <vector>
+
 #include "dfchaos/certified/return_map.hpp"
 
 namespace dfchaos::certified {
@@ -40,11 +42,16 @@ struct SuperstableProof {
   bool eq2 = false;          ///< assumptions (2) certified (with the certified \f$\vartheta_0\f$)
   bool eq23 = false;         ///< assumptions (23) certified
   double seconds = 0;        ///< wall time
+  // The witnesses, kept when asked (docs/certificates.md, statement superstable):
+  std::vector<BallProof> at;     ///< T at \f$[t_2, t_2^{\uparrow}]\f$ (\f$t_2^{\uparrow}\f$ the double above \f$t_2\f$): one ball
+  std::vector<BallProof> cover;  ///< the balls on which T = t2, covering \f$[t_2, t_2^{\uparrow} + \varepsilon]\f$
+  long long phase_turn = 0;      ///< the phase of \f$\theta_2(t_2)\f$ is \f$\theta_2 - 2\pi\f$ phase_turn
 };
 
 /// Proves Theorem 2's conclusion at (a, b, q). `eps_try`: the width to try first (NaN: from the
-/// floating layer's measured width, halved until proved, at most 12 times).
-SuperstableProof prove_superstable(double a, double b, double q, double eps_try = 0.0 / 0.0);
+/// floating layer's measured width, halved until proved, at most 12 times). With `record`, the
+/// witnesses are kept.
+SuperstableProof prove_superstable(double a, double b, double q, double eps_try = 0.0 / 0.0, bool record = false);
 
 /// The condition (21)/(22) of a certified T at \f$t_2\f$: 21, 22, 0 (certainly neither), -1 (undecided).
 int superstable_condition(const ParameterBalls& m, const MapStepProof& t);
@@ -71,11 +78,15 @@ struct WindowProof {
   Ball T_right_out;                       ///< T(t2) at right_out (certainly not t2)
   int boxes = 0;                          ///< b-boxes of the cover of [left_in, right_in]
   double seconds = 0;                     ///< wall time
+  // The witnesses, kept when asked (docs/certificates.md, statement window):
+  std::vector<BallProof> outer;           ///< T at t2 at b = left_out and right_out (T != t2)
+  std::vector<BallProof> box_proofs;      ///< T(t2(b)) = t2 on each b-box, covering [left_in, right_in]
 };
 
 /// Certifies the window estimated by the floating layer as \f$[b_{lo}, b_{hi}]\f$; the edge brackets have
-/// relative half-width `rel` (grown x10, at most 4 times, until proved).
-WindowProof prove_window(double a, double q, double b_lo, double b_hi, double rel = 1e-9);
+/// relative half-width `rel` (grown x10, at most 4 times, until proved). With `record`, the witnesses
+/// are kept (of the middle's proof too).
+WindowProof prove_window(double a, double q, double b_lo, double b_hi, double rel = 1e-9, bool record = false);
 
 /// Theorem 2 as stated, tested where Lemma 1 fails: hypotheses (2) and (22) certified, and yet
 /// \f$T(t_2) \ne t_2\f$, because the progression that starts from rest at \f$t_0\f$ does not stop before
@@ -88,7 +99,11 @@ struct Theorem2Counterexample {
   Ball u_at_t2;          ///< Eq. (8): positive
   Ball u_at_t3;          ///< negative
   Ball T;                ///< \f$T(t_2) = t_4\f$
+  /// The witnesses (docs/certificates.md, statement theorem2_counterexample): T1 and theta2 from
+  /// \f$[t_2, t_2^{\uparrow}]\f$ (case and turn of the phase of \f$\theta_2\f$ set as for a ball).
+  std::vector<BallProof> at;
 };
-Theorem2Counterexample prove_theorem2_counterexample(double a, double b, double q);
+/// Proves the counterexample at (a, b, q); with `record`, the witnesses are kept.
+Theorem2Counterexample prove_theorem2_counterexample(double a, double b, double q, bool record = false);
 
 }  // namespace dfchaos::certified
