@@ -9,7 +9,12 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 fails=0
 check() { if eval "$2"; then echo "ok:   $1"; else echo "FAIL: $1"; fails=$((fails + 1)); fi; }
+# A certificate left by an earlier run whose proof this run does not make (a stale one) is removed;
+# a file the experiment does not own is left alone.
+mkdir -p "$tmp/certificates" && echo '{}' >"$tmp/certificates/cert.lemma4.Z.json" && echo '{}' >"$tmp/certificates/mine.json"
 "$exe" --fast --out "$tmp" >/dev/null 2>"$tmp/log" || { cat "$tmp/log"; echo "FAIL: certified_claims --fast"; exit 1; }
+check "a stale certificate of the experiment is removed" '[[ ! -e $tmp/certificates/cert.lemma4.Z.json ]]'
+check "a file the experiment does not own is kept" '[[ -e $tmp/certificates/mine.json ]]' && rm -f "$tmp/certificates/mine.json"
 n=$(ls "$tmp"/certificates/*.json 2>/dev/null | wc -l)
 check "certified_claims wrote certificates ($n)" '((n >= 3))'
 check "the checker accepts every one" '"$py" "$script" "$tmp" "$checker" >"$tmp/out" 2>&1'

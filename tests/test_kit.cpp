@@ -192,6 +192,27 @@ TEST(Output, CertificatesGoWithTheOtherOutputsOrNotAtAll) {
   fs::remove_all(root);
 }
 
+TEST(Output, ARetiredFileIsRemovedOnlyOnceTheNewOutputsAreInPlace) {
+  const fs::path root = fresh_dir("retire");
+  fs::create_directories(root / "certificates");
+  std::ofstream(root / "certificates" / "demo.old.json") << "{}\n";
+  // A failing set keeps the old file: nothing of the run is written, nothing removed.
+  std::ofstream(root / "data") << "a regular file where the data folder should be";
+  Output bad("demo", root);
+  bad.retire(root / "certificates" / "demo.old.json");
+  bad.table("", Table({"x"}), "t");
+  EXPECT_THROW(bad.finish(), OutputError);
+  EXPECT_TRUE(fs::exists(root / "certificates" / "demo.old.json"));
+  fs::remove(root / "data");
+  Output out("demo", root);
+  out.retire(root / "certificates" / "demo.old.json");
+  out.certificate("demo.new", "{}\n");
+  EXPECT_EQ(out.finish(), 0);
+  EXPECT_FALSE(fs::exists(root / "certificates" / "demo.old.json"));
+  EXPECT_TRUE(fs::exists(root / "certificates" / "demo.new.json"));
+  fs::remove_all(root);
+}
+
 TEST(Output, AnExpectedFailureGivesExitStatusOne) {
   const fs::path root = fresh_dir("fail");
   Output out("demo", root);

@@ -116,6 +116,9 @@ class Output {
   void latex(const std::string& file, const std::string& tex);
   /// Adds a proof certificate (a JSON document, written as given), to `certificates/FILE.json`.
   void certificate(const std::string& file, const std::string& json);
+  /// A file of an earlier run that this run replaces by nothing (a certificate of a proof that no
+  /// longer succeeds): removed by finish() once the new outputs are in place.
+  void retire(const std::filesystem::path& path);
   /// Adds a macro `\dfcNAME{value}` (NAME: letters only), written to `tables/EXPERIMENT-macros.tex`.
   void macro(const std::string& name, const std::string& value);
   /// The same, a number rounded to the given significant digits.
@@ -143,6 +146,7 @@ class Output {
   std::vector<std::pair<std::string, std::string>> parameters_;
   std::vector<std::pair<std::filesystem::path, std::string>> files_;
   std::vector<std::pair<std::string, std::string>> written_;
+  std::vector<std::filesystem::path> retired_;  ///< files of an earlier run to remove after writing
   std::vector<std::pair<std::string, std::string>> macros_;
   std::deque<Claim> claims_;
   std::string header() const;

@@ -152,6 +152,18 @@ int Experiment::run_main(const std::string& name, int argc, char** argv) const {
       for (const auto& [kind, part] : out.written()) found = found || (kind == o.kind && part == o.part);
       if (!found) throw std::logic_error("declared output " + o.kind + " '" + o.part + "' was not written");
     }
+    // Certificates of an earlier run that this one did not write again (their proof no longer
+    // succeeds, or no longer runs): stale, removed once the new outputs are in place, so that no
+    // certificate outlives its proof.
+    std::error_code ec;
+    for (const auto& e : std::filesystem::directory_iterator(std::filesystem::path(out_root) / "certificates", ec)) {
+      if (e.path().extension() != ".json") continue;
+      const std::string stem = e.path().stem().string();
+      bool ours = false, written = false;
+      for (const auto& o : outputs) ours = ours || o.matches("certificate", stem);
+      for (const auto& [kind, part] : out.written()) written = written || (kind == "certificate" && part == stem);
+      if (ours && !written) out.retire(e.path());
+    }
     return out.finish();
   } catch (const InvalidParameter& e) {
     std::fprintf(stderr, "%s: error: %s\n", name.c_str(), one_line(e.what()).c_str());

@@ -234,6 +234,8 @@ void Output::table(const std::string& part, const Table& t, const std::string& d
   written_.emplace_back("data", part);
 }
 
+void Output::retire(const fs::path& path) { retired_.push_back(path); }
+
 void Output::certificate(const std::string& file, const std::string& json) {
   files_.emplace_back(root_ / "certificates" / (file + ".json"), json);
   written_.emplace_back("certificate", file);
@@ -299,6 +301,11 @@ int Output::finish() const {
   for (const auto& [k, v] : parameters_) prow += "\\dfcparamrow{" + latex_escape(k) + "}{" + latex_escape(v) + "}\n";
   files.emplace_back(root_ / "tables" / (name_ + "-params.tex"), prow);
   write_all_or_nothing(files);
+  for (const auto& path : retired_) {
+    std::error_code ec;
+    fs::remove(path, ec);
+    if (ec) std::fprintf(stderr, "%s: warning: cannot remove the stale %s (%s)\n", name_.c_str(), path.string().c_str(), ec.message().c_str());
+  }
   for (const auto& c : claims_) {
     const char* v = c.verdict() == Verdict::Holds ? "holds" : c.verdict() == Verdict::Fails ? "FAILS" : "incon.";
     std::fprintf(stderr, "  %-6s %-30s %-18s %s\n", v, c.id().c_str(), evidence_kind_name(c.kind()), c.reference().c_str());
