@@ -24,6 +24,10 @@ REQUESTS = {
     "covering_point": ["covering", "--a", "1", "--b", "0.001", "--q", "0.85"],
     # at q/a = 0.76 the t2 ends are proved by the stop arc, through Lemma 1 (witnesses.lemma1)
     "covering_stop": ["covering", "--a", "1", "--b", "0.001", "--q", "0.76"],
+    # Theorem 2's conclusion at a point inside the window near b/a = 0.0641 (condition (21))
+    "superstable": ["superstable", "--a", "1", "--b", "0.0641", "--q", "0.85"],
+    # that window, with its edges bracketed (the floating estimate of certified_claims)
+    "window": ["superstable", "--a", "1", "--b", "0.0641", "--q", "0.85", "--window", "0.064075562769072836:0.064187276762950898"],
     # a box of certified_region, re-proved with the J0, J1 its row records
     "covering_box": ["covering", "--a", "1", "--b", "0.0019697602976329739:0.00196980455453853",
                      "--q", "0.80000000000000004:0.81000000000000005", "--J0", "3.2595461317302936:3.3248980967076651",
@@ -198,6 +202,29 @@ def main():
             def rename(c):
                 c["witnesses"]["segments"][0]["cover"][0]["T1"]["simple_root"][0][2] = "trust-me"
             recheck(checker, mutate(path, bad, rename), 2, "a piece with an unknown test")
+        elif case == "rejects_superstable_condition":  # (22) claimed where theta2(t2) satisfies (21)
+            path, _ = write_certificate(cli, "superstable", d)
+
+            def swap(c):
+                w = c["witnesses"]
+                if w["condition"] != 21:
+                    sys.exit(f"FAIL: the superstable certificate names condition {w['condition']}; the case needs (21)")
+                w["condition"] = 22
+            recheck(checker, mutate(path, bad, swap), 1, "the condition (21) renamed (22)")
+        elif case == "rejects_window_edge_last_bit":  # left_in one ulp lower: the b-boxes no longer cover [left_in, right_in]
+            path, _ = write_certificate(cli, "window", d)
+
+            def ulp(c):
+                w = c["witnesses"]
+                w["left_in"] = next_double_hex(w["left_in"], -1)
+            recheck(checker, mutate(path, bad, ulp), 1, "a window edge moved by one ulp")
+        elif case == "rejects_window_outer_moved":  # the outer point moved into the window: its ball is not at left_out
+            path, _ = write_certificate(cli, "window", d)
+
+            def move(c):
+                w = c["witnesses"]
+                w["left_out"] = next_double_hex(w["left_out"], +1)
+            recheck(checker, mutate(path, bad, move), 1, "left_out changed in its last bit, its proof left as it was")
         elif case == "rejects_truncated":
             path, _ = write_certificate(cli, "lemma1_point", d)
             with open(path, "rb") as f:
