@@ -527,7 +527,9 @@ Outcome check_ball(Steps& st, const Iv& A, const Ball& ball, const json& j, cons
   // G2 <= G2max(t).
   Outcome out;
   const json& jk = field(j, "k", where);
-  if (!jk.is_number_integer() || std::llabs(jk.get<long long>()) >= 1000000000LL) throw Malformed("'" + where + "k' is not an integer below 10^9");
+  const bool small = jk.is_number_unsigned() ? jk.get<unsigned long long>() < 1000000000ULL
+                                             : jk.is_number_integer() && jk.get<long long>() > -1000000000LL;
+  if (!small) throw Malformed("'" + where + "k' is not an integer of absolute value below 10^9");
   const double k = static_cast<double>(jk.get<long long>());
   out.two_pi_k = 2.0 * pi() * Iv(k);
   const Iv next = 2.0 * pi() * Iv(k + 1);
