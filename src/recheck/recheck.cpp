@@ -467,10 +467,10 @@ struct Outcome {
   Iv two_pi_k, u_lo, u_hi;
 };
 
-/// One ball Theta x B x Q (docs: "one ball"): T1 is the only, simple zero of G1 in [t_lo, t_hi] and
-/// G1 < 0 before it; the first stop is the simple zero theta2 in (u_lo, u_hi) or lies in
-/// [t3, t2 + 2 pi) + 2 pi k; the case then makes T = max(theta2 - 2 pi k, t2) (AB) or T = t2 (BC),
-/// continuous on the ball.
+/// One ball Theta x B x Q of a covering certificate (README.md): T1 is the only, simple zero of G1
+/// in [t_lo, t_hi] and G1 < 0 before it; the first stop is the simple zero theta2 in (u_lo, u_hi) or
+/// lies in [t3, t2 + 2 pi) + 2 pi k; the case then makes T = max(theta2 - 2 pi k, t2) (AB) or T = t2
+/// (BC), continuous on the ball.
 Outcome check_ball(Steps& st, const Iv& A, const Ball& ball, const json& j, const std::string& who, const std::string& where) {
   const auto step = [&](const std::string& s) { return who + ": " + s; };
   const Box& x = ball.box;
