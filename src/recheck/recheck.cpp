@@ -321,29 +321,39 @@ void standing(Steps& st, const Iv& A, const Iv& B, const Iv& Q, bool b_positive)
   st.require((A - (Q - 2.0 * B)).positive(), "q - 2b < a on the box");
 }
 
-/// The parameters {a} x [b_lo, b_hi] x [q_lo, q_hi] of a certificate, and the standing conditions on them.
-std::pair<Iv, Box> parameter_box(Steps& st, const json& c) {
+/// The parameters {a} x [b_lo, b_hi] x [q_lo, q_hi] of a certificate.
+std::pair<double, Box> read_box(const json& c) {
   const json& p = field(c, "parameters", "");
-  const double a = parameter(p, "a", "parameters.");
   const json& b = field(p, "b", "parameters."), &q = field(p, "q", "parameters.");
-  const Box box{parameter(b, "lo", "parameters.b."), parameter(b, "hi", "parameters.b."), parameter(q, "lo", "parameters.q."),
-                parameter(q, "hi", "parameters.q.")};
+  return {parameter(p, "a", "parameters."), {parameter(b, "lo", "parameters.b."), parameter(b, "hi", "parameters.b."),
+                                             parameter(q, "lo", "parameters.q."), parameter(q, "hi", "parameters.q.")}};
+}
+
+/// The box is not empty and the standing conditions hold on it; returns {a}.
+Iv standing_box(Steps& st, double a, const Box& box) {
   st.require(box.b_lo <= box.b_hi && box.q_lo <= box.q_hi, "the box is not empty");
   const Iv A(a);
   standing(st, A, Iv(box.b_lo, box.b_hi), Iv(box.q_lo, box.q_hi), true);
-  return {A, box};
+  return A;
 }
 
-/// Lemma 1 over the box (its standing conditions already required) with the witness w =
-/// {"sub_boxes": [...]}: the sub-boxes inside the box and covering it, Eq. (8) u(t2) < 0 on each.
-void lemma1(Steps& st, const Iv& A, const Box& box, const json& w, const std::string& where) {
+/// Lemma 1's witness {"sub_boxes": [[b_lo, b_hi, q_lo, q_hi], ...]}.
+std::vector<Ball> read_sub_boxes(const json& w, const std::string& where) {
   const json& list = field(w, "sub_boxes", where);
   if (!list.is_array()) throw Malformed("'" + where + "sub_boxes' is not an array");
   std::vector<Ball> subs;
   for (std::size_t i = 0; i < list.size(); ++i) {
     const std::vector<double> v = doubles(list[i], 4, where + "sub_boxes[" + std::to_string(i) + "]");
     subs.push_back({0, 0, {v[0], v[1], v[2], v[3]}});
-    const Box& s = subs.back().box;
+  }
+  return subs;
+}
+
+/// Lemma 1 over the box (its standing conditions already required): the sub-boxes inside the box
+/// and covering it, Eq. (8) u(t2) < 0 on each.
+void lemma1(Steps& st, const Iv& A, const Box& box, const std::vector<Ball>& subs) {
+  for (std::size_t i = 0; i < subs.size(); ++i) {
+    const Box& s = subs[i].box;
     st.require(s.b_lo <= s.b_hi && s.q_lo <= s.q_hi && box.b_lo <= s.b_lo && s.b_hi <= box.b_hi && box.q_lo <= s.q_lo && s.q_hi <= box.q_hi,
                "Lemma 1: sub-box " + std::to_string(i) + " (" + describe(s) + ") lies inside the box");
   }
@@ -359,8 +369,9 @@ void lemma1(Steps& st, const Iv& A, const Box& box, const json& w, const std::st
 /// sub-boxes inside it and covering it, Eq. (8) u(t2) < 0 on each.
 long check_lemma1(const json& c) {
   Steps st;
-  const auto [A, box] = parameter_box(st, c);
-  lemma1(st, A, box, field(c, "witnesses", ""), "witnesses.");
+  const auto [a, box] = read_box(c);
+  const std::vector<Ball> subs = read_sub_boxes(field(c, "witnesses", ""), "witnesses.");
+  lemma1(st, standing_box(st, a, box), box, subs);
   return st.n;
 }
 
@@ -467,12 +478,64 @@ struct Outcome {
   Iv two_pi_k, u_lo, u_hi;
 };
 
+/// The witnesses of one ball, all read before anything is checked (so that a malformed certificate
+/// is reported as such whichever step would fail first).
+struct BallWitness {
+  Ball ball;
+  Num s0, t_lo, t_hi, u_lo, u_hi, tau, from;  // u_lo, u_hi: theta2; tau, from (unless impact): stop_arc
+  std::vector<Piece> no_contact, simple_root, no_earlier_stop, simple_zero, no_stop_before_t3;
+  bool ab = false, theta2 = false, from_impact = false;
+  double k = 0;
+};
+
+BallWitness read_ball(const json& j, const std::string& where) {
+  BallWitness w;
+  const std::vector<double> th = doubles(field(j, "theta", where), 2, where + "theta"), b = doubles(field(j, "b", where), 2, where + "b"),
+                            q = doubles(field(j, "q", where), 2, where + "q");
+  w.ball = {th[0], th[1], {b[0], b[1], q[0], q[1]}};
+  const json& jt = field(j, "T1", where);
+  const std::string wt = where + "T1.";
+  w.s0 = exact(field(jt, "s0", wt), wt + "s0"), w.t_lo = exact(field(jt, "t_lo", wt), wt + "t_lo"), w.t_hi = exact(field(jt, "t_hi", wt), wt + "t_hi");
+  w.no_contact = pieces(field(jt, "no_contact", wt), wt + "no_contact");
+  w.simple_root = pieces(field(jt, "simple_root", wt), wt + "simple_root");
+  const json& jc = field(j, "case", where);
+  if (jc != "AB" && jc != "BC") throw Malformed("'" + where + "case' is not \"AB\" or \"BC\"");
+  w.ab = jc == "AB";
+  const json& jk = field(j, "k", where);
+  const bool small = jk.is_number_unsigned() ? jk.get<unsigned long long>() < 1000000000ULL
+                                             : jk.is_number_integer() && jk.get<long long>() > -1000000000LL;
+  if (!small) throw Malformed("'" + where + "k' is not an integer of absolute value below 10^9");
+  w.k = static_cast<double>(jk.get<long long>());
+  w.theta2 = j.contains("theta2");
+  if (w.theta2 == j.contains("stop_arc")) throw Malformed("'" + where + "' has not exactly one of theta2 and stop_arc");
+  if (w.theta2) {
+    const json& ju = j["theta2"];
+    const std::string wu = where + "theta2.";
+    w.u_lo = exact(field(ju, "u_lo", wu), wu + "u_lo"), w.u_hi = exact(field(ju, "u_hi", wu), wu + "u_hi");
+    w.no_earlier_stop = pieces(field(ju, "no_earlier_stop", wu), wu + "no_earlier_stop");
+    w.simple_zero = pieces(field(ju, "simple_zero", wu), wu + "simple_zero");
+  } else {
+    const json& ja = j["stop_arc"];
+    const std::string wa = where + "stop_arc.";
+    w.tau = exact(field(ja, "tau", wa), wa + "tau");
+    const json& from = field(ja, "from", wa);
+    w.from_impact = from == "impact";
+    if (!w.from_impact) {
+      w.from = exact(from, wa + "from");
+      w.no_stop_before_t3 = pieces(field(ja, "no_stop_before_t3", wa), wa + "no_stop_before_t3");
+    }
+  }
+  return w;
+}
+
 /// One ball Theta x B x Q of a covering certificate (README.md): T1 is the only, simple zero of G1
 /// in [t_lo, t_hi] and G1 < 0 before it; the first stop is the simple zero theta2 in (u_lo, u_hi) or
 /// lies in [t3, t2 + 2 pi) + 2 pi k; the case then makes T = max(theta2 - 2 pi k, t2) (AB) or T = t2
 /// (BC), continuous on the ball.
-Outcome check_ball(Steps& st, const Iv& A, const Ball& ball, const json& j, const std::string& who, const std::string& where) {
+Outcome check_ball(Steps& st, const Iv& A, const BallWitness& w, const std::string& who) {
   const auto step = [&](const std::string& s) { return who + ": " + s; };
+  const Ball& ball = w.ball;
+  const Num &s0 = w.s0, &tlo = w.t_lo, &thi = w.t_hi;
   const Box& x = ball.box;
   const Iv Thmin(ball.th_lo), Thmax(ball.th_hi), Th(ball.th_lo, ball.th_hi), Blo(x.b_lo), Bhi(x.b_hi), B(x.b_lo, x.b_hi), Qlo(x.q_lo),
       Qhi(x.q_hi), Q(x.q_lo, x.q_hi);
@@ -480,17 +543,13 @@ Outcome check_ball(Steps& st, const Iv& A, const Ball& ball, const json& j, cons
   // dG1/dtheta = -F(theta)(t - theta) >= 0, dG1/db = (t - theta)^2, d(dG1)/dtheta = -F(theta) >= 0,
   // d(dG1)/db = 2(t - theta) > 0: G1 and dG1 are least at (theta_lo, b_lo), greatest at (theta_hi, b_hi).
   st.require(le(t2(A, Bhi), Thmin) && lt(Thmax, t3(A, Bhi)), step("start set: t2(b_hi) <= theta_lo <= theta_hi < t3(b_hi)"));
-  const json& jt = field(j, "T1", where);
-  const std::string wt = where + "T1.";
-  const Num s0 = exact(field(jt, "s0", wt), wt + "s0"), tlo = exact(field(jt, "t_lo", wt), wt + "t_lo"),
-            thi = exact(field(jt, "t_hi", wt), wt + "t_hi");
   const Iv S0(s0), Tlo(tlo), Thi(thi);
   // 2. The bracket: G1 < 0 at t_lo and > 0 at t_hi at every point (Eq. 11, the corners).
   st.require(lt(Thmax, Tlo) && lt(Tlo, Thi), step("T1 bracket: theta_hi < t_lo < t_hi"));
   st.require(G1(A, Bhi, Thmax, Tlo).negative(), step("T1 bracket: G1(theta_hi, t_lo; b_hi) < 0"));
   st.require(G1(A, Blo, Thmin, Thi).positive(), step("T1 bracket: G1(theta_lo, t_hi; b_lo) > 0"));
   // 3. dG1 > 0 on [t_lo, t_hi] at the min corner, so everywhere: the zero T1 is simple.
-  negative_on(st, pieces(field(jt, "simple_root", wt), wt + "simple_root"), tlo, thi,
+  negative_on(st, w.simple_root, tlo, thi,
               {[&](const Iv& t) { return -dG1(A, Blo, Thmin, t); }, [&](const Iv& t) { return -F(A, Blo, t); },
                [&](const Iv& t) { return -F_slope(A, t); }, {}},
               who + ": T1 simple root");
@@ -510,7 +569,7 @@ Outcome check_ball(Steps& st, const Iv& A, const Ball& ball, const json& j, cons
   // by step 1 G1 < 0 on (theta, t_lo] at every point. U(s) = b s^2 + a s cos theta + a sin theta + a
   // >= G1 (-a sin <= a), convex.
   {
-    const std::vector<Piece> nc = pieces(field(jt, "no_contact", wt), wt + "no_contact");
+    const std::vector<Piece>& nc = w.no_contact;
     st.require(!nc.empty(), step("T1 no contact: the list is not empty"));
     Num s_end = nc[0].x2;
     for (const Piece& p : nc)
@@ -526,58 +585,42 @@ Outcome check_ball(Steps& st, const Iv& A, const Ball& ball, const json& j, cons
   // 2(t - theta) > 0, dG2/dq = -(t - theta1) <= 0: for t >= T1, G2min(t) <= G2 and, for t >= t_hi,
   // G2 <= G2max(t).
   Outcome out;
-  const json& jk = field(j, "k", where);
-  const bool small = jk.is_number_unsigned() ? jk.get<unsigned long long>() < 1000000000ULL
-                                             : jk.is_number_integer() && jk.get<long long>() > -1000000000LL;
-  if (!small) throw Malformed("'" + where + "k' is not an integer of absolute value below 10^9");
-  const double k = static_cast<double>(jk.get<long long>());
+  const double k = w.k;
   out.two_pi_k = 2.0 * pi() * Iv(k);
   const Iv next = 2.0 * pi() * Iv(k + 1);
   const auto G2min = [&](const Iv& t) { return G2(A, Blo, Qhi, Thmin, Tlo, t); };
   const auto G2max = [&](const Iv& t) { return G2(A, Bhi, Qlo, Thmax, Thi, t); };
   const Fn minus_G2min{[&](const Iv& t) { return -G2min(t); }, [&](const Iv& t) { return -(F(A, Blo, t) - Qhi); },
                        [&](const Iv& t) { return -F_slope(A, t); }, {}};
-  const json& jc = field(j, "case", where);
-  if (jc != "AB" && jc != "BC") throw Malformed("'" + where + "case' is not \"AB\" or \"BC\"");
-  out.ab = jc == "AB";
-  out.theta2 = j.contains("theta2");
-  if (out.theta2 == j.contains("stop_arc")) throw Malformed("'" + where + "' has not exactly one of theta2 and stop_arc");
+  out.ab = w.ab, out.theta2 = w.theta2;
   Iv L;  // the lower end of the first stop
   if (out.theta2) {
     // G2 > 0 on [T1, u_lo], < 0 at u_hi and decreasing on [u_lo, u_hi]: theta2 is its only, simple zero.
-    const json& ju = j["theta2"];
-    const std::string wu = where + "theta2.";
-    const Num ulo = exact(field(ju, "u_lo", wu), wu + "u_lo"), uhi = exact(field(ju, "u_hi", wu), wu + "u_hi");
+    const Num &ulo = w.u_lo, &uhi = w.u_hi;
     out.u_lo = Iv(ulo), out.u_hi = Iv(uhi), L = out.u_lo;
     st.require(lt(Thi, out.u_lo) && lt(out.u_lo, out.u_hi), step("theta2 bracket: t_hi < u_lo < u_hi"));
     st.require(G2min(out.u_lo).positive(), step("theta2 bracket: G2min(u_lo) > 0"));
     st.require(G2max(out.u_hi).negative(), step("theta2 bracket: G2max(u_hi) < 0"));
-    negative_on(st, pieces(field(ju, "no_earlier_stop", wu), wu + "no_earlier_stop"), tlo, ulo, minus_G2min, who + ": theta2 no earlier stop");
-    negative_on(st, pieces(field(ju, "simple_zero", wu), wu + "simple_zero"), ulo, uhi,
+    negative_on(st, w.no_earlier_stop, tlo, ulo, minus_G2min, who + ": theta2 no earlier stop");
+    negative_on(st, w.simple_zero, ulo, uhi,
                 {[&](const Iv& t) { return F(A, Bhi, t) - Qlo; }, [&](const Iv& t) { return F_slope(A, t); },
                  [&](const Iv& t) { return F_curvature(A, t); }, {}},
                 who + ": theta2 simple zero");
   } else {
     // G2 < 0 at tau: the stop lies after T1 (or after A, with G2 > 0 on [t_lo, A]) and before tau,
     // inside [t3, t2 + 2 pi) + 2 pi k.
-    const json& ja = j["stop_arc"];
-    const std::string wa = where + "stop_arc.";
-    const Num tau = exact(field(ja, "tau", wa), wa + "tau");
-    const Iv Tau(tau);
+    const Iv Tau(w.tau);
     st.require(lt(Thi, Tau), step("stop arc: t_hi < tau"));
     st.require(G2max(Tau).negative(), step("stop arc: G2max(tau) < 0"));
     st.require(lt(Tau, t2(A, B) + next), step("stop arc: tau < t2 + 2 pi (k + 1)"));
-    const json& from = field(ja, "from", wa);
-    if (from == "impact") {
+    if (w.from_impact) {
       L = Tlo;
       st.require(le(t3(A, B) + out.two_pi_k, Tlo), step("stop arc: t3 + 2 pi k <= t_lo"));
     } else {
-      const Num a_ = exact(from, wa + "from");
-      const Iv Av(a_);
+      const Iv Av(w.from);
       L = t3(A, B) + out.two_pi_k;
       st.require(le(L, Av) && lt(Tlo, Av) && lt(Av, Tau), step("stop arc: t3 + 2 pi k <= A, t_lo < A < tau"));
-      negative_on(st, pieces(field(ja, "no_stop_before_t3", wa), wa + "no_stop_before_t3"), tlo, a_, minus_G2min,
-                  who + ": stop arc no stop before t3");
+      negative_on(st, w.no_stop_before_t3, tlo, w.from, minus_G2min, who + ": stop arc no stop before t3");
     }
   }
   // 7. The case, over B x Q.
@@ -598,48 +641,62 @@ Outcome check_ball(Steps& st, const Iv& A, const Ball& ball, const json& j, cons
 /// which T is continuous, with T(theta_top) >= 3 pi/2 and T(theta_t2) = t2: T(J) contains [t2, 3 pi/2].
 long check_covering(const json& c) {
   Steps st;
-  const auto [A, box] = parameter_box(st, c);
+  const auto [a, box] = read_box(c);
   const json& w = field(c, "witnesses", "");
-  if (w.contains("lemma1")) lemma1(st, A, box, w["lemma1"], "witnesses.lemma1.");
+  const bool has_lemma1 = w.contains("lemma1");
+  const std::vector<Ball> subs = has_lemma1 ? read_sub_boxes(w["lemma1"], "witnesses.lemma1.") : std::vector<Ball>{};
   const json& segs = field(w, "segments", "witnesses.");
   if (!segs.is_array() || segs.size() != 2) throw Malformed("'witnesses.segments' is not an array of two segments");
-  std::string needs_lemma1;  // the first ball that needs Lemma 1
-  double ends[2][2];
+  const char* const lists[3] = {"top", "t2_end", "cover"};
+  struct Segment {
+    double lo, hi, top, bot;
+    std::vector<BallWitness> balls[3];
+  } J[2];
   for (std::size_t s = 0; s < 2; ++s) {
-    const std::string name(s == 0 ? "J0" : "J1"), ws(s == 0 ? "witnesses.segments[0]." : "witnesses.segments[1].");
-    const json& J = segs[s];
-    const double lo = exact_double(field(J, "lo", ws), ws + "lo"), hi = exact_double(field(J, "hi", ws), ws + "hi"),
-                 top = exact_double(field(J, "theta_top", ws), ws + "theta_top"), bot = exact_double(field(J, "theta_t2", ws), ws + "theta_t2");
-    ends[s][0] = lo, ends[s][1] = hi;
-    st.require(lo == std::min(top, bot) && hi == std::max(top, bot), name + ": lo = min(theta_top, theta_t2), hi = max(theta_top, theta_t2)");
-    st.require(le(t2(A, Iv(box.b_hi)), Iv(lo)) && le(Iv(hi), 1.5 * pi()), name + ": t2(b_hi) <= lo and hi <= 3 pi/2");
-    for (const char* list : {"top", "t2_end", "cover"}) {
-      const std::string l = list, wl = ws + l;
-      const json& jl = field(J, l, ws);
-      if (!jl.is_array()) throw Malformed("'" + wl + "' is not an array");
-      const double th_lo = l == "top" ? top : l == "t2_end" ? bot : lo, th_hi = l == "top" ? top : l == "t2_end" ? bot : hi;
-      std::vector<Ball> balls;
-      for (std::size_t i = 0; i < jl.size(); ++i) {
-        const std::string who = name + " " + l + " ball " + std::to_string(i), wb = wl + "[" + std::to_string(i) + "].";
-        const std::vector<double> th = doubles(field(jl[i], "theta", wb), 2, wb + "theta"), b = doubles(field(jl[i], "b", wb), 2, wb + "b"),
-                                  q = doubles(field(jl[i], "q", wb), 2, wb + "q");
-        const Ball ball{th[0], th[1], {b[0], b[1], q[0], q[1]}};
-        balls.push_back(ball);
-        st.require(b[0] <= b[1] && q[0] <= q[1] && box.b_lo <= b[0] && b[1] <= box.b_hi && box.q_lo <= q[0] && q[1] <= box.q_hi,
-                   who + ": lies inside the parameter box (" + describe(ball.box) + ")");
-        st.require(th_lo <= th[0] && th[0] <= th[1] && th[1] <= th_hi, who + ": theta range inside the list's theta range");
-        const Outcome o = check_ball(st, A, ball, jl[i], who, wb);
-        if (o.needs_lemma1 && needs_lemma1.empty()) needs_lemma1 = who;
-        if (l == "top")
-          st.require(o.ab && o.theta2 && le(1.5 * pi(), o.u_lo - o.two_pi_k), who + ": T >= 3 pi/2 (case AB, u_lo - 2 pi k >= 3 pi/2)");
-        if (l == "t2_end")
-          st.require(!o.ab || lt(o.u_hi - o.two_pi_k, t2(A, Iv(b[0], b[1]))), who + ": T = t2 (case BC, or AB with u_hi - 2 pi k < t2)");
-      }
-      require_cover(st, balls, th_lo, th_hi, box, name + " " + l + ": the balls cover the theta range x the parameter box (no gap)");
+    const std::string ws(s == 0 ? "witnesses.segments[0]." : "witnesses.segments[1].");
+    J[s].lo = exact_double(field(segs[s], "lo", ws), ws + "lo"), J[s].hi = exact_double(field(segs[s], "hi", ws), ws + "hi");
+    J[s].top = exact_double(field(segs[s], "theta_top", ws), ws + "theta_top");
+    J[s].bot = exact_double(field(segs[s], "theta_t2", ws), ws + "theta_t2");
+    for (std::size_t l = 0; l < 3; ++l) {
+      const json& jl = field(segs[s], lists[l], ws);
+      if (!jl.is_array()) throw Malformed("'" + ws + lists[l] + "' is not an array");
+      for (std::size_t i = 0; i < jl.size(); ++i) J[s].balls[l].push_back(read_ball(jl[i], ws + lists[l] + "[" + std::to_string(i) + "]."));
     }
   }
-  st.require(needs_lemma1.empty() || w.contains("lemma1"), "Lemma 1 is needed (first by " + needs_lemma1 + ") and witnesses.lemma1 is given");
-  st.require(ends[0][1] < ends[1][0], "Lemma 4: J0.hi < J1.lo (disjoint segments)");
+  // Everything is read: the checks.
+  const Iv A = standing_box(st, a, box);
+  if (has_lemma1) lemma1(st, A, box, subs);
+  std::string needs_lemma1;  // the first ball that needs Lemma 1
+  for (std::size_t s = 0; s < 2; ++s) {
+    const std::string name(s == 0 ? "J0" : "J1");
+    const Segment& seg = J[s];
+    st.require(seg.lo == std::min(seg.top, seg.bot) && seg.hi == std::max(seg.top, seg.bot),
+               name + ": lo = min(theta_top, theta_t2), hi = max(theta_top, theta_t2)");
+    st.require(le(t2(A, Iv(box.b_hi)), Iv(seg.lo)) && le(Iv(seg.hi), 1.5 * pi()), name + ": t2(b_hi) <= lo and hi <= 3 pi/2");
+    for (std::size_t l = 0; l < 3; ++l) {
+      const double th_lo = l == 0 ? seg.top : l == 1 ? seg.bot : seg.lo, th_hi = l == 0 ? seg.top : l == 1 ? seg.bot : seg.hi;
+      std::vector<Ball> balls;
+      for (std::size_t i = 0; i < seg.balls[l].size(); ++i) {
+        const BallWitness& bw = seg.balls[l][i];
+        const Box& x = bw.ball.box;
+        const std::string who = name + " " + lists[l] + " ball " + std::to_string(i);
+        balls.push_back(bw.ball);
+        st.require(x.b_lo <= x.b_hi && x.q_lo <= x.q_hi && box.b_lo <= x.b_lo && x.b_hi <= box.b_hi && box.q_lo <= x.q_lo && x.q_hi <= box.q_hi,
+                   who + ": lies inside the parameter box (" + describe(x) + ")");
+        st.require(th_lo <= bw.ball.th_lo && bw.ball.th_lo <= bw.ball.th_hi && bw.ball.th_hi <= th_hi,
+                   who + ": theta range inside the list's theta range");
+        const Outcome o = check_ball(st, A, bw, who);
+        if (o.needs_lemma1 && needs_lemma1.empty()) needs_lemma1 = who;
+        if (l == 0)
+          st.require(o.ab && o.theta2 && le(1.5 * pi(), o.u_lo - o.two_pi_k), who + ": T >= 3 pi/2 (case AB, u_lo - 2 pi k >= 3 pi/2)");
+        if (l == 1)
+          st.require(!o.ab || lt(o.u_hi - o.two_pi_k, t2(A, Iv(x.b_lo, x.b_hi))), who + ": T = t2 (case BC, or AB with u_hi - 2 pi k < t2)");
+      }
+      require_cover(st, balls, th_lo, th_hi, box, name + " " + lists[l] + ": the balls cover the theta range x the parameter box (no gap)");
+    }
+  }
+  st.require(needs_lemma1.empty() || has_lemma1, "Lemma 1 is needed (first by " + needs_lemma1 + ") and witnesses.lemma1 is given");
+  st.require(J[0].hi < J[1].lo, "Lemma 4: J0.hi < J1.lo (disjoint segments)");
   return st.n;
 }
 
