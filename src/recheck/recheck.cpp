@@ -623,7 +623,10 @@ Outcome check_ball(Steps& st, const Iv& A, const BallWitness& w, const std::stri
       negative_on(st, w.no_stop_before_t3, tlo, w.from, minus_G2min, who + ": stop arc no stop before t3");
     }
   }
-  // 7. The case, over B x Q.
+  // 7. The case, over B x Q. AB: theta2 in [t1, t3) + 2 pi k, where F < q: the mass rests until t2
+  // or is already in the start set, T = max(theta2 - 2 pi k, t2), continuous as theta2 is. BC: the
+  // stop lies in [t3, t2 + 2 pi) + 2 pi k; T = t2, directly when the stop is after t1 + 2 pi (k + 1),
+  // otherwise after a progression that Lemma 1 (Eq. 8) ends in (t1, t2) + 2 pi (k + 1).
   if (out.ab) {
     st.require(out.theta2, step("case AB needs theta2 (not stop_arc)"));
     st.require(le(t1(A, B, Q) + out.two_pi_k, out.u_lo) && lt(out.u_hi, t3(A, B) + out.two_pi_k),
