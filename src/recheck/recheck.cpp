@@ -404,10 +404,18 @@ long check_b0(const json& c) {
 
 // ---- covering: Lemma 4 (Theorem 1) ----------------------------------------------------------------
 
+/// n as a normalised hexadecimal float ("0x1.8p-3", as certificates write it), exactly.
 std::string hex(const Num& n) {
-  char buf[160];
-  mpfr_snprintf(buf, sizeof buf, "%Ra", n.x);
-  return buf;
+  if (mpfr_zero_p(n.x)) return "0x0p+0";
+  mpfr_exp_t e = 0;
+  char* bits = mpfr_get_str(nullptr, &e, 2, 0, n.x, MPFR_RNDN);  // n = 0.bits * 2^e, exact
+  std::string b = bits, out = b[0] == '-' ? "-0x1" : "0x1";
+  mpfr_free_str(bits);
+  b = b.substr(b[0] == '-' ? 2 : 1);  // the bits after the leading 1
+  while (!b.empty() && b.back() == '0') b.pop_back();
+  if (!b.empty()) out += '.';
+  for (std::size_t i = 0; i < b.size(); i += 4) out += "0123456789abcdef"[std::stoi((b.substr(i, 4) + "000").substr(0, 4), nullptr, 2)];
+  return out + (e - 1 >= 0 ? "p+" : "p") + std::to_string(e - 1);
 }
 
 /// A piece [x1, x2] of a negativity list and the test named for it.
