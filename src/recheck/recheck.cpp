@@ -18,6 +18,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -75,11 +76,20 @@ Iv operator-(const Iv& a, const Iv& b) { return apply(mpfi_sub, a, b); }
 Iv operator*(const Iv& a, const Iv& b) { return apply(mpfi_mul, a, b); }
 Iv operator/(const Iv& a, const Iv& b) { return apply(mpfi_div, a, b); }
 Iv operator*(double k, const Iv& a) { return Iv(k) * a; }
+Iv operator-(const Iv& a) { return apply(mpfi_neg, a); }
+Iv sqr(const Iv& a) { return apply(mpfi_sqr, a); }
+Iv abs(const Iv& a) { return apply(mpfi_abs, a); }
+Iv hull(const Iv& a, const Iv& b) { return apply(mpfi_union, a, b); }
 Iv sin(const Iv& a) { return apply(mpfi_sin, a); }
 Iv cos(const Iv& a) { return apply(mpfi_cos, a); }
 Iv cot(const Iv& a) { return apply(mpfi_cot, a); }
 Iv asin(const Iv& a) { return apply(mpfi_asin, a); }
 Iv pi() { Iv r; mpfi_const_pi(r.x); return r; }
+/// The upper end of x, as a thin interval.
+Iv upper(const Iv& x) { Num n; mpfi_get_right(n.x, x.x); return Iv(n); }
+/// Every point of x <= every point of y (resp. <).
+bool le(const Iv& x, const Iv& y) { const Iv d = y - x; return !mpfi_nan_p(d.x) && mpfi_is_nonneg(d.x) > 0; }
+bool lt(const Iv& x, const Iv& y) { return (y - x).positive(); }
 
 // ---- the formulas, from the paper ----------------------------------------------------------------
 
@@ -90,13 +100,33 @@ Iv f_eq1_slope(const Iv& x) {
   const Iv s = sin(0.5 * x);
   return Iv(1.0) / (2.0 * (s * s)) - Iv(1.0);
 }
+/// Section 2, Eq. (3): the force F(t) = a sin t + 2b, its slope F'(t) = a cos t and F''(t) = -a sin t.
+Iv F(const Iv& a, const Iv& b, const Iv& t) { return a * sin(t) + 2.0 * b; }
+Iv F_slope(const Iv& a, const Iv& t) { return a * cos(t); }
+Iv F_curvature(const Iv& a, const Iv& t) { return -(a * sin(t)); }
+/// Section 2: t0 = arcsin((q - 2b)/a) where F = q rises, t1 = pi - t0 where it falls;
+/// t2 = pi + arcsin(2b/a) where F = 0 falls, t3 = 2 pi - arcsin(2b/a) where it rises.
+Iv t0(const Iv& a, const Iv& b, const Iv& q) { return asin((q - 2.0 * b) / a); }
+Iv t1(const Iv& a, const Iv& b, const Iv& q) { return pi() - t0(a, b, q); }
+Iv t2(const Iv& a, const Iv& b) { return pi() + asin(2.0 * b / a); }
+Iv t3(const Iv& a, const Iv& b) { return 2.0 * pi() - asin(2.0 * b / a); }
 /// Eq. (8): the velocity at t2 of the progression from rest at t0 (Eq. 7 at t = t2),
-/// u(t2) = a cos t0 - a cos t2 + 2c (t2 - t0), 2c = 2b - q, with (Section 2, F(t) = a sin t + 2b,
-/// Eq. 3) t0 = arcsin((q - 2b)/a) where F = q rises and t2 = pi + arcsin(2b/a) where F = 0 falls.
+/// u(t2) = a cos t0 - a cos t2 + 2c (t2 - t0), 2c = 2b - q.
 Iv u_at_t2(const Iv& a, const Iv& b, const Iv& q) {
-  const Iv two_b = 2.0 * b;
-  const Iv t0 = asin((q - two_b) / a), t2 = pi() + asin(two_b / a);
-  return a * cos(t0) - a * cos(t2) + (two_b - q) * (t2 - t0);
+  const Iv s = t0(a, b, q), e = t2(a, b);
+  return a * cos(s) - a * cos(e) + (2.0 * b - q) * (e - s);
+}
+/// Eq. (11): the flight from rest at theta, G1(theta, t) = b (t - theta)^2 - a sin t + a cos theta
+/// (t - theta) + a sin theta (zero at the impact T1); its t-derivative is
+/// dG1(theta, t) = 2b (t - theta) - a cos t + a cos theta, and d2G1/dt2 = F(t).
+Iv G1(const Iv& a, const Iv& b, const Iv& th, const Iv& t) {
+  return b * sqr(t - th) - a * sin(t) + a * cos(th) * (t - th) + a * sin(th);
+}
+Iv dG1(const Iv& a, const Iv& b, const Iv& th, const Iv& t) { return 2.0 * b * (t - th) - a * cos(t) + a * cos(th); }
+/// Eq. (17): the progression after the impact at theta1, G2(theta, theta1, t) = 2b (theta1 - theta)
+/// + a cos theta + (2b - q)(t - theta1) - a cos t (zero at the stop theta2); dG2/dt = F(t) - q.
+Iv G2(const Iv& a, const Iv& b, const Iv& q, const Iv& th, const Iv& th1, const Iv& t) {
+  return 2.0 * b * (th1 - th) + a * cos(th) + (2.0 * b - q) * (t - th1) - a * cos(t);
 }
 
 // ---- reading ---------------------------------------------------------------------------------------
@@ -204,25 +234,54 @@ std::string describe(const Box& s) {
   return buf;
 }
 
-/// Whether the closed sub-boxes (each inside `box`) cover `box`: for each open slab of b between
-/// consecutive b edges, the q ranges of the sub-boxes spanning the slab cover [q_lo, q_hi]; with
-/// b_lo == b_hi, the q ranges of all sub-boxes do. Sub-boxes are closed, so the slabs' edges are
-/// covered too.
-bool covers(const std::vector<Box>& subs, const Box& box) {
-  std::vector<double> edges{box.b_lo, box.b_hi};
-  for (const Box& s : subs) edges.insert(edges.end(), {s.b_lo, s.b_hi});
-  std::sort(edges.begin(), edges.end());
-  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
-  auto q_ranges = [&](double x, double y) {
-    std::vector<std::pair<double, double>> v;
-    for (const Box& s : subs)
-      if (s.b_lo <= x && s.b_hi >= y) v.emplace_back(s.q_lo, s.q_hi);
-    return v;
+/// A closed set [th_lo, th_hi] x [b_lo, b_hi] x [q_lo, q_hi] (a ball of a covering certificate; a
+/// Lemma 1 sub-box has th_lo = th_hi = 0).
+struct Ball {
+  double th_lo, th_hi;
+  Box box;
+};
+
+/// The sorted distinct values of `ends` clipped to [lo, hi], with lo and hi.
+std::vector<double> edges(double lo, double hi, std::vector<double> ends) {
+  for (double& e : ends) e = std::clamp(e, lo, hi);
+  ends.insert(ends.end(), {lo, hi});
+  std::sort(ends.begin(), ends.end());
+  ends.erase(std::unique(ends.begin(), ends.end()), ends.end());
+  return ends;
+}
+
+/// Requires that the closed balls cover [th_lo, th_hi] x box, exactly in double comparisons: for each
+/// open cell between consecutive theta edges (the point when th_lo == th_hi) and consecutive b edges
+/// (likewise), the q ranges of the balls whose closed theta and b ranges contain the cell cover
+/// [q_lo, q_hi]. Closed balls then cover the cells' edges too.
+void require_cover(Steps& st, const std::vector<Ball>& balls, double th_lo, double th_hi, const Box& box, const std::string& step) {
+  std::vector<double> th_ends, b_ends;
+  for (const Ball& s : balls) th_ends.insert(th_ends.end(), {s.th_lo, s.th_hi}), b_ends.insert(b_ends.end(), {s.box.b_lo, s.box.b_hi});
+  const std::vector<double> th = edges(th_lo, th_hi, th_ends), b = edges(box.b_lo, box.b_hi, b_ends);
+  if (static_cast<double>(th.size()) * static_cast<double>(b.size()) * static_cast<double>(balls.size()) > 2e8)
+    throw Failed(step + ": the cover is too large to check (" + std::to_string(th.size()) + " theta edges, " + std::to_string(b.size()) +
+                 " b edges, " + std::to_string(balls.size()) + " balls)");
+  const auto cells = [](const std::vector<double>& e) {
+    std::vector<std::pair<double, double>> c;
+    for (std::size_t i = 0; i + 1 < e.size(); ++i) c.emplace_back(e[i], e[i + 1]);
+    if (e.size() == 1) c.emplace_back(e[0], e[0]);
+    return c;
   };
-  if (edges.size() == 1) return covers(q_ranges(box.b_lo, box.b_hi), box.q_lo, box.q_hi);
-  for (std::size_t i = 0; i + 1 < edges.size(); ++i)
-    if (!covers(q_ranges(edges[i], edges[i + 1]), box.q_lo, box.q_hi)) return false;
-  return true;
+  const auto covered = [&] {
+    for (const auto& [x, y] : cells(th)) {
+      std::vector<const Ball*> in;
+      for (const Ball& s : balls)
+        if (s.th_lo <= x && s.th_hi >= y) in.push_back(&s);
+      for (const auto& [u, v] : cells(b)) {
+        std::vector<std::pair<double, double>> q;
+        for (const Ball* s : in)
+          if (s->box.b_lo <= u && s->box.b_hi >= v) q.emplace_back(s->box.q_lo, s->box.q_hi);
+        if (!covers(q, box.q_lo, box.q_hi)) return false;
+      }
+    }
+    return true;
+  };
+  st.require(covered(), step);
 }
 
 /// Eq. (1): f(lo) < 0 < f(hi) with 0 < lo < hi < pi/2 (f' > 0 on (0, pi/2): analytic, README.md);
@@ -262,34 +321,57 @@ void standing(Steps& st, const Iv& A, const Iv& B, const Iv& Q, bool b_positive)
   st.require((A - (Q - 2.0 * B)).positive(), "q - 2b < a on the box");
 }
 
+/// The parameters {a} x [b_lo, b_hi] x [q_lo, q_hi] of a certificate.
+std::pair<double, Box> read_box(const json& c) {
+  const json& p = field(c, "parameters", "");
+  const json& b = field(p, "b", "parameters."), &q = field(p, "q", "parameters.");
+  return {parameter(p, "a", "parameters."), {parameter(b, "lo", "parameters.b."), parameter(b, "hi", "parameters.b."),
+                                             parameter(q, "lo", "parameters.q."), parameter(q, "hi", "parameters.q.")}};
+}
+
+/// The box is not empty and the standing conditions hold on it; returns {a}.
+Iv standing_box(Steps& st, double a, const Box& box) {
+  st.require(box.b_lo <= box.b_hi && box.q_lo <= box.q_hi, "the box is not empty");
+  const Iv A(a);
+  standing(st, A, Iv(box.b_lo, box.b_hi), Iv(box.q_lo, box.q_hi), true);
+  return A;
+}
+
+/// Lemma 1's witness {"sub_boxes": [[b_lo, b_hi, q_lo, q_hi], ...]}.
+std::vector<Ball> read_sub_boxes(const json& w, const std::string& where) {
+  const json& list = field(w, "sub_boxes", where);
+  if (!list.is_array()) throw Malformed("'" + where + "sub_boxes' is not an array");
+  std::vector<Ball> subs;
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const std::vector<double> v = doubles(list[i], 4, where + "sub_boxes[" + std::to_string(i) + "]");
+    subs.push_back({0, 0, {v[0], v[1], v[2], v[3]}});
+  }
+  return subs;
+}
+
+/// Lemma 1 over the box (its standing conditions already required): the sub-boxes inside the box
+/// and covering it, Eq. (8) u(t2) < 0 on each.
+void lemma1(Steps& st, const Iv& A, const Box& box, const std::vector<Ball>& subs) {
+  for (std::size_t i = 0; i < subs.size(); ++i) {
+    const Box& s = subs[i].box;
+    st.require(s.b_lo <= s.b_hi && s.q_lo <= s.q_hi && box.b_lo <= s.b_lo && s.b_hi <= box.b_hi && box.q_lo <= s.q_lo && s.q_hi <= box.q_hi,
+               "Lemma 1: sub-box " + std::to_string(i) + " (" + describe(s) + ") lies inside the box");
+  }
+  require_cover(st, subs, 0, 0, box, "Lemma 1: the sub-boxes cover the box (no gap)");
+  for (std::size_t i = 0; i < subs.size(); ++i) {
+    const Box& s = subs[i].box;
+    st.require(u_at_t2(A, Iv(s.b_lo, s.b_hi), Iv(s.q_lo, s.q_hi)).negative(),
+               "Lemma 1: Eq. (8): u(t2) < 0 on sub-box " + std::to_string(i) + " (" + describe(s) + ")");
+  }
+}
+
 /// Lemma 1 over {a} x [b_lo, b_hi] x [q_lo, q_hi]: the standing conditions on the box, the
 /// sub-boxes inside it and covering it, Eq. (8) u(t2) < 0 on each.
 long check_lemma1(const json& c) {
   Steps st;
-  const json& p = field(c, "parameters", "");
-  const double a = parameter(p, "a", "parameters.");
-  const json& b = field(p, "b", "parameters."), &q = field(p, "q", "parameters.");
-  const Box box{parameter(b, "lo", "parameters.b."), parameter(b, "hi", "parameters.b."), parameter(q, "lo", "parameters.q."),
-                parameter(q, "hi", "parameters.q.")};
-  st.require(box.b_lo <= box.b_hi && box.q_lo <= box.q_hi, "the box is not empty");
-  const Iv A(a);
-  standing(st, A, Iv(box.b_lo, box.b_hi), Iv(box.q_lo, box.q_hi), true);
-  const json& list = field(field(c, "witnesses", ""), "sub_boxes", "witnesses.");
-  if (!list.is_array()) throw Malformed("'witnesses.sub_boxes' is not an array");
-  std::vector<Box> subs;
-  for (std::size_t i = 0; i < list.size(); ++i) {
-    const std::vector<double> v = doubles(list[i], 4, "witnesses.sub_boxes[" + std::to_string(i) + "]");
-    subs.push_back({v[0], v[1], v[2], v[3]});
-    const Box& s = subs.back();
-    st.require(s.b_lo <= s.b_hi && s.q_lo <= s.q_hi && box.b_lo <= s.b_lo && s.b_hi <= box.b_hi && box.q_lo <= s.q_lo && s.q_hi <= box.q_hi,
-               "sub-box " + std::to_string(i) + " (" + describe(s) + ") lies inside the box");
-  }
-  st.require(covers(subs, box), "the sub-boxes cover the box (no gap)");
-  for (std::size_t i = 0; i < subs.size(); ++i) {
-    const Box& s = subs[i];
-    st.require(u_at_t2(A, Iv(s.b_lo, s.b_hi), Iv(s.q_lo, s.q_hi)).negative(),
-               "Eq. (8): u(t2) < 0 on sub-box " + std::to_string(i) + " (" + describe(s) + ")");
-  }
+  const auto [a, box] = read_box(c);
+  const std::vector<Ball> subs = read_sub_boxes(field(c, "witnesses", ""), "witnesses.");
+  lemma1(st, standing_box(st, a, box), box, subs);
   return st.n;
 }
 
@@ -320,6 +402,315 @@ long check_b0(const json& c) {
   return st.n;
 }
 
+// ---- covering: Lemma 4 (Theorem 1) ----------------------------------------------------------------
+
+/// n as a normalised hexadecimal float ("0x1.8p-3", as certificates write it), exactly.
+std::string hex(const Num& n) {
+  if (mpfr_zero_p(n.x)) return "0x0p+0";
+  mpfr_exp_t e = 0;
+  char* bits = mpfr_get_str(nullptr, &e, 2, 0, n.x, MPFR_RNDN);  // n = 0.bits * 2^e, exact
+  std::string b = bits, out = b[0] == '-' ? "-0x1" : "0x1";
+  mpfr_free_str(bits);
+  b = b.substr(b[0] == '-' ? 2 : 1);  // the bits after the leading 1
+  while (!b.empty() && b.back() == '0') b.pop_back();
+  if (!b.empty()) out += '.';
+  for (std::size_t i = 0; i < b.size(); i += 4) out += "0123456789abcdef"[std::stoi((b.substr(i, 4) + "000").substr(0, 4), nullptr, 2)];
+  return out + (e - 1 >= 0 ? "p+" : "p") + std::to_string(e - 1);
+}
+
+/// A piece [x1, x2] of a negativity list and the test named for it.
+struct Piece {
+  Num x1, x2;
+  std::string test;
+};
+
+std::vector<Piece> pieces(const json& j, const std::string& where) {
+  if (!j.is_array()) throw Malformed("'" + where + "' is not an array");
+  std::vector<Piece> v;
+  for (std::size_t i = 0; i < j.size(); ++i) {
+    const std::string w = where + "[" + std::to_string(i) + "]";
+    if (!j[i].is_array() || j[i].size() != 3 || !j[i][2].is_string()) throw Malformed("'" + w + "' is not [x1, x2, test]");
+    v.push_back({exact(j[i][0], w + "[0]"), exact(j[i][1], w + "[1]"), j[i][2].get<std::string>()});
+    if (v.back().test != "envelope" && v.back().test != "taylor" && v.back().test != "monotone")
+      throw Malformed("'" + w + "[2]' = '" + v.back().test + "' is not envelope, taylor or monotone");
+  }
+  return v;
+}
+
+/// A function f of one variable with its derivatives, and (for the no-contact list only) an upper
+/// envelope U >= f that is convex, so that U < 0 at both ends of a piece gives f < 0 on it.
+struct Fn {
+  std::function<Iv(const Iv&)> f, d1, d2, envelope;
+};
+
+/// Requires f < 0 on [X1, X2]: the pieces lie inside [X1, X2] and cover it, and on each piece
+/// X = [x1, x2], with midpoint m in M and radius r <= R, the named test holds:
+///   taylor:   f(m) + r |f'(m)| + (r^2/2) max(0, f''(X)) < 0 (Taylor's theorem at m);
+///   monotone: f' lies in D = f'(M) + [-1, 1] r |f''(X)| (the mean-value theorem); D > 0 and
+///             f(x2) < 0, or D < 0 and f(x1) < 0;
+///   envelope: U(x1) < 0 and U(x2) < 0.
+void negative_on(Steps& st, const std::vector<Piece>& ps, const Num& X1, const Num& X2, const Fn& fn, const std::string& what) {
+  std::vector<const Piece*> order;
+  for (std::size_t i = 0; i < ps.size(); ++i) {
+    const Piece& p = ps[i];
+    const std::string name = what + " piece " + std::to_string(i) + " ([" + hex(p.x1) + ", " + hex(p.x2) + "]) ";
+    st.require(mpfr_cmp(X1.x, p.x1.x) <= 0 && mpfr_cmp(p.x1.x, p.x2.x) <= 0 && mpfr_cmp(p.x2.x, X2.x) <= 0,
+               name + "lies inside [" + hex(X1) + ", " + hex(X2) + "]");
+    order.push_back(&p);
+    const Iv L(p.x1), H(p.x2), X(p.x1, p.x2), M = 0.5 * (L + H), R = upper(0.5 * (H - L));
+    bool ok = false;
+    if (p.test == "envelope") {
+      ok = fn.envelope && fn.envelope(L).negative() && fn.envelope(H).negative();
+    } else if (p.test == "taylor") {
+      const Iv c = upper(fn.d2(X));
+      ok = (fn.f(M) + R * abs(fn.d1(M)) + 0.5 * (R * R) * (c.negative() ? Iv(0.0) : c)).negative();
+    } else {
+      const Iv D = fn.d1(M) + Iv(-1.0, 1.0) * R * abs(fn.d2(X));
+      ok = (D.positive() && fn.f(H).negative()) || (D.negative() && fn.f(L).negative());
+    }
+    st.require(ok, name + p.test + ": f < 0 not verified");
+  }
+  std::sort(order.begin(), order.end(), [](const Piece* x, const Piece* y) { return mpfr_cmp(x->x1.x, y->x1.x) < 0; });
+  Num reach = X1;
+  bool started = false;
+  for (const Piece* p : order) {
+    if (mpfr_cmp(p->x1.x, reach.x) > 0) break;  // (reach, x1) is covered by nothing
+    if (mpfr_cmp(p->x2.x, reach.x) >= 0) reach = p->x2, started = true;
+  }
+  st.require(started && mpfr_cmp(reach.x, X2.x) >= 0, what + ": the pieces cover [" + hex(X1) + ", " + hex(X2) + "] (no gap)");
+}
+
+/// What one ball proves about T: its case, k, the theta2 bracket if any, whether Lemma 1 is needed.
+struct Outcome {
+  bool ab = false, theta2 = false, needs_lemma1 = false;
+  Iv two_pi_k, u_lo, u_hi;
+};
+
+/// The witnesses of one ball, all read before anything is checked (so that a malformed certificate
+/// is reported as such whichever step would fail first).
+struct BallWitness {
+  Ball ball;
+  Num s0, t_lo, t_hi, u_lo, u_hi, tau, from;  // u_lo, u_hi: theta2; tau, from (unless impact): stop_arc
+  std::vector<Piece> no_contact, simple_root, no_earlier_stop, simple_zero, no_stop_before_t3;
+  bool ab = false, theta2 = false, from_impact = false;
+  double k = 0;
+};
+
+BallWitness read_ball(const json& j, const std::string& where) {
+  BallWitness w;
+  const std::vector<double> th = doubles(field(j, "theta", where), 2, where + "theta"), b = doubles(field(j, "b", where), 2, where + "b"),
+                            q = doubles(field(j, "q", where), 2, where + "q");
+  w.ball = {th[0], th[1], {b[0], b[1], q[0], q[1]}};
+  const json& jt = field(j, "T1", where);
+  const std::string wt = where + "T1.";
+  w.s0 = exact(field(jt, "s0", wt), wt + "s0"), w.t_lo = exact(field(jt, "t_lo", wt), wt + "t_lo"), w.t_hi = exact(field(jt, "t_hi", wt), wt + "t_hi");
+  w.no_contact = pieces(field(jt, "no_contact", wt), wt + "no_contact");
+  w.simple_root = pieces(field(jt, "simple_root", wt), wt + "simple_root");
+  const json& jc = field(j, "case", where);
+  if (jc != "AB" && jc != "BC") throw Malformed("'" + where + "case' is not \"AB\" or \"BC\"");
+  w.ab = jc == "AB";
+  const json& jk = field(j, "k", where);
+  const bool small = jk.is_number_unsigned() ? jk.get<unsigned long long>() < 1000000000ULL
+                                             : jk.is_number_integer() && jk.get<long long>() > -1000000000LL;
+  if (!small) throw Malformed("'" + where + "k' is not an integer of absolute value below 10^9");
+  w.k = static_cast<double>(jk.get<long long>());
+  w.theta2 = j.contains("theta2");
+  if (w.theta2 == j.contains("stop_arc")) throw Malformed("'" + where + "' has not exactly one of theta2 and stop_arc");
+  if (w.theta2) {
+    const json& ju = j["theta2"];
+    const std::string wu = where + "theta2.";
+    w.u_lo = exact(field(ju, "u_lo", wu), wu + "u_lo"), w.u_hi = exact(field(ju, "u_hi", wu), wu + "u_hi");
+    w.no_earlier_stop = pieces(field(ju, "no_earlier_stop", wu), wu + "no_earlier_stop");
+    w.simple_zero = pieces(field(ju, "simple_zero", wu), wu + "simple_zero");
+  } else {
+    const json& ja = j["stop_arc"];
+    const std::string wa = where + "stop_arc.";
+    w.tau = exact(field(ja, "tau", wa), wa + "tau");
+    const json& from = field(ja, "from", wa);
+    w.from_impact = from == "impact";
+    if (!w.from_impact) {
+      w.from = exact(from, wa + "from");
+      w.no_stop_before_t3 = pieces(field(ja, "no_stop_before_t3", wa), wa + "no_stop_before_t3");
+    }
+  }
+  return w;
+}
+
+/// One ball Theta x B x Q of a covering certificate (README.md): T1 is the only, simple zero of G1
+/// in [t_lo, t_hi] and G1 < 0 before it; the first stop is the simple zero theta2 in (u_lo, u_hi) or
+/// lies in [t3, t2 + 2 pi) + 2 pi k; the case then makes T = max(theta2 - 2 pi k, t2) (AB) or T = t2
+/// (BC), continuous on the ball.
+Outcome check_ball(Steps& st, const Iv& A, const BallWitness& w, const std::string& who) {
+  const auto step = [&](const std::string& s) { return who + ": " + s; };
+  const Ball& ball = w.ball;
+  const Num &s0 = w.s0, &tlo = w.t_lo, &thi = w.t_hi;
+  const Box& x = ball.box;
+  const Iv Thmin(ball.th_lo), Thmax(ball.th_hi), Th(ball.th_lo, ball.th_hi), Blo(x.b_lo), Bhi(x.b_hi), B(x.b_lo, x.b_hi), Qlo(x.q_lo),
+      Qhi(x.q_hi), Q(x.q_lo, x.q_hi);
+  // 1. The start set: t2 <= theta < t3, so F(theta) <= 0 for every b <= b_hi, and with t > theta
+  // dG1/dtheta = -F(theta)(t - theta) >= 0, dG1/db = (t - theta)^2, d(dG1)/dtheta = -F(theta) >= 0,
+  // d(dG1)/db = 2(t - theta) > 0: G1 and dG1 are least at (theta_lo, b_lo), greatest at (theta_hi, b_hi).
+  st.require(le(t2(A, Bhi), Thmin) && lt(Thmax, t3(A, Bhi)), step("start set: t2(b_hi) <= theta_lo <= theta_hi < t3(b_hi)"));
+  const Iv S0(s0), Tlo(tlo), Thi(thi);
+  // 2. The bracket: G1 < 0 at t_lo and > 0 at t_hi at every point (Eq. 11, the corners).
+  st.require(lt(Thmax, Tlo) && lt(Tlo, Thi), step("T1 bracket: theta_hi < t_lo < t_hi"));
+  st.require(G1(A, Bhi, Thmax, Tlo).negative(), step("T1 bracket: G1(theta_hi, t_lo; b_hi) < 0"));
+  st.require(G1(A, Blo, Thmin, Thi).positive(), step("T1 bracket: G1(theta_lo, t_hi; b_lo) > 0"));
+  // 3. dG1 > 0 on [t_lo, t_hi] at the min corner, so everywhere: the zero T1 is simple.
+  negative_on(st, w.simple_root, tlo, thi,
+              {[&](const Iv& t) { return -dG1(A, Blo, Thmin, t); }, [&](const Iv& t) { return -F(A, Blo, t); },
+               [&](const Iv& t) { return -F_slope(A, t); }, {}},
+              who + ": T1 simple root");
+  // 4. Departure: G1(theta, theta + s) = s^2 [b + (a/2) sin theta + s g], g = -a sin theta s E(s) -
+  // a cos theta K(s), E = (1/2 - (1 - cos s)/s^2)/s^2 in [1/24 - s^2/720, 1/24], K = (sin s - s)/s^3
+  // in [-1/6, -1/6 + s^2/120] for 0 < s <= 1 (alternating series); b + (a/2) sin theta <= 0 (step 1).
+  // So G1 < 0 for s in (0, s0]; theta_hi - theta_lo <= s0 joins this to step 5.
+  st.require(S0.positive() && le(S0, Iv(1.0)) && le(Iv(ball.th_hi) - Iv(ball.th_lo), S0),
+             step("departure: 0 < s0 <= 1 and theta_hi - theta_lo <= s0"));
+  {
+    const Iv S = hull(Iv(0.0), S0), s2 = S0 * S0, E = hull(Iv(1.0) / Iv(24.0) - s2 / Iv(720.0), Iv(1.0) / Iv(24.0)),
+             K = hull(Iv(-1.0) / Iv(6.0), Iv(-1.0) / Iv(6.0) + s2 / Iv(120.0));
+    const Iv g = -(A * sin(Th) * S * E) - A * cos(Th) * K;
+    st.require(g.negative() || (B + 0.5 * A * sin(Th) + S * g).negative(), step("departure: G1(theta, theta + s) < 0 for s in (0, s0]"));
+  }
+  // 5. No contact: G1(theta_hi, theta_hi + s; b_hi) < 0 on [s0, s_end], theta_hi + s_end >= t_lo;
+  // by step 1 G1 < 0 on (theta, t_lo] at every point. U(s) = b s^2 + a s cos theta + a sin theta + a
+  // >= G1 (-a sin <= a), convex.
+  {
+    const std::vector<Piece>& nc = w.no_contact;
+    st.require(!nc.empty(), step("T1 no contact: the list is not empty"));
+    Num s_end = nc[0].x2;
+    for (const Piece& p : nc)
+      if (mpfr_cmp(p.x2.x, s_end.x) > 0) s_end = p.x2;
+    st.require(le(Tlo, Thmax + Iv(s_end)), step("T1 no contact: theta_hi + s_end >= t_lo"));
+    negative_on(st, nc, s0, s_end,
+                {[&](const Iv& s) { return G1(A, Bhi, Thmax, Thmax + s); }, [&](const Iv& s) { return dG1(A, Bhi, Thmax, Thmax + s); },
+                 [&](const Iv& s) { return F(A, Bhi, Thmax + s); },
+                 [&](const Iv& s) { return Bhi * sqr(s) + A * s * cos(Thmax) + A * sin(Thmax) + A; }},
+                who + ": T1 no contact");
+  }
+  // 6. The first progression, Eq. (17). dG2/dtheta1 = q > 0, dG2/dtheta = -F(theta) >= 0, dG2/db =
+  // 2(t - theta) > 0, dG2/dq = -(t - theta1) <= 0: for t >= T1, G2min(t) <= G2 and, for t >= t_hi,
+  // G2 <= G2max(t).
+  Outcome out;
+  const double k = w.k;
+  out.two_pi_k = 2.0 * pi() * Iv(k);
+  const Iv next = 2.0 * pi() * Iv(k + 1);
+  const auto G2min = [&](const Iv& t) { return G2(A, Blo, Qhi, Thmin, Tlo, t); };
+  const auto G2max = [&](const Iv& t) { return G2(A, Bhi, Qlo, Thmax, Thi, t); };
+  const Fn minus_G2min{[&](const Iv& t) { return -G2min(t); }, [&](const Iv& t) { return -(F(A, Blo, t) - Qhi); },
+                       [&](const Iv& t) { return -F_slope(A, t); }, {}};
+  out.ab = w.ab, out.theta2 = w.theta2;
+  Iv L;  // the lower end of the first stop
+  if (out.theta2) {
+    // G2 > 0 on [T1, u_lo], < 0 at u_hi and decreasing on [u_lo, u_hi]: theta2 is its only, simple zero.
+    const Num &ulo = w.u_lo, &uhi = w.u_hi;
+    out.u_lo = Iv(ulo), out.u_hi = Iv(uhi), L = out.u_lo;
+    st.require(lt(Thi, out.u_lo) && lt(out.u_lo, out.u_hi), step("theta2 bracket: t_hi < u_lo < u_hi"));
+    st.require(G2min(out.u_lo).positive(), step("theta2 bracket: G2min(u_lo) > 0"));
+    st.require(G2max(out.u_hi).negative(), step("theta2 bracket: G2max(u_hi) < 0"));
+    negative_on(st, w.no_earlier_stop, tlo, ulo, minus_G2min, who + ": theta2 no earlier stop");
+    negative_on(st, w.simple_zero, ulo, uhi,
+                {[&](const Iv& t) { return F(A, Bhi, t) - Qlo; }, [&](const Iv& t) { return F_slope(A, t); },
+                 [&](const Iv& t) { return F_curvature(A, t); }, {}},
+                who + ": theta2 simple zero");
+  } else {
+    // G2 < 0 at tau: the stop lies after T1 (or after A, with G2 > 0 on [t_lo, A]) and before tau,
+    // inside [t3, t2 + 2 pi) + 2 pi k.
+    const Iv Tau(w.tau);
+    st.require(lt(Thi, Tau), step("stop arc: t_hi < tau"));
+    st.require(G2max(Tau).negative(), step("stop arc: G2max(tau) < 0"));
+    st.require(lt(Tau, t2(A, B) + next), step("stop arc: tau < t2 + 2 pi (k + 1)"));
+    if (w.from_impact) {
+      L = Tlo;
+      st.require(le(t3(A, B) + out.two_pi_k, Tlo), step("stop arc: t3 + 2 pi k <= t_lo"));
+    } else {
+      const Iv Av(w.from);
+      L = t3(A, B) + out.two_pi_k;
+      st.require(le(L, Av) && lt(Tlo, Av) && lt(Av, Tau), step("stop arc: t3 + 2 pi k <= A, t_lo < A < tau"));
+      negative_on(st, w.no_stop_before_t3, tlo, w.from, minus_G2min, who + ": stop arc no stop before t3");
+    }
+  }
+  // 7. The case, over B x Q. AB: theta2 in [t1, t3) + 2 pi k, where F < q: the mass rests until t2
+  // or is already in the start set, T = max(theta2 - 2 pi k, t2), continuous as theta2 is. BC: the
+  // stop lies in [t3, t2 + 2 pi) + 2 pi k; T = t2, directly when the stop is after t1 + 2 pi (k + 1),
+  // otherwise after a progression that Lemma 1 (Eq. 8) ends in (t1, t2) + 2 pi (k + 1).
+  if (out.ab) {
+    st.require(out.theta2, step("case AB needs theta2 (not stop_arc)"));
+    st.require(le(t1(A, B, Q) + out.two_pi_k, out.u_lo) && lt(out.u_hi, t3(A, B) + out.two_pi_k),
+               step("case AB: t1 + 2 pi k <= u_lo and u_hi < t3 + 2 pi k"));
+  } else {
+    if (out.theta2)
+      st.require(le(t3(A, B) + out.two_pi_k, out.u_lo) && lt(out.u_hi, t2(A, B) + next),
+                 step("case BC: t3 + 2 pi k <= u_lo and u_hi < t2 + 2 pi (k + 1)"));
+    out.needs_lemma1 = !le(t1(A, B, Q) + next, L);
+  }
+  return out;
+}
+
+/// Lemma 4 (Theorem 1): two disjoint segments J0 < J1 in [t2, 3 pi/2], each covered by balls on
+/// which T is continuous, with T(theta_top) >= 3 pi/2 and T(theta_t2) = t2: T(J) contains [t2, 3 pi/2].
+long check_covering(const json& c) {
+  Steps st;
+  const auto [a, box] = read_box(c);
+  const json& w = field(c, "witnesses", "");
+  const bool has_lemma1 = w.contains("lemma1");
+  const std::vector<Ball> subs = has_lemma1 ? read_sub_boxes(w["lemma1"], "witnesses.lemma1.") : std::vector<Ball>{};
+  const json& segs = field(w, "segments", "witnesses.");
+  if (!segs.is_array() || segs.size() != 2) throw Malformed("'witnesses.segments' is not an array of two segments");
+  const char* const lists[3] = {"top", "t2_end", "cover"};
+  struct Segment {
+    double lo, hi, top, bot;
+    std::vector<BallWitness> balls[3];
+  } J[2];
+  for (std::size_t s = 0; s < 2; ++s) {
+    const std::string ws(s == 0 ? "witnesses.segments[0]." : "witnesses.segments[1].");
+    J[s].lo = exact_double(field(segs[s], "lo", ws), ws + "lo"), J[s].hi = exact_double(field(segs[s], "hi", ws), ws + "hi");
+    J[s].top = exact_double(field(segs[s], "theta_top", ws), ws + "theta_top");
+    J[s].bot = exact_double(field(segs[s], "theta_t2", ws), ws + "theta_t2");
+    for (std::size_t l = 0; l < 3; ++l) {
+      const json& jl = field(segs[s], lists[l], ws);
+      if (!jl.is_array()) throw Malformed("'" + ws + lists[l] + "' is not an array");
+      for (std::size_t i = 0; i < jl.size(); ++i) J[s].balls[l].push_back(read_ball(jl[i], ws + lists[l] + "[" + std::to_string(i) + "]."));
+    }
+  }
+  // Everything is read: the checks.
+  const Iv A = standing_box(st, a, box);
+  if (has_lemma1) lemma1(st, A, box, subs);
+  std::string needs_lemma1;  // the first ball that needs Lemma 1
+  for (std::size_t s = 0; s < 2; ++s) {
+    const std::string name(s == 0 ? "J0" : "J1");
+    const Segment& seg = J[s];
+    st.require(seg.lo == std::min(seg.top, seg.bot) && seg.hi == std::max(seg.top, seg.bot),
+               name + ": lo = min(theta_top, theta_t2), hi = max(theta_top, theta_t2)");
+    st.require(le(t2(A, Iv(box.b_hi)), Iv(seg.lo)) && le(Iv(seg.hi), 1.5 * pi()), name + ": t2(b_hi) <= lo and hi <= 3 pi/2");
+    for (std::size_t l = 0; l < 3; ++l) {
+      const double th_lo = l == 0 ? seg.top : l == 1 ? seg.bot : seg.lo, th_hi = l == 0 ? seg.top : l == 1 ? seg.bot : seg.hi;
+      std::vector<Ball> balls;
+      for (std::size_t i = 0; i < seg.balls[l].size(); ++i) {
+        const BallWitness& bw = seg.balls[l][i];
+        const Box& x = bw.ball.box;
+        const std::string who = name + " " + lists[l] + " ball " + std::to_string(i);
+        balls.push_back(bw.ball);
+        st.require(x.b_lo <= x.b_hi && x.q_lo <= x.q_hi && box.b_lo <= x.b_lo && x.b_hi <= box.b_hi && box.q_lo <= x.q_lo && x.q_hi <= box.q_hi,
+                   who + ": lies inside the parameter box (" + describe(x) + ")");
+        st.require(th_lo <= bw.ball.th_lo && bw.ball.th_lo <= bw.ball.th_hi && bw.ball.th_hi <= th_hi,
+                   who + ": theta range inside the list's theta range");
+        const Outcome o = check_ball(st, A, bw, who);
+        if (o.needs_lemma1 && needs_lemma1.empty()) needs_lemma1 = who;
+        if (l == 0)
+          st.require(o.ab && o.theta2 && le(1.5 * pi(), o.u_lo - o.two_pi_k), who + ": T >= 3 pi/2 (case AB, u_lo - 2 pi k >= 3 pi/2)");
+        if (l == 1)
+          st.require(!o.ab || lt(o.u_hi - o.two_pi_k, t2(A, Iv(x.b_lo, x.b_hi))), who + ": T = t2 (case BC, or AB with u_hi - 2 pi k < t2)");
+      }
+      require_cover(st, balls, th_lo, th_hi, box, name + " " + lists[l] + ": the balls cover the theta range x the parameter box (no gap)");
+    }
+  }
+  st.require(needs_lemma1.empty() || has_lemma1, "Lemma 1 is needed (first by " + needs_lemma1 + ") and witnesses.lemma1 is given");
+  st.require(J[0].hi < J[1].lo, "Lemma 4: J0.hi < J1.lo (disjoint segments)");
+  return st.n;
+}
+
 /// Checks one file; returns its exit status after printing its line.
 int check_file(const std::string& path) {
   std::string statement = "?";
@@ -344,7 +735,8 @@ int check_file(const std::string& path) {
     if (statement == "vartheta0") steps = check_vartheta0(c);
     else if (statement == "lemma1") steps = check_lemma1(c);
     else if (statement == "b0") steps = check_b0(c);
-    else throw Malformed("unknown statement '" + statement + "' (this checker reads vartheta0, lemma1, b0)");
+    else if (statement == "covering") steps = check_covering(c);
+    else throw Malformed("unknown statement '" + statement + "' (this checker reads vartheta0, lemma1, b0, covering)");
     std::printf("OK %s: %s, %ld steps re-verified\n", path.c_str(), statement.c_str(), steps);
     return 0;
   } catch (const Failed& e) {
