@@ -81,7 +81,29 @@ def main():
     cli, checker, case = sys.argv[1:]
     with tempfile.TemporaryDirectory() as d:
         bad = os.path.join(d, "mutated.json")
-        if case.startswith("accepts_"):
+        if case == "scale_invariance":
+            # Scale invariance, G1(.; a, b) = a G1(.; 1, b/a) and the same for G2 (docs/certified.md): the
+            # covering at a = 1 with a, b, q (and every ball's b, q) doubled exactly is a covering at a = 2,
+            # with the same phases; the checker must accept it as it stands.
+            path, _ = write_certificate(cli, "covering_stop", d)
+
+            def double(c):
+                two = lambda h: float.hex(2 * float.fromhex(h))
+                p = c["parameters"]
+                p["a"]["hex"] = two(p["a"]["hex"])
+                for k in ("b", "q"):
+                    for end in ("lo", "hi"):
+                        p[k][end]["hex"] = two(p[k][end]["hex"])
+                w = c["witnesses"]
+                for box in w.get("lemma1", {}).get("sub_boxes", []):
+                    box[:] = [two(x) for x in box]
+                for seg in w["segments"]:
+                    for lst in ("top", "t2_end", "cover"):
+                        for ball in seg[lst]:
+                            ball["b"] = [two(x) for x in ball["b"]]
+                            ball["q"] = [two(x) for x in ball["q"]]
+            recheck(checker, mutate(path, bad, double), 0, "the covering at a = 1 scaled to a = 2")
+        elif case.startswith("accepts_"):
             path, _ = write_certificate(cli, case[len("accepts_"):], d)
             recheck(checker, path, 0, f"the {case[len('accepts_'):]} certificate")
         elif case == "rejects_gap":  # a sub-box deleted: the rest no longer covers the box
@@ -114,28 +136,6 @@ def main():
                 b = c["parameters"]["b"]["lo"]
                 b["hex"] = next_double_hex(b["hex"], -1)
             recheck(checker, mutate(path, bad, ulp), 1, "parameter b_lo changed in its last bit")
-        elif case == "accepts_covering_scaled":
-            # Scale invariance, G1(.; a, b) = a G1(.; 1, b/a) and the same for G2 (docs/certified.md): the
-            # covering at a = 1 with a, b, q (and every ball's b, q) doubled exactly is a covering at a = 2,
-            # with the same phases; the checker must accept it as it stands.
-            path, _ = write_certificate(cli, "covering_stop", d)
-
-            def double(c):
-                two = lambda h: float.hex(2 * float.fromhex(h))
-                p = c["parameters"]
-                p["a"]["hex"] = two(p["a"]["hex"])
-                for k in ("b", "q"):
-                    for end in ("lo", "hi"):
-                        p[k][end]["hex"] = two(p[k][end]["hex"])
-                w = c["witnesses"]
-                for box in w.get("lemma1", {}).get("sub_boxes", []):
-                    box[:] = [two(x) for x in box]
-                for seg in w["segments"]:
-                    for lst in ("top", "t2_end", "cover"):
-                        for ball in seg[lst]:
-                            ball["b"] = [two(x) for x in ball["b"]]
-                            ball["q"] = [two(x) for x in ball["q"]]
-            recheck(checker, mutate(path, bad, double), 0, "the covering at a = 1 scaled to a = 2")
         elif case == "rejects_covering_piece_deleted":  # one piece of a no-contact proof deleted: a gap in t
             path, _ = write_certificate(cli, "covering_point", d)
 

@@ -110,12 +110,14 @@ Iv t0(const Iv& a, const Iv& b, const Iv& q) { return asin((q - 2.0 * b) / a); }
 Iv t1(const Iv& a, const Iv& b, const Iv& q) { return pi() - t0(a, b, q); }
 Iv t2(const Iv& a, const Iv& b) { return pi() + asin(2.0 * b / a); }
 Iv t3(const Iv& a, const Iv& b) { return 2.0 * pi() - asin(2.0 * b / a); }
-/// Eq. (8): the velocity at t2 of the progression from rest at t0 (Eq. 7 at t = t2),
-/// u(t2) = a cos t0 - a cos t2 + 2c (t2 - t0), 2c = 2b - q.
-Iv u_at_t2(const Iv& a, const Iv& b, const Iv& q) {
-  const Iv s = t0(a, b, q), e = t2(a, b);
-  return a * cos(s) - a * cos(e) + (2.0 * b - q) * (e - s);
+/// Eq. (7): the velocity of the progression from rest at t0, u(t) = a cos t0 - a cos t + 2c (t - t0),
+/// 2c = 2b - q.
+Iv u_from_t0(const Iv& a, const Iv& b, const Iv& q, const Iv& t) {
+  const Iv s = t0(a, b, q);
+  return a * cos(s) - a * cos(t) + (2.0 * b - q) * (t - s);
 }
+/// Eq. (8): u(t2), its value at t2.
+Iv u_at_t2(const Iv& a, const Iv& b, const Iv& q) { return u_from_t0(a, b, q, t2(a, b)); }
 /// Eq. (11): the flight from rest at theta, G1(theta, t) = b (t - theta)^2 - a sin t + a cos theta
 /// (t - theta) + a sin theta (zero at the impact T1); its t-derivative is
 /// dG1(theta, t) = 2b (t - theta) - a cos t + a cos theta, and d2G1/dt2 = F(t).
@@ -234,11 +236,16 @@ std::string describe(const Box& s) {
   return buf;
 }
 
+/// How a ball's start phases are given: [th_lo, th_hi] (doubles); ["t2", th_hi], the phases from
+/// t2 exactly at a point box; "t2", the family theta = t2(b), one start per b of the box.
+enum class Start { Interval, FromT2, AtT2 };
+
 /// A closed set [th_lo, th_hi] x [b_lo, b_hi] x [q_lo, q_hi] (a ball of a covering certificate; a
-/// Lemma 1 sub-box has th_lo = th_hi = 0).
+/// Lemma 1 sub-box has th_lo = th_hi = 0; so has the family theta = t2(b), as far as covers go).
 struct Ball {
   double th_lo, th_hi;
   Box box;
+  Start start = Start::Interval;
 };
 
 /// The sorted distinct values of `ends` clipped to [lo, hi], with lo and hi.
@@ -286,18 +293,22 @@ void require_cover(Steps& st, const std::vector<Ball>& balls, double th_lo, doub
 
 /// Eq. (1): f(lo) < 0 < f(hi) with 0 < lo < hi < pi/2 (f' > 0 on (0, pi/2): analytic, README.md);
 /// then the correctly rounded doubles of vartheta0 and sin vartheta0, when given.
+void vartheta0_steps(Steps& st, const Num& lo, const Num& hi) {
+  const Iv L(lo), H(hi);
+  st.require(L.positive() && (H - L).positive() && (0.5 * pi() - H).positive(), "0 < lo < hi < pi/2");
+  st.require(f_eq1(L).negative(), "Eq. (1): f(lo) < 0");
+  st.require(f_eq1(H).positive(), "Eq. (1): f(hi) > 0");
+  st.require(f_eq1_slope(Iv(lo, hi)).positive(), "Eq. (1): f' > 0 on [lo, hi]");
+}
+
 long check_vartheta0(const json& c) {
   Steps st;
   const json& w = field(c, "witnesses", "");
   const json& br = field(w, "bracket", "witnesses.");
   const Num lo = exact(field(field(br, "lo", "witnesses.bracket."), "hex", "witnesses.bracket.lo."), "witnesses.bracket.lo.hex");
   const Num hi = exact(field(field(br, "hi", "witnesses.bracket."), "hex", "witnesses.bracket.hi."), "witnesses.bracket.hi.hex");
-  const Iv L(lo), H(hi);
-  st.require(L.positive() && (H - L).positive() && (0.5 * pi() - H).positive(), "0 < lo < hi < pi/2");
-  st.require(f_eq1(L).negative(), "Eq. (1): f(lo) < 0");
-  st.require(f_eq1(H).positive(), "Eq. (1): f(hi) > 0");
+  vartheta0_steps(st, lo, hi);
   const Iv bracket(lo, hi);
-  st.require(f_eq1_slope(bracket).positive(), "Eq. (1): f' > 0 on [lo, hi]");
   // A double d is the nearest to every point of X when X lies strictly between the midpoints of d
   // and its neighbours (exact at kPrecision bits).
   auto rounds_to = [](const Iv& X, double d) {
@@ -492,23 +503,36 @@ struct BallWitness {
   Ball ball;
   Num s0, t_lo, t_hi, u_lo, u_hi, tau, from;  // u_lo, u_hi: theta2; tau, from (unless impact): stop_arc
   std::vector<Piece> no_contact, simple_root, no_earlier_stop, simple_zero, no_stop_before_t3;
-  bool ab = false, theta2 = false, from_impact = false;
+  bool ab = false, none = false, theta2 = false, from_impact = false;
   double k = 0;
 };
 
-BallWitness read_ball(const json& j, const std::string& where) {
+/// Reads a ball; `allow_none`: its case may be "none" (only the steps up to the first stop are
+/// checked, nothing about T is concluded; the erratum to Theorem 2).
+BallWitness read_ball(const json& j, const std::string& where, bool allow_none = false) {
   BallWitness w;
-  const std::vector<double> th = doubles(field(j, "theta", where), 2, where + "theta"), b = doubles(field(j, "b", where), 2, where + "b"),
-                            q = doubles(field(j, "q", where), 2, where + "q");
-  w.ball = {th[0], th[1], {b[0], b[1], q[0], q[1]}};
+  const std::vector<double> b = doubles(field(j, "b", where), 2, where + "b"), q = doubles(field(j, "q", where), 2, where + "q");
+  const json& jth = field(j, "theta", where);
+  w.ball = {0, 0, {b[0], b[1], q[0], q[1]}};
+  if (jth == "t2") {
+    w.ball.start = Start::AtT2;
+  } else if (jth.is_array() && jth.size() == 2 && jth[0] == "t2") {
+    w.ball.start = Start::FromT2;
+    w.ball.th_hi = exact_double(jth[1], where + "theta[1]");
+  } else {
+    const std::vector<double> th = doubles(jth, 2, where + "theta");
+    w.ball.th_lo = th[0], w.ball.th_hi = th[1];
+  }
   const json& jt = field(j, "T1", where);
   const std::string wt = where + "T1.";
   w.s0 = exact(field(jt, "s0", wt), wt + "s0"), w.t_lo = exact(field(jt, "t_lo", wt), wt + "t_lo"), w.t_hi = exact(field(jt, "t_hi", wt), wt + "t_hi");
   w.no_contact = pieces(field(jt, "no_contact", wt), wt + "no_contact");
   w.simple_root = pieces(field(jt, "simple_root", wt), wt + "simple_root");
   const json& jc = field(j, "case", where);
-  if (jc != "AB" && jc != "BC") throw Malformed("'" + where + "case' is not \"AB\" or \"BC\"");
+  if (jc != "AB" && jc != "BC" && !(allow_none && jc == "none"))
+    throw Malformed("'" + where + "case' is not \"AB\" or \"BC\"" + (allow_none ? " or \"none\"" : ""));
   w.ab = jc == "AB";
+  w.none = jc == "none";
   const json& jk = field(j, "k", where);
   const bool small = jk.is_number_unsigned() ? jk.get<unsigned long long>() < 1000000000ULL
                                              : jk.is_number_integer() && jk.get<long long>() > -1000000000LL;
@@ -545,12 +569,22 @@ Outcome check_ball(Steps& st, const Iv& A, const BallWitness& w, const std::stri
   const Ball& ball = w.ball;
   const Num &s0 = w.s0, &tlo = w.t_lo, &thi = w.t_hi;
   const Box& x = ball.box;
-  const Iv Thmin(ball.th_lo), Thmax(ball.th_hi), Th(ball.th_lo, ball.th_hi), Blo(x.b_lo), Bhi(x.b_hi), B(x.b_lo, x.b_hi), Qlo(x.q_lo),
-      Qhi(x.q_hi), Q(x.q_lo, x.q_hi);
+  const Iv Blo(x.b_lo), Bhi(x.b_hi), B(x.b_lo, x.b_hi), Qlo(x.q_lo), Qhi(x.q_hi), Q(x.q_lo, x.q_hi);
+  // The start phases at the min corner (with b_lo), at the max corner (with b_hi), all of them.
+  // From t2 exactly: [t2, th_hi] at a point box. The family theta = t2(b): along it the total
+  // b-derivatives of G1 and dG1 are those at fixed theta, as F(t2) = 0 removes the theta terms.
+  Iv Thmin(ball.th_lo), Thmax(ball.th_hi);
+  if (ball.start == Start::FromT2) Thmin = t2(A, Bhi);
+  if (ball.start == Start::AtT2) Thmin = t2(A, Blo), Thmax = t2(A, Bhi);
+  const Iv Th = hull(Thmin, Thmax);
   // 1. The start set: t2 <= theta < t3, so F(theta) <= 0 for every b <= b_hi, and with t > theta
   // dG1/dtheta = -F(theta)(t - theta) >= 0, dG1/db = (t - theta)^2, d(dG1)/dtheta = -F(theta) >= 0,
   // d(dG1)/db = 2(t - theta) > 0: G1 and dG1 are least at (theta_lo, b_lo), greatest at (theta_hi, b_hi).
-  st.require(le(t2(A, Bhi), Thmin) && lt(Thmax, t3(A, Bhi)), step("start set: t2(b_hi) <= theta_lo <= theta_hi < t3(b_hi)"));
+  if (ball.start == Start::Interval)
+    st.require(le(t2(A, Bhi), Thmin) && ball.th_lo <= ball.th_hi && lt(Thmax, t3(A, Bhi)),
+               step("start set: t2(b_hi) <= theta_lo <= theta_hi < t3(b_hi)"));
+  if (ball.start == Start::FromT2)
+    st.require(x.b_lo == x.b_hi && le(Thmin, Thmax) && lt(Thmax, t3(A, Bhi)), step("start set: a point box, t2 <= theta_hi < t3"));
   const Iv S0(s0), Tlo(tlo), Thi(thi);
   // 2. The bracket: G1 < 0 at t_lo and > 0 at t_hi at every point (Eq. 11, the corners).
   st.require(lt(Thmax, Tlo) && lt(Tlo, Thi), step("T1 bracket: theta_hi < t_lo < t_hi"));
@@ -565,7 +599,7 @@ Outcome check_ball(Steps& st, const Iv& A, const BallWitness& w, const std::stri
   // a cos theta K(s), E = (1/2 - (1 - cos s)/s^2)/s^2 in [1/24 - s^2/720, 1/24], K = (sin s - s)/s^3
   // in [-1/6, -1/6 + s^2/120] for 0 < s <= 1 (alternating series); b + (a/2) sin theta <= 0 (step 1).
   // So G1 < 0 for s in (0, s0]; theta_hi - theta_lo <= s0 joins this to step 5.
-  st.require(S0.positive() && le(S0, Iv(1.0)) && le(Iv(ball.th_hi) - Iv(ball.th_lo), S0),
+  st.require(S0.positive() && le(S0, Iv(1.0)) && le(Thmax - Thmin, S0),
              step("departure: 0 < s0 <= 1 and theta_hi - theta_lo <= s0"));
   {
     const Iv S = hull(Iv(0.0), S0), s2 = S0 * S0, E = hull(Iv(1.0) / Iv(24.0) - s2 / Iv(720.0), Iv(1.0) / Iv(24.0)),
@@ -631,6 +665,7 @@ Outcome check_ball(Steps& st, const Iv& A, const BallWitness& w, const std::stri
       negative_on(st, w.no_stop_before_t3, tlo, w.from, minus_G2min, who + ": stop arc no stop before t3");
     }
   }
+  if (w.none) return out;  // no case: nothing is concluded about T
   // 7. The case, over B x Q. AB: theta2 in [t1, t3) + 2 pi k, where F < q: the mass rests until t2
   // or is already in the start set, T = max(theta2 - 2 pi k, t2), continuous as theta2 is. BC: the
   // stop lies in [t3, t2 + 2 pi) + 2 pi k; T = t2, directly when the stop is after t1 + 2 pi (k + 1),
@@ -711,9 +746,191 @@ long check_covering(const json& c) {
   return st.n;
 }
 
+// ---- Theorem 2 (Section 8) --------------------------------------------------------------------------
+
+/// T = t2 on a ball: case BC, or case AB with u_hi - 2 pi k < t2 over B (then T = max(theta2 - 2 pi k,
+/// t2) = t2).
+bool proves_T_is_t2(const Iv& A, const Outcome& o, const Box& x) { return !o.ab || lt(o.u_hi - o.two_pi_k, t2(A, Iv(x.b_lo, x.b_hi))); }
+/// T > t2 on a ball: case AB with u_lo - 2 pi k > t2 over B (T = theta2 - 2 pi k, scenario A).
+bool proves_T_above_t2(const Iv& A, const Outcome& o, const Box& x) {
+  return o.ab && o.theta2 && lt(t2(A, Iv(x.b_lo, x.b_hi)), o.u_lo - o.two_pi_k);
+}
+
+/// The bracket {"lo", "hi"} (exact) of vartheta0, checked as in check_vartheta0; returns [lo, hi].
+Iv vartheta0_bracket(Steps& st, const json& w, const std::string& where) {
+  const json& br = field(w, "vartheta0", where);
+  const Num lo = exact(field(br, "lo", where + "vartheta0."), where + "vartheta0.lo");
+  const Num hi = exact(field(br, "hi", where + "vartheta0."), where + "vartheta0.hi");
+  vartheta0_steps(st, lo, hi);
+  return Iv(lo, hi);
+}
+
+/// The phase P = [u_lo, u_hi] - 2 pi k' of theta2 of a ball (which must have theta2).
+Iv phase(Steps& st, const Outcome& o, const json& w, const std::string& where) {
+  st.require(o.theta2, where + "at_t2 has theta2 (a bracketed stop)");
+  const json& jk = field(w, "phase_turn", where);
+  if (!jk.is_number_integer() || jk.get<long long>() <= -1000000000LL || jk.get<long long>() >= 1000000000LL)
+    throw Malformed("'" + where + "phase_turn' is not an integer of absolute value below 10^9");
+  return hull(o.u_lo, o.u_hi) - 2.0 * pi() * Iv(static_cast<double>(jk.get<long long>()));
+}
+
+/// A ball ["t2", h] at the point (b, q), read from `j`: its outcome, after the ball's steps.
+Outcome check_at_t2(Steps& st, const Iv& A, const json& j, double b, double q, const std::string& who, bool allow_none = false) {
+  const BallWitness w = read_ball(j, who + ".", allow_none);
+  st.require(w.ball.start == Start::FromT2, who + ": theta is [\"t2\", h]");
+  st.require(w.ball.box.b_lo == b && w.ball.box.b_hi == b && w.ball.box.q_lo == q && w.ball.box.q_hi == q, who + ": at the parameter point");
+  return check_ball(st, A, w, who);
+}
+
+/// Theorem 2's conclusion at (a, b, q) from the witnesses `w` (statement superstable, or a window's
+/// middle): the condition (21) or (22) named, T = t2 on [t2, theta_end] with theta_end > t2, and the
+/// hypotheses listed. Returns a description of what holds.
+std::string superstable_at(Steps& st, double a, double b, double q, const json& w, const std::string& where) {
+  const Box point{b, b, q, q};
+  const Iv A = standing_box(st, a, point), B(b), Q(q);
+  const bool has_lemma1 = w.contains("lemma1");
+  if (has_lemma1) lemma1(st, A, point, read_sub_boxes(w["lemma1"], where + "lemma1."));
+  bool needs_lemma1 = false;
+  // The condition, from theta2(t2) (Section 8): (21) t1 < P < t2, (22) t3 < P < t0 + 2 pi.
+  const Outcome at = check_at_t2(st, A, field(w, "at_t2", where), b, q, where + "at_t2");
+  needs_lemma1 = at.needs_lemma1;
+  const Iv P = phase(st, at, w, where);
+  const json& jc = field(w, "condition", where);
+  if (jc != 21 && jc != 22) throw Malformed("'" + where + "condition' is not 21 or 22");
+  const int condition = jc.get<int>();
+  if (condition == 21) st.require(lt(t1(A, B, Q), P) && lt(P, t2(A, B)), where + "(21): t1 < theta2(t2) - 2 pi k' < t2");
+  else st.require(lt(t3(A, B), P) && lt(P, t0(A, B, Q) + 2.0 * pi()), where + "(22): t3 < theta2(t2) - 2 pi k' < t0 + 2 pi");
+  // T = t2 on [t2, theta_end]: balls from t2 or inside (t2, theta_end], each T = t2, covering it.
+  const double end = exact_double(field(w, "theta_end", where), where + "theta_end");
+  st.require(lt(t2(A, B), Iv(end)), where + "theta_end > t2");
+  const json& cover = field(w, "cover", where);
+  if (!cover.is_array()) throw Malformed("'" + where + "cover' is not an array");
+  Num t2_lo;  // a double <= t2: the lower end of balls from t2, in the exact cover comparison
+  mpfi_get_left(t2_lo.x, t2(A, B).x);
+  const double t2_down = mpfr_get_d(t2_lo.x, MPFR_RNDD);
+  std::vector<Ball> balls;
+  for (std::size_t i = 0; i < cover.size(); ++i) {
+    const std::string who = where + "cover[" + std::to_string(i) + "]";
+    BallWitness bw = read_ball(cover[i], who + ".");
+    st.require(bw.ball.start != Start::AtT2 && bw.ball.box.b_lo == b && bw.ball.box.b_hi == b && bw.ball.box.q_lo == q && bw.ball.box.q_hi == q,
+               who + ": phases at the parameter point");
+    const Outcome o = check_ball(st, A, bw, who);
+    st.require(proves_T_is_t2(A, o, point), who + ": T = t2 (case BC, or AB with u_hi - 2 pi k < t2)");
+    needs_lemma1 = needs_lemma1 || o.needs_lemma1;
+    if (bw.ball.start == Start::FromT2) bw.ball.th_lo = t2_down;
+    st.require(bw.ball.th_hi <= end, who + ": inside [t2, theta_end]");
+    balls.push_back(bw.ball);
+  }
+  require_cover(st, balls, t2_down, end, point, where + "cover: the balls cover [t2, theta_end] (no gap)");
+  st.require(!needs_lemma1 || has_lemma1, where + "Lemma 1 is needed and lemma1 is given");
+  // The hypotheses the certificate lists: (2) 2b < a, a sin(vartheta0) < q < a; (23) q < a.
+  const json& hyp = field(w, "hypotheses", where);
+  if (!hyp.is_array()) throw Malformed("'" + where + "hypotheses' is not an array");
+  bool h2 = false, h23 = false;
+  for (const json& h : hyp) {
+    if (h == "(2)") {
+      const Iv v0 = vartheta0_bracket(st, w, where);
+      st.require(lt(2.0 * B, A) && lt(A * sin(v0), Q) && lt(Q, A), where + "(2): 2b < a, a sin(vartheta0) < q < a");
+      h2 = true;
+    } else if (h == "(23)") {
+      st.require(lt(Q, A), where + "(23): q < a");
+      h23 = true;
+    } else {
+      throw Malformed("'" + where + "hypotheses' holds " + h.dump() + " (not \"(2)\" or \"(23)\")");
+    }
+  }
+  const bool theorem2 = (h2 && condition == 22) || (h23 && condition == 21);
+  return std::string("T = t2 on [t2, t2 + eps], (") + std::to_string(condition) + ")" + (theorem2 ? ", Theorem 2's hypotheses hold" : "");
+}
+
+long check_superstable(const json& c, std::string& what) {
+  Steps st;
+  const json& p = field(c, "parameters", "");
+  what = superstable_at(st, parameter(p, "a", "parameters."), parameter(p, "b", "parameters."), parameter(p, "q", "parameters."),
+                        field(c, "witnesses", ""), "witnesses.");
+  return st.n;
+}
+
+/// T(t2) > t2 at (a, b, q): t2 is not a fixed point of T.
+long check_not_superstable(const json& c) {
+  Steps st;
+  const json& p = field(c, "parameters", "");
+  const double a = parameter(p, "a", "parameters."), b = parameter(p, "b", "parameters."), q = parameter(p, "q", "parameters.");
+  const Box point{b, b, q, q};
+  const Iv A = standing_box(st, a, point);
+  const Outcome o = check_at_t2(st, A, field(field(c, "witnesses", ""), "at_t2", "witnesses."), b, q, "witnesses.at_t2");
+  st.require(proves_T_above_t2(A, o, point), "T(t2) > t2 (case AB, u_lo - 2 pi k > t2)");
+  return st.n;
+}
+
+/// A superstability window in b at (a, q): T(t2(b)) = t2 on b-boxes covering [left_in, right_in],
+/// T(t2) > t2 at left_out and right_out, Theorem 2's conclusion at the middle.
+long check_window(const json& c) {
+  Steps st;
+  const json& p = field(c, "parameters", "");
+  const double a = parameter(p, "a", "parameters."), q = parameter(p, "q", "parameters.");
+  const json& w = field(c, "witnesses", "");
+  double e[4];
+  const char* names[4] = {"left_out", "left_in", "right_in", "right_out"};
+  for (int i = 0; i < 4; ++i) e[i] = exact_double(field(w, names[i], "witnesses."), std::string("witnesses.") + names[i]);
+  st.require(0 < e[0] && e[0] < e[1] && e[1] < e[2] && e[2] < e[3], "0 < left_out < left_in < right_in < right_out");
+  const Box range{e[0], e[3], q, q}, inner{e[1], e[2], q, q};
+  const Iv A = standing_box(st, a, range);
+  const json& outer = field(w, "outer", "witnesses.");
+  if (!outer.is_array() || outer.size() != 2) throw Malformed("'witnesses.outer' is not an array of two balls");
+  for (int side = 0; side < 2; ++side) {
+    const double b = side == 0 ? e[0] : e[3];
+    const std::string who = side == 0 ? "witnesses.outer[0] (left_out)" : "witnesses.outer[1] (right_out)";
+    const Outcome o = check_at_t2(st, A, outer[side], b, q, who);
+    st.require(proves_T_above_t2(A, o, {b, b, q, q}), who + ": T(t2) > t2");
+  }
+  const bool has_lemma1 = w.contains("lemma1");
+  if (has_lemma1) lemma1(st, A, inner, read_sub_boxes(w["lemma1"], "witnesses.lemma1."));
+  const json& boxes = field(w, "boxes", "witnesses.");
+  if (!boxes.is_array()) throw Malformed("'witnesses.boxes' is not an array");
+  std::vector<Ball> balls;
+  bool needs_lemma1 = false;
+  for (std::size_t i = 0; i < boxes.size(); ++i) {
+    const std::string who = "witnesses.boxes[" + std::to_string(i) + "]";
+    const BallWitness bw = read_ball(boxes[i], who + ".");
+    const Box& x = bw.ball.box;
+    st.require(bw.ball.start == Start::AtT2 && e[1] <= x.b_lo && x.b_lo <= x.b_hi && x.b_hi <= e[2] && x.q_lo == q && x.q_hi == q,
+               who + ": the family theta = t2(b), b inside [left_in, right_in]");
+    const Outcome o = check_ball(st, A, bw, who);
+    st.require(proves_T_is_t2(A, o, x), who + ": T(t2(b)) = t2 (case BC, or AB with u_hi - 2 pi k < t2)");
+    needs_lemma1 = needs_lemma1 || o.needs_lemma1;
+    balls.push_back(bw.ball);
+  }
+  require_cover(st, balls, 0, 0, inner, "the b-boxes cover [left_in, right_in] (no gap)");
+  st.require(!needs_lemma1 || has_lemma1, "Lemma 1 is needed by a box and witnesses.lemma1 is given");
+  const json& inside = field(w, "inside", "witnesses.");
+  const double b_mid = exact_double(field(inside, "b", "witnesses.inside."), "witnesses.inside.b");
+  st.require(e[1] <= b_mid && b_mid <= e[2], "inside.b lies in [left_in, right_in]");
+  superstable_at(st, a, b_mid, q, inside, "witnesses.inside.");
+  return st.n;
+}
+
+/// The erratum to Theorem 2: (2) and (22) hold at (a, b, q), yet u(t2) > 0 > u(t3) (Eq. 7), so the
+/// progression from rest at t0 stops at t4 in (t2, t3), where the mass flies: T(t2) = t4 != t2.
+long check_theorem2_counterexample(const json& c) {
+  Steps st;
+  const json& p = field(c, "parameters", "");
+  const double a = parameter(p, "a", "parameters."), b = parameter(p, "b", "parameters."), q = parameter(p, "q", "parameters.");
+  const json& w = field(c, "witnesses", "");
+  const Iv A = standing_box(st, a, {b, b, q, q}), B(b), Q(q);
+  const Iv v0 = vartheta0_bracket(st, w, "witnesses.");
+  st.require(lt(2.0 * B, A) && lt(A * sin(v0), Q) && lt(Q, A), "(2): 2b < a, a sin(vartheta0) < q < a");
+  const Outcome at = check_at_t2(st, A, field(w, "at_t2", "witnesses."), b, q, "witnesses.at_t2", true);
+  const Iv P = phase(st, at, w, "witnesses.");
+  st.require(lt(t3(A, B), P) && lt(P, t0(A, B, Q) + 2.0 * pi()), "(22): t3 < theta2(t2) - 2 pi k' < t0 + 2 pi");
+  st.require(u_from_t0(A, B, Q, t2(A, B)).positive(), "Eq. (7): u(t2) > 0");
+  st.require(u_from_t0(A, B, Q, t3(A, B)).negative(), "Eq. (7): u(t3) < 0");
+  return st.n;
+}
+
 /// Checks one file; returns its exit status after printing its line.
 int check_file(const std::string& path) {
-  std::string statement = "?";
+  std::string statement = "?", what;
   try {
     std::ifstream in(path, std::ios::binary);
     if (!in) throw Malformed("cannot be opened");
@@ -736,8 +953,14 @@ int check_file(const std::string& path) {
     else if (statement == "lemma1") steps = check_lemma1(c);
     else if (statement == "b0") steps = check_b0(c);
     else if (statement == "covering") steps = check_covering(c);
-    else throw Malformed("unknown statement '" + statement + "' (this checker reads vartheta0, lemma1, b0, covering)");
-    std::printf("OK %s: %s, %ld steps re-verified\n", path.c_str(), statement.c_str(), steps);
+    else if (statement == "superstable") steps = check_superstable(c, what);
+    else if (statement == "not_superstable") steps = check_not_superstable(c);
+    else if (statement == "window") steps = check_window(c);
+    else if (statement == "theorem2_counterexample") steps = check_theorem2_counterexample(c);
+    else
+      throw Malformed("unknown statement '" + statement +
+                      "' (this checker reads vartheta0, lemma1, b0, covering, superstable, not_superstable, window, theorem2_counterexample)");
+    std::printf("OK %s: %s, %ld steps re-verified%s\n", path.c_str(), statement.c_str(), steps, what.empty() ? "" : ("; " + what).c_str());
     return 0;
   } catch (const Failed& e) {
     std::printf("FAIL %s: %s: step not verified: %s\n", path.c_str(), statement.c_str(), e.what());
