@@ -110,9 +110,11 @@ const Experiment experiment{
           const bool d1 = le(Ball::decimal("0.810465"), v.value) && lt(v.value, Ball::decimal("0.810475"));
           const bool d2 = le(Ball::decimal("0.7246105"), v.sine) && lt(v.sine, Ball::decimal("0.7246115"));
           Json e = Json::object();
-          e.set("vartheta0", ball_json(v.value, 40)).set("sin_vartheta0", ball_json(v.sine, 40)).set("paper", "0.81047, 0.724611");
-          certified_claim(out, "cert.eq1.paper_digits", "Eq. (1)",
-                          "The paper's 0.81047 and 0.724611 are vartheta0 and sin(vartheta0) correctly rounded to 5 and 6 decimals.", e, d1 && d2);
+          e.set("vartheta0", ball_json(v.value, 40)).set("sin_vartheta0", ball_json(v.sine, 40)).set("paper", "0.81047, 0.724611").set("proved", v.verdict.proved);
+          const std::string digits = "The paper's 0.81047 and 0.724611 are vartheta0 and sin(vartheta0) correctly rounded to 5 and 6 decimals.";
+          certified_claim(out, "cert.eq1.paper_digits", "Eq. (1)", digits, e, d1 && d2);
+          if (v.verdict.proved && d1 && d2)
+            run.certificate("cert.eq1.paper_digits", certificate_text(certificate_vartheta0(v, digits, {{"vartheta0", "0.81047"}, {"sine", "0.724611"}})));
           const Ball::Printed v40 = v.value.printed(40), s40 = v.sine.printed(40);  // balls that enclose
           out.macro("CertVarthetaZero", v40.mid);
           out.macro("CertVarthetaZeroRad", latex_number(v40.rad));

@@ -81,6 +81,10 @@ def bind(path, cert, claim, part):
         got = [exact(w[k]) for k in ("left_out", "left_in", "right_in", "right_out")]
         if got != [float(x) for x in rec.get("left_edge", []) + rec.get("right_edge", [])]:
             return "its edge brackets are not the claim's"
+    if cert.get("statement") == "vartheta0" and "paper" in rec:  # the paper's printed digits
+        got = ", ".join(d["value"] for d in w.get("decimals", []))
+        if got != rec["paper"]:
+            return f"its decimals {got!r} are not the claim's {rec['paper']!r}"
     if cert.get("statement") == "vartheta0" and rec.get("rounding_certified"):
         for key, want in (("value_double", "vartheta0_double"), ("sine_double", "sin_vartheta0_double")):
             if key not in w or exact(w[key]["hex"]) != float(rec[want]):

@@ -25,6 +25,15 @@ for f in "$tmp"/certificates/*.json; do
   sha=$(sha256sum "$f" | cut -d' ' -f1)
   check "$(basename "$f")'s row carries its SHA-256" 'grep -q "{$sha}" "$tmp/tables/certificates.tex"'
 done
+# The paper's digits of vartheta0: a certificate claiming 0.81048 is rejected by the checker.
+"$py" - "$tmp/certificates/cert.eq1.paper_digits.json" "$tmp/digits.json" <<'PY'
+import json, sys
+d = json.load(open(sys.argv[1]))
+d["witnesses"]["decimals"][0]["value"] = "0.81048"
+json.dump(d, open(sys.argv[2], "w"), indent=1)
+PY
+check "a wrong printed digit of vartheta0 is rejected" '"$checker" "$tmp/digits.json" | grep -q "^FAIL .*correctly rounded to 5 decimals"'
+rm -f "$tmp/digits.json"
 # Tamper: the lemma1 certificate of point A claims another q, which its sub-boxes do not cover.
 victim=$tmp/certificates/cert.lemma1.A.json
 check "the lemma1 certificate of point A exists" '[[ -f $victim ]]'

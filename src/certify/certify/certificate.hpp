@@ -13,6 +13,7 @@
 #include <cstddef>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "certify/certify.hpp"
 #include "dfchaos/certified/ball.hpp"
@@ -46,7 +47,14 @@ kit::Json exact_number(double x);
 /// The certificate of Eq. (1): the bracket [lo, hi] around vartheta0 with exact ends, and the
 /// correctly rounded doubles of vartheta0 and sin vartheta0 (when certified). `v` must be proved;
 /// `claim` is the statement in words (the record's "statement"), as in every certificate below.
-kit::Json certificate_vartheta0(const certified::Vartheta0& v, const std::string& claim);
+/// A printed decimal "0.d1...dn" of vartheta0 (`of` "vartheta0") or of sin vartheta0 ("sine") that the
+/// certificate asserts to be the value correctly rounded to n decimals (the paper's digits).
+struct PrintedDecimal {
+  std::string of;     ///< "vartheta0" or "sine"
+  std::string value;  ///< "0.81047"
+};
+/// With `decimals`, the certificate also asserts those roundings (witness "decimals").
+kit::Json certificate_vartheta0(const certified::Vartheta0& v, const std::string& claim, const std::vector<PrintedDecimal>& decimals = {});
 /// The certificate of Lemma 1 over {a} x b x q: the parameters and the sub-boxes on which Eq. (8)
 /// u(t2) < 0 was shown. `p` must be proved.
 kit::Json certificate_lemma1(double a, const Range& b, const Range& q, const certified::Lemma1Proof& p, const std::string& claim);

@@ -98,7 +98,7 @@ kit::Json exact_number(double x) {
   return j;
 }
 
-kit::Json certificate_vartheta0(const certified::Vartheta0& v, const std::string& claim) {
+kit::Json certificate_vartheta0(const certified::Vartheta0& v, const std::string& claim, const std::vector<PrintedDecimal>& decimals) {
   if (!v.verdict.proved) throw std::logic_error("certificate_vartheta0: not proved");
   kit::Json j = header("vartheta0", claim);
   j.set("parameters", kit::Json::object());
@@ -114,6 +114,15 @@ kit::Json certificate_vartheta0(const certified::Vartheta0& v, const std::string
   if (v.rounding_certified) {
     w.set("value_double", exact_number(v.value_double));
     w.set("sine_double", exact_number(v.sine_double));
+  }
+  if (!decimals.empty()) {
+    kit::Json list = kit::Json::array();
+    for (const PrintedDecimal& d : decimals) {
+      kit::Json e = kit::Json::object();
+      e.set("of", d.of).set("value", d.value);
+      list.push(e);
+    }
+    w.set("decimals", list);
   }
   j.set("witnesses", w);
   return j;
