@@ -21,6 +21,7 @@
 #include <functional>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -770,6 +771,12 @@ long check_covering(const json& c) {
 
 // ---- Theorem 2 (Section 8) --------------------------------------------------------------------------
 
+/// The parameters (a, b, q) of a certificate at a point.
+std::tuple<double, double, double> read_point(const json& c) {
+  const json& p = field(c, "parameters", "");
+  return {parameter(p, "a", "parameters."), parameter(p, "b", "parameters."), parameter(p, "q", "parameters.")};
+}
+
 /// T = t2 on a ball: case BC, or case AB with u_hi - 2 pi k < t2 over B (then T = max(theta2 - 2 pi k,
 /// t2) = t2).
 bool proves_T_is_t2(const Iv& A, const Outcome& o, const Box& x) { return !o.ab || lt(o.u_hi - o.two_pi_k, t2(A, Iv(x.b_lo, x.b_hi))); }
@@ -867,17 +874,15 @@ std::string superstable_at(Steps& st, double a, double b, double q, const json& 
 
 long check_superstable(const json& c, std::string& what) {
   Steps st;
-  const json& p = field(c, "parameters", "");
-  what = superstable_at(st, parameter(p, "a", "parameters."), parameter(p, "b", "parameters."), parameter(p, "q", "parameters."),
-                        field(c, "witnesses", ""), "witnesses.");
+  const auto [a, b, q] = read_point(c);
+  what = superstable_at(st, a, b, q, field(c, "witnesses", ""), "witnesses.");
   return st.n;
 }
 
 /// T(t2) > t2 at (a, b, q): t2 is not a fixed point of T.
 long check_not_superstable(const json& c) {
   Steps st;
-  const json& p = field(c, "parameters", "");
-  const double a = parameter(p, "a", "parameters."), b = parameter(p, "b", "parameters."), q = parameter(p, "q", "parameters.");
+  const auto [a, b, q] = read_point(c);
   const Box point{b, b, q, q};
   const Iv A = standing_box(st, a, point);
   const Outcome o = check_at_t2(st, A, field(field(c, "witnesses", ""), "at_t2", "witnesses."), b, q, "witnesses.at_t2");
@@ -936,8 +941,7 @@ long check_window(const json& c) {
 /// progression from rest at t0 stops at t4 in (t2, t3), where the mass flies: T(t2) = t4 != t2.
 long check_theorem2_counterexample(const json& c) {
   Steps st;
-  const json& p = field(c, "parameters", "");
-  const double a = parameter(p, "a", "parameters."), b = parameter(p, "b", "parameters."), q = parameter(p, "q", "parameters.");
+  const auto [a, b, q] = read_point(c);
   const json& w = field(c, "witnesses", "");
   const Iv A = standing_box(st, a, {b, b, q, q}), B(b), Q(q);
   const Iv v0 = vartheta0_bracket(st, w, "witnesses.");
