@@ -41,5 +41,11 @@ bad "J1: given together" "${b[@]}" --J0 "${last[4]}:${last[5]}"                 
 bad "J1: .*J1 to the right of J0" "${b[@]}" --J0 "${last[6]}:${last[7]}" --J1 "${last[4]}:${last[5]}"       # J0 right of J1
 bad "J0: .*both ends in \[t2(b_hi), 3pi/2\]" "${b[@]}" --J0 "1:${last[5]}" --J1 "${last[6]}:${last[7]}"                # an end below t2
 bad "J0: two phases TOP:T2" "${b[@]}" --J0 "${last[4]}" --J1 "${last[6]}:${last[7]}"                  # not TOP:T2
+# A given segment that fails is named: J0's ends swapped (T = t2 claimed at the top end) with J1 as
+# recorded: not proved (exit 1), and the failed step starts with "J0: ".
+"$cli" certify covering "${b[@]}" --J0 "${last[5]}:${last[4]}" --J1 "${last[6]}:${last[7]}" >"$tmp/out" 2>"$tmp/err"
+rc=$?
+if [[ $rc -eq 1 ]] && grep -q '"failed_step": "J0: ' "$tmp/out"; then echo "ok:   a failed J0 is named: $(grep -o '"failed_step": "[^"]*"' "$tmp/out")"
+else echo "FAIL: a failed J0 is not named (rc=$rc): $(grep -o '"failed_step": "[^"]*"' "$tmp/out")"; fails=$((fails + 1)); fi
 echo "region_reprove: $proved proved boxes, $fails failures"
 exit $((fails > 0))

@@ -121,6 +121,11 @@ Result certify(const Request& r) {
       const Candidate c0 = candidate("J0", *r.J0, box), c1 = candidate("J1", *r.J1, box);
       if (!(c0.hi() < c1.lo())) throw InvalidParameter("J1", "J1 to the right of J0 (J0 and J1 disjoint)", c1.lo());
       p = prove_covering(box, std::vector<Candidate>{c0, c1}, opt);
+      // Say which of the given segments failed (prove_covering reports the last failure it met).
+      if (!p.verdict.proved) {
+        const bool one_proved = p.J0.verdict.proved, it_was_J0 = one_proved && p.J0.lo == c0.lo();
+        p.verdict.step = (one_proved ? (it_was_J0 ? "J1: " : "J0: ") : "J0 and J1 both failed; J1: ") + p.verdict.step;
+      }
     }
     Result c{p.verdict.proved, to_json(p)};
     if (c.proved && r.certificate) {
