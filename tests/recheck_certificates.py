@@ -225,6 +225,15 @@ def main():
                 w = c["witnesses"]
                 w["left_out"] = next_double_hex(w["left_out"], +1)
             recheck(checker, mutate(path, bad, move), 1, "left_out changed in its last bit, its proof left as it was")
+        elif case == "rejects_window_no_neighbourhood":  # a box's phases cut to [t2(b), t2(b_lo)]: no eps > 0 at every b
+            path, _ = write_certificate(cli, "window", d)
+
+            def cut(c):
+                box = c["witnesses"]["boxes"][0]
+                if box["theta"][0] != "t2":
+                    sys.exit("FAIL: a window box does not start at t2")
+                box["theta"][1] = c["witnesses"]["outer"][0]["theta"][1]  # the double above t2 at left_out < b
+            recheck(checker, mutate(path, bad, cut), 1, "a window box without a neighbourhood of t2")
         elif case == "rejects_truncated":
             path, _ = write_certificate(cli, "lemma1_point", d)
             with open(path, "rb") as f:

@@ -237,12 +237,12 @@ std::string describe(const Box& s) {
   return buf;
 }
 
-/// How a ball's start phases are given: [th_lo, th_hi] (doubles); ["t2", th_hi], the phases from
-/// t2 exactly at a point box; "t2", the family theta = t2(b), one start per b of the box.
-enum class Start { Interval, FromT2, AtT2 };
+/// How a ball's start phases are given: [th_lo, th_hi] (doubles), or ["t2", th_hi], the phases
+/// [t2(b), th_hi] from t2 exactly, for each b of the box.
+enum class Start { Interval, FromT2 };
 
 /// A closed set [th_lo, th_hi] x [b_lo, b_hi] x [q_lo, q_hi] (a ball of a covering certificate; a
-/// Lemma 1 sub-box has th_lo = th_hi = 0; so has the family theta = t2(b), as far as covers go).
+/// Lemma 1 sub-box has th_lo = th_hi = 0).
 struct Ball {
   double th_lo, th_hi;
   Box box;
@@ -537,9 +537,7 @@ BallWitness read_ball(const json& j, const std::string& where, bool allow_none =
   const std::vector<double> b = doubles(field(j, "b", where), 2, where + "b"), q = doubles(field(j, "q", where), 2, where + "q");
   const json& jth = field(j, "theta", where);
   w.ball = {0, 0, {b[0], b[1], q[0], q[1]}};
-  if (jth == "t2") {
-    w.ball.start = Start::AtT2;
-  } else if (jth.is_array() && jth.size() == 2 && jth[0] == "t2") {
+  if (jth.is_array() && jth.size() == 2 && jth[0] == "t2") {
     w.ball.start = Start::FromT2;
     w.ball.th_hi = exact_double(jth[1], where + "theta[1]");
   } else {
@@ -594,11 +592,11 @@ Outcome check_ball(Steps& st, const Iv& A, const BallWitness& w, const std::stri
   const Box& x = ball.box;
   const Iv Blo(x.b_lo), Bhi(x.b_hi), B(x.b_lo, x.b_hi), Qlo(x.q_lo), Qhi(x.q_hi), Q(x.q_lo, x.q_hi);
   // The start phases at the min corner (with b_lo), at the max corner (with b_hi), all of them.
-  // From t2 exactly: [t2, th_hi] at a point box. The family theta = t2(b): along it the total
-  // b-derivatives of G1 and dG1 are those at fixed theta, as F(t2) = 0 removes the theta terms.
+  // From t2 exactly, [t2(b), th_hi]: the least start t2(b) is least at b_lo, and along the family
+  // theta = t2(b) the total b-derivatives of G1 and dG1 are those at fixed theta, as F(t2) = 0
+  // removes the theta terms; so the min corner is (t2(b_lo), b_lo).
   Iv Thmin(ball.th_lo), Thmax(ball.th_hi);
-  if (ball.start == Start::FromT2) Thmin = t2(A, Bhi);
-  if (ball.start == Start::AtT2) Thmin = t2(A, Blo), Thmax = t2(A, Bhi);
+  if (ball.start == Start::FromT2) Thmin = t2(A, Blo);
   const Iv Th = hull(Thmin, Thmax);
   // 1. The start set: t2 <= theta < t3, so F(theta) <= 0 for every b <= b_hi, and with t > theta
   // dG1/dtheta = -F(theta)(t - theta) >= 0, dG1/db = (t - theta)^2, d(dG1)/dtheta = -F(theta) >= 0,
@@ -606,8 +604,8 @@ Outcome check_ball(Steps& st, const Iv& A, const BallWitness& w, const std::stri
   if (ball.start == Start::Interval)
     st.require(le(t2(A, Bhi), Thmin) && ball.th_lo <= ball.th_hi && lt(Thmax, t3(A, Bhi)),
                step("start set: t2(b_hi) <= theta_lo <= theta_hi < t3(b_hi)"));
-  if (ball.start == Start::FromT2)
-    st.require(x.b_lo == x.b_hi && le(Thmin, Thmax) && lt(Thmax, t3(A, Bhi)), step("start set: a point box, t2 <= theta_hi < t3"));
+  if (ball.start == Start::FromT2)  // [t2(b), th_hi] for each b: the min corner t2(b_lo) by the family's monotonicity
+    st.require(le(t2(A, Bhi), Thmax) && lt(Thmax, t3(A, Bhi)), step("start set: t2(b_hi) <= theta_hi < t3(b_hi)"));
   const Iv S0(s0), Tlo(tlo), Thi(thi);
   // 2. The bracket: G1 < 0 at t_lo and > 0 at t_hi at every point (Eq. 11, the corners).
   st.require(lt(Thmax, Tlo) && lt(Tlo, Thi), step("T1 bracket: theta_hi < t_lo < t_hi"));
@@ -841,7 +839,7 @@ std::string superstable_at(Steps& st, double a, double b, double q, const json& 
   for (std::size_t i = 0; i < cover.size(); ++i) {
     const std::string who = where + "cover[" + std::to_string(i) + "]";
     BallWitness bw = read_ball(cover[i], who + ".");
-    st.require(bw.ball.start != Start::AtT2 && bw.ball.box.b_lo == b && bw.ball.box.b_hi == b && bw.ball.box.q_lo == q && bw.ball.box.q_hi == q,
+    st.require(bw.ball.box.b_lo == b && bw.ball.box.b_hi == b && bw.ball.box.q_lo == q && bw.ball.box.q_hi == q,
                who + ": phases at the parameter point");
     const Outcome o = check_ball(st, A, bw, who);
     st.require(proves_T_is_t2(A, o, point), who + ": T = t2 (case BC, or AB with u_hi - 2 pi k < t2)");
@@ -890,8 +888,9 @@ long check_not_superstable(const json& c) {
   return st.n;
 }
 
-/// A superstability window in b at (a, q): T(t2(b)) = t2 on b-boxes covering [left_in, right_in],
-/// T(t2) > t2 at left_out and right_out, Theorem 2's conclusion at the middle.
+/// A superstability window in b at (a, q): on b-boxes covering [left_in, right_in], T = t2 on
+/// [t2(b), h] with h > t2(b_hi) (t2 superstable at every such b); T(t2) > t2 at left_out and
+/// right_out; Theorem 2's conclusion at the middle.
 long check_window(const json& c) {
   Steps st;
   const json& p = field(c, "parameters", "");
@@ -921,10 +920,11 @@ long check_window(const json& c) {
     const std::string who = "witnesses.boxes[" + std::to_string(i) + "]";
     const BallWitness bw = read_ball(boxes[i], who + ".");
     const Box& x = bw.ball.box;
-    st.require(bw.ball.start == Start::AtT2 && e[1] <= x.b_lo && x.b_lo <= x.b_hi && x.b_hi <= e[2] && x.q_lo == q && x.q_hi == q,
-               who + ": the family theta = t2(b), b inside [left_in, right_in]");
+    st.require(bw.ball.start == Start::FromT2 && e[1] <= x.b_lo && x.b_lo <= x.b_hi && x.b_hi <= e[2] && x.q_lo == q && x.q_hi == q,
+               who + ": phases [t2(b), h], b inside [left_in, right_in]");
+    st.require(lt(t2(A, Iv(x.b_hi)), Iv(bw.ball.th_hi)), who + ": h > t2(b_hi) (so eps_b = h - t2(b) > 0 for every b)");
     const Outcome o = check_ball(st, A, bw, who);
-    st.require(proves_T_is_t2(A, o, x), who + ": T(t2(b)) = t2 (case BC, or AB with u_hi - 2 pi k < t2)");
+    st.require(proves_T_is_t2(A, o, x), who + ": T = t2 on [t2(b), h], every b (case BC, or AB with u_hi - 2 pi k < t2)");
     needs_lemma1 = needs_lemma1 || o.needs_lemma1;
     balls.push_back(bw.ball);
   }

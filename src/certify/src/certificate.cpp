@@ -180,9 +180,8 @@ kit::Json ball(const certified::BallProof& b) {
   if (!T.verdict.proved) throw std::logic_error("certificate: a ball is not proved");
   if (T.t1.no_contact.empty() && T.t1.simple_root.empty()) throw std::logic_error("certificate: the proof was not recorded");
   kit::Json j = kit::Json::object();
-  if (b.at_t2) {
-    j.set("theta", "t2");
-  } else if (b.from_t2) {
+  if (b.at_t2) throw std::logic_error("certificate: the start set theta = t2(b) has no format");
+  if (b.from_t2) {
     kit::Json th = kit::Json::array();
     th.push("t2").push(hex_double(b.theta_hi));
     j.set("theta", th);

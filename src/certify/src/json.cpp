@@ -88,8 +88,9 @@ std::string statement_superstable() {
          "'theorem2' is true when the conclusion and one of those pairs are proved, false otherwise.";
 }
 std::string statement_window() {
-  return "Superstability window in b at fixed a, q: for every b in [left_in, right_in], T(t2(b)) = t2 (proved over b-boxes, with "
-         "strict inequalities, so t2 is superstable at each such b), and T(t2) != t2 at b = left_out and b = right_out; so the "
+  return "Superstability window in b at fixed a, q: for every b in [left_in, right_in], T sends [t2(b), t2(b) + eps_b] to t2 "
+         "with eps_b > 0 (proved over b-boxes, eps_b at least min_eps_boxes), so t2 is superstable at each such b; and "
+         "T(t2) != t2 at b = left_out and b = right_out; so the "
          "maximal interval of b containing the window's middle on which T(t2) = t2 has its edges in [left_out, left_in] and "
          "[right_in, right_out]. At the middle, Theorem 2 holds with a certified eps.";
 }
@@ -193,6 +194,7 @@ Json to_json(double a, double q, const WindowProof& w) {
   add_verdict(j, w.verdict);
   j.set("float_estimate", Json::array().push(w.b_lo_float).push(w.b_hi_float));
   j.set("left_edge", Json::array().push(w.left_out).push(w.left_in));
+  j.set("min_eps_boxes", w.min_eps);
   j.set("right_edge", Json::array().push(w.right_in).push(w.right_out));
   j.set("boxes", w.boxes).set("T_at_left_out", ball_json(w.T_left_out, 12)).set("T_at_right_out", ball_json(w.T_right_out, 12));
   j.set("inside", to_json(a, 0.5 * (w.b_lo_float + w.b_hi_float), q, w.inside)).set("seconds", w.seconds);

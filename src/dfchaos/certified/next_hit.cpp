@@ -26,7 +26,6 @@ StartSet StartSet::balls(const Ball& lo, const Ball& hi) {
 }
 
 StartSet StartSet::from_t2(const ParameterBalls& m, double hi) {
-  if (!m.box().is_point()) throw std::invalid_argument("StartSet::from_t2: a point box is required");
   StartSet s;
   s.lo = m.t2;
   s.hi = Ball(hi);
@@ -40,7 +39,7 @@ StartSet StartSet::at_t2() {
   return s;
 }
 
-Ball StartSet::theta_min(const ParameterBalls& m) const { return kind == Kind::AtT2 ? m.t2_at_b_lo : lo; }
+Ball StartSet::theta_min(const ParameterBalls& m) const { return kind == Kind::AtT2 || lo_is_t2 ? m.t2_at_b_lo : lo; }
 Ball StartSet::theta_max(const ParameterBalls& m) const { return kind == Kind::AtT2 ? m.t2_at_b_hi : hi; }
 Ball StartSet::hull(const ParameterBalls& m) const { return kind == Kind::AtT2 ? m.t2 : Ball::hull(lo, hi); }
 
@@ -48,7 +47,8 @@ Outcome StartSet::valid(const ParameterBalls& m) const {
   if (kind == Kind::AtT2) return Outcome::ok();
   if (!le(lo, hi) && !lo_is_t2) return Outcome::fail("start set", "lo <= hi not proved");
   if (lo_is_t2) {
-    if (!m.box().is_point()) return Outcome::fail("start set", "theta = t2 at the lower end needs a point box");
+    // Every b has a start: t2(b) <= t2(b_hi) <= hi. The min corner is t2(b_lo), inside the ball lo.
+    if (!le(m.t2_at_b_hi, hi)) return Outcome::fail("start set", "t2(b) <= theta_hi not proved at b_hi");
   } else if (!le(m.t2_at_b_hi, lo)) {
     return Outcome::fail("start set", "t2 <= theta not proved at theta = " + lo.mid_str(17));
   }

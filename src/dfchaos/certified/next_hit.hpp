@@ -47,7 +47,7 @@ struct StartSet {
   Kind kind = Kind::Interval;  ///< which of the two
   Ball lo;                     ///< Interval: the lower end (exact, or the ball of t2 when lo_is_t2)
   Ball hi;                     ///< Interval: the upper end (exact)
-  bool lo_is_t2 = false;       ///< Interval: the lower end is exactly \f$t_2\f$ (point boxes only)
+  bool lo_is_t2 = false;       ///< Interval: the lower end is exactly \f$t_2(b)\f$ for each b (lo: the ball of \f$t_2\f$ over the box)
 
   /// \f$[lo, hi]\f$ with double ends.
   static StartSet interval(double lo, double hi);
@@ -55,7 +55,8 @@ struct StartSet {
   static StartSet point(double theta) { return interval(theta, theta); }
   /// \f$[lo, hi]\f$ with exact ball ends (their midpoints are used; radii must be 0).
   static StartSet balls(const Ball& lo, const Ball& hi);
-  /// \f$[t_2, hi]\f$ at a point box (the neighbourhood of Theorem 2).
+  /// \f$[t_2(b), hi]\f$ for every b of the box (the neighbourhood of Theorem 2): at a point box, or
+  /// over a box of b with \f$hi \ge t_2(b_{hi})\f$ (Theorem 2 at every b of a window).
   static StartSet from_t2(const ParameterBalls& m, double hi);
   /// \f$\{t_2(b)\}\f$, one start per b of the box (Section 8 as a function of b).
   static StartSet at_t2();

@@ -170,11 +170,20 @@ WindowProof prove_window(double a, double q, double b_lo, double b_hi, double re
     while (!stack.empty()) {
       const Item it = stack.back();
       stack.pop_back();
+      // T = t2 on [t2(b), t2(b_hi) + e] for every b of the box, with the largest e tried that is
+      // proved (from the middle's epsilon, halved): t2 is superstable at each b, with eps >= e.
       const ParameterBalls mb(ParameterBox{a, it.lo, it.hi, q, q});
-      MapStepProof t = certify_T(mb, StartSet::at_t2(), budget, nullptr, record);
+      MapStepProof t;
+      StartSet set;
+      for (double e = r.inside.eps; e > 1e-15 * r.inside.eps; e *= 0.25) {
+        set = StartSet::from_t2(mb, mb.t2_at_b_hi.upper() + e);
+        t = certify_T(mb, set, budget, nullptr, record);
+        if ((t.verdict && t.constant_t2) || budget.exhausted()) break;
+      }
       if (t.verdict && t.constant_t2) {
         ++boxes;
-        if (record) r.box_proofs.push_back(BallProof::of(StartSet::at_t2(), mb.box(), std::move(t)));
+        r.min_eps = boxes == 1 ? set.hi.mid() - mb.t2_at_b_hi.upper() : std::min(r.min_eps, set.hi.mid() - mb.t2_at_b_hi.upper());
+        if (record) r.box_proofs.push_back(BallProof::of(set, mb.box(), std::move(t)));
         continue;
       }
       const double m2 = 0.5 * (it.lo + it.hi);

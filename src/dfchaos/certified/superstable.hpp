@@ -59,9 +59,9 @@ int superstable_condition(const ParameterBalls& m, const MapStepProof& t);
 /// A superstability window in b (q fixed): the maximal interval W of b containing the middle of
 /// the floating estimate on which \f$T(t_2) = t_2\f$.
 ///
-/// Proof: b-boxes covering \f$[b^L_{in}, b^R_{in}]\f$, on each of which \f$T(t_2(b)) = t_2\f$ for every b
-/// (certify_T over the family \f$\theta = t_2(b)\f$; strict inequalities, so t2 is superstable at
-/// each b by Theorem 2's robustness), and \f$T(t_2) \ne t_2\f$ (certified, scenario A) at the outer
+/// Proof: b-boxes covering \f$[b^L_{in}, b^R_{in}]\f$, on each of which \f$T \equiv t_2\f$ on
+/// \f$[t_2(b), t_2(b_{hi}) + e]\f$ for every b of the box (certify_T over that start set, e > 0 halved
+/// until proved: t2 is superstable at each b, with \f$\varepsilon_b \ge e\f$), and \f$T(t_2) \ne t_2\f$ (certified, scenario A) at the outer
 /// points \f$b^L_{out} < b^L_{in}\f$ and \f$b^R_{out} > b^R_{in}\f$. Hence the edges of W lie in
 /// \f$[b^L_{out}, b^L_{in}]\f$ and \f$[b^R_{in}, b^R_{out}]\f$, whatever happens at them (a crossing of
 /// \f$t_2\f$ by \f$\theta_2(t_2)\f$, or the flight from \f$t_2\f$ grazing the delimiter at \f$t_3\f$).
@@ -77,6 +77,7 @@ struct WindowProof {
   Ball T_left_out;                        ///< T(t2) at left_out (certainly not t2)
   Ball T_right_out;                       ///< T(t2) at right_out (certainly not t2)
   int boxes = 0;                          ///< b-boxes of the cover of [left_in, right_in]
+  double min_eps = 0;                     ///< on each box, T = t2 on [t2(b), t2(b) + eps_b] with eps_b at least this
   double seconds = 0;                     ///< wall time
   // The witnesses, kept when asked (docs/certificates.md, statement window):
   std::vector<BallProof> outer;           ///< T at t2 at b = left_out and right_out (T != t2)
