@@ -530,6 +530,14 @@ struct BallWitness {
   double k = 0;
 };
 
+/// A number of whole turns k (JSON integer, |k| < 10^9; an unsigned JSON value is not wrapped).
+long long turn(const json& jk, const std::string& where) {
+  const bool small = jk.is_number_unsigned() ? jk.get<unsigned long long>() < 1000000000ULL
+                                             : jk.is_number_integer() && jk.get<long long>() > -1000000000LL;
+  if (!small) throw Malformed("'" + where + "' is not an integer of absolute value below 10^9");
+  return jk.get<long long>();
+}
+
 /// Reads a ball; `allow_none`: its case may be "none" (only the steps up to the first stop are
 /// checked, nothing about T is concluded; the erratum to Theorem 2).
 BallWitness read_ball(const json& j, const std::string& where, bool allow_none = false) {
@@ -554,11 +562,7 @@ BallWitness read_ball(const json& j, const std::string& where, bool allow_none =
     throw Malformed("'" + where + "case' is not \"AB\" or \"BC\"" + (allow_none ? " or \"none\"" : ""));
   w.ab = jc == "AB";
   w.none = jc == "none";
-  const json& jk = field(j, "k", where);
-  const bool small = jk.is_number_unsigned() ? jk.get<unsigned long long>() < 1000000000ULL
-                                             : jk.is_number_integer() && jk.get<long long>() > -1000000000LL;
-  if (!small) throw Malformed("'" + where + "k' is not an integer of absolute value below 10^9");
-  w.k = static_cast<double>(jk.get<long long>());
+  w.k = static_cast<double>(turn(field(j, "k", where), where + "k"));
   w.theta2 = j.contains("theta2");
   if (w.theta2 == j.contains("stop_arc")) throw Malformed("'" + where + "' has not exactly one of theta2 and stop_arc");
   if (w.theta2) {
@@ -599,8 +603,9 @@ Outcome check_ball(Steps& st, const Iv& A, const BallWitness& w, const std::stri
   if (ball.start == Start::FromT2) Thmin = t2(A, Blo);
   const Iv Th = hull(Thmin, Thmax);
   // 1. The start set: t2 <= theta < t3, so F(theta) <= 0 for every b <= b_hi, and with t > theta
-  // dG1/dtheta = -F(theta)(t - theta) >= 0, dG1/db = (t - theta)^2, d(dG1)/dtheta = -F(theta) >= 0,
-  // d(dG1)/db = 2(t - theta) > 0: G1 and dG1 are least at (theta_lo, b_lo), greatest at (theta_hi, b_hi).
+  // the partial derivatives dG1/dtheta = -F(theta)(t - theta) >= 0, dG1/db = (t - theta)^2, and of
+  // dG1 (= dG1/dt) d(dG1)/dtheta = -F(theta) >= 0, d(dG1)/db = 2(t - theta) > 0: G1 and dG1 are least
+  // at (theta_lo, b_lo), greatest at (theta_hi, b_hi).
   if (ball.start == Start::Interval)
     st.require(le(t2(A, Bhi), Thmin) && ball.th_lo <= ball.th_hi && lt(Thmax, t3(A, Bhi)),
                step("start set: t2(b_hi) <= theta_lo <= theta_hi < t3(b_hi)"));
@@ -796,9 +801,7 @@ Iv vartheta0_bracket(Steps& st, const json& w, const std::string& where) {
 Iv phase(Steps& st, const Outcome& o, const json& w, const std::string& where) {
   st.require(o.theta2, where + "at_t2 has theta2 (a bracketed stop)");
   const json& jk = field(w, "phase_turn", where);
-  if (!jk.is_number_integer() || jk.get<long long>() <= -1000000000LL || jk.get<long long>() >= 1000000000LL)
-    throw Malformed("'" + where + "phase_turn' is not an integer of absolute value below 10^9");
-  return hull(o.u_lo, o.u_hi) - 2.0 * pi() * Iv(static_cast<double>(jk.get<long long>()));
+  return hull(o.u_lo, o.u_hi) - 2.0 * pi() * Iv(static_cast<double>(turn(jk, where + "phase_turn")));
 }
 
 /// A ball ["t2", h] at the point (b, q), read from `j`: its outcome, after the ball's steps.
