@@ -159,9 +159,12 @@ plane-hires: deps configure
 # ---- reliability checks ----------------------------------------------------------------------
 
 # The sanitizer build leaves out the benchmarks (timings, not behaviour; `make bench` runs them and
-# test-clang compiles them): that keeps CI's rebuild shorter.
+# test-clang compiles them) and compiles at -O1 -g1 (the optimisation AddressSanitizer's authors
+# advise; line tables for its reports): on 2 cores 590 s instead of about 1300 s at -O2 -g, with the
+# same 264 tests in the same 380 s (measured). That keeps CI within its hour.
 test-sanitize: deps
-	@$(CMAKE) -S . -B $(BUILD)-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDFCHAOS_SANITIZE=ON -DDFCHAOS_BUILD_BENCH=OFF > /dev/null
+	@$(CMAKE) -S . -B $(BUILD)-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" \
+	  "-DCMAKE_C_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" -DDFCHAOS_SANITIZE=ON -DDFCHAOS_BUILD_BENCH=OFF > /dev/null
 	@$(CMAKE) --build $(BUILD)-sanitize -j $(JOBS)
 	@ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
 	  ctest --test-dir $(BUILD)-sanitize --output-on-failure -j $(JOBS) $(CHECK_CTEST_ARGS)
