@@ -39,6 +39,16 @@ kit::Json hex_array(std::initializer_list<double> xs) {
   return j;
 }
 
+/// `{"sub_boxes": [[b_lo, b_hi, q_lo, q_hi], ...]}`: the leaves of a Lemma 1 proof (the `lemma1`
+/// witnesses, alone or inside a covering's or Theorem 2's certificate).
+kit::Json lemma1_sub_boxes(const certified::Lemma1Proof& p) {
+  kit::Json boxes = kit::Json::array();
+  for (const certified::Lemma1SubBox& s : p.sub_boxes) boxes.push(hex_array({s.b_lo, s.b_hi, s.q_lo, s.q_hi}));
+  kit::Json j = kit::Json::object();
+  j.set("sub_boxes", boxes);
+  return j;
+}
+
 }  // namespace
 
 bool has_certificate(const std::string& what) {
@@ -136,11 +146,7 @@ kit::Json certificate_lemma1(double a, const Range& b, const Range& q, const cer
   par.set("b", exact_range(b));
   par.set("q", exact_range(q));
   j.set("parameters", par);
-  kit::Json boxes = kit::Json::array();
-  for (const certified::Lemma1SubBox& s : p.sub_boxes) boxes.push(hex_array({s.b_lo, s.b_hi, s.q_lo, s.q_hi}));
-  kit::Json w = kit::Json::object();
-  w.set("sub_boxes", boxes);
-  j.set("witnesses", w);
+  j.set("witnesses", lemma1_sub_boxes(p));
   return j;
 }
 
@@ -242,11 +248,7 @@ kit::Json vartheta0_bracket() {
 kit::Json lemma1_witness(double a, double b_lo, double b_hi, double q) {
   const certified::Lemma1Proof l = certified::certify_lemma1(certified::ParameterBalls(certified::ParameterBox{a, b_lo, b_hi, q, q}));
   if (!l.verdict.proved) throw std::logic_error("certificate: a ball needed Lemma 1, which is not proved over the whole range of b");
-  kit::Json boxes = kit::Json::array();
-  for (const certified::Lemma1SubBox& s : l.sub_boxes) boxes.push(hex_array({s.b_lo, s.b_hi, s.q_lo, s.q_hi}));
-  kit::Json j = kit::Json::object();
-  j.set("sub_boxes", boxes);
-  return j;
+  return lemma1_sub_boxes(l);
 }
 
 /// The witnesses of Theorem 2's conclusion at a point (statement superstable; also a window's middle).
@@ -340,11 +342,7 @@ kit::Json certificate_covering(const certified::CoveringProof& p, const std::str
   kit::Json w = kit::Json::object();
   if (p.J0.used_lemma1 || p.J1.used_lemma1) {
     if (!p.lemma1.verdict.proved) throw std::logic_error("certificate_covering: a ball needed Lemma 1, which is not proved over the whole box");
-    kit::Json boxes = kit::Json::array();
-    for (const certified::Lemma1SubBox& s : p.lemma1.sub_boxes) boxes.push(hex_array({s.b_lo, s.b_hi, s.q_lo, s.q_hi}));
-    kit::Json l = kit::Json::object();
-    l.set("sub_boxes", boxes);
-    w.set("lemma1", l);
+    w.set("lemma1", lemma1_sub_boxes(p.lemma1));
   }
   kit::Json segs = kit::Json::array();
   segs.push(segment(p.J0)).push(segment(p.J1));

@@ -15,19 +15,16 @@ namespace dfchaos::certified {
 
 namespace {
 
-/// The phase of a theta2 enclosure, reduced into [t1, t1 + 2 pi) by the turn of its midpoint.
-Ball phase_of(const ParameterBalls& m, const Ball& x) {
-  const long long k = static_cast<long long>(std::floor((x.mid() - m.t1.mid()) / (2 * M_PI)));
-  return x - Ball(static_cast<double>(k)) * m.two_pi;
+/// The turn k that reduces a theta2 enclosure x into [t1, t1 + 2 pi) (by its midpoint).
+long long phase_turn_of(const ParameterBalls& m, const Ball& x) {
+  return static_cast<long long>(std::floor((x.mid() - m.t1.mid()) / (2 * M_PI)));
 }
+
+/// The phase of a theta2 enclosure: x - 2 pi phase_turn_of(x).
+Ball phase_of(const ParameterBalls& m, const Ball& x) { return x - Ball(static_cast<double>(phase_turn_of(m, x))) * m.two_pi; }
 
 MapStepProof T_at_t2(const ParameterBalls& m, Budget& budget, bool record = false) {
   return certify_T(m, StartSet::from_t2(m, m.t2.upper()), budget, nullptr, record);
-}
-
-/// The turn k with which phase_of() reduces x.
-long long phase_turn_of(const ParameterBalls& m, const Ball& x) {
-  return static_cast<long long>(std::floor((x.mid() - m.t1.mid()) / (2 * M_PI)));
 }
 
 }  // namespace
