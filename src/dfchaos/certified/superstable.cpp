@@ -179,7 +179,8 @@ WindowProof prove_window(double a, double q, double b_lo, double b_hi, double re
       }
       if (t.verdict && t.constant_t2) {
         ++boxes;
-        r.min_eps = boxes == 1 ? set.hi.mid() - mb.t2_at_b_hi.upper() : std::min(r.min_eps, set.hi.mid() - mb.t2_at_b_hi.upper());
+        const double eps_box = (set.hi - mb.t2_at_b_hi).lower();  // <= h - t2(b) for every b of the box
+        r.min_eps = boxes == 1 ? eps_box : std::min(r.min_eps, eps_box);
         if (record) r.box_proofs.push_back(BallProof::of(set, mb.box(), std::move(t)));
         continue;
       }
