@@ -524,6 +524,7 @@ struct Outcome {
 /// is reported as such whichever step would fail first).
 struct BallWitness {
   Ball ball;
+  Num th_lo, th_hi;  // the start phases exactly (ball.th_lo, th_hi: the same as doubles, when they are)
   Num s0, t_lo, t_hi, u_lo, u_hi, tau, from;  // u_lo, u_hi: theta2; tau, from (unless impact): stop_arc
   std::vector<Piece> no_contact, simple_root, no_earlier_stop, simple_zero, no_stop_before_t3;
   bool ab = false, none = false, theta2 = false, from_impact = false;
@@ -539,18 +540,24 @@ long long turn(const json& jk, const std::string& where) {
 }
 
 /// Reads a ball; `allow_none`: its case may be "none" (only the steps up to the first stop are
-/// checked, nothing about T is concluded; the erratum to Theorem 2).
-BallWitness read_ball(const json& j, const std::string& where, bool allow_none = false) {
+/// checked, nothing about T is concluded; the erratum to Theorem 2); `long_theta`: its phases may be
+/// exact binary numbers that are not doubles (ball.th_lo, th_hi are then NaN: no cover of doubles).
+BallWitness read_ball(const json& j, const std::string& where, bool allow_none = false, bool long_theta = false) {
   BallWitness w;
   const std::vector<double> b = doubles(field(j, "b", where), 2, where + "b"), q = doubles(field(j, "q", where), 2, where + "q");
   const json& jth = field(j, "theta", where);
   w.ball = {0, 0, {b[0], b[1], q[0], q[1]}};
+  const auto phase = [&](const json& x, const std::string& wx, Num& n) {
+    n = exact(x, wx);
+    return long_theta ? NAN : exact_double(x, wx);
+  };
   if (jth.is_array() && jth.size() == 2 && jth[0] == "t2") {
     w.ball.start = Start::FromT2;
-    w.ball.th_hi = exact_double(jth[1], where + "theta[1]");
+    w.ball.th_hi = phase(jth[1], where + "theta[1]", w.th_hi);
   } else {
-    const std::vector<double> th = doubles(jth, 2, where + "theta");
-    w.ball.th_lo = th[0], w.ball.th_hi = th[1];
+    if (!jth.is_array() || jth.size() != 2) throw Malformed("'" + where + "theta' is not an array of 2 numbers");
+    w.ball.th_lo = phase(jth[0], where + "theta[0]", w.th_lo);
+    w.ball.th_hi = phase(jth[1], where + "theta[1]", w.th_hi);
   }
   const json& jt = field(j, "T1", where);
   const std::string wt = where + "T1.";
@@ -599,7 +606,7 @@ Outcome check_ball(Steps& st, const Iv& A, const BallWitness& w, const std::stri
   // From t2 exactly, [t2(b), th_hi]: the least start t2(b) is least at b_lo, and along the family
   // theta = t2(b) the total b-derivatives of G1 and dG1 are those at fixed theta, as F(t2) = 0
   // removes the theta terms; so the min corner is (t2(b_lo), b_lo).
-  Iv Thmin(ball.th_lo), Thmax(ball.th_hi);
+  Iv Thmin(w.th_lo), Thmax(w.th_hi);
   if (ball.start == Start::FromT2) Thmin = t2(A, Blo);
   const Iv Th = hull(Thmin, Thmax);
   // 1. The start set: t2 <= theta < t3, so F(theta) <= 0 for every b <= b_hi, and with t > theta
@@ -607,7 +614,7 @@ Outcome check_ball(Steps& st, const Iv& A, const BallWitness& w, const std::stri
   // dG1 (= dG1/dt) d(dG1)/dtheta = -F(theta) >= 0, d(dG1)/db = 2(t - theta) > 0: G1 and dG1 are least
   // at (theta_lo, b_lo), greatest at (theta_hi, b_hi).
   if (ball.start == Start::Interval)
-    st.require(le(t2(A, Bhi), Thmin) && ball.th_lo <= ball.th_hi && lt(Thmax, t3(A, Bhi)),
+    st.require(le(t2(A, Bhi), Thmin) && le(Thmin, Thmax) && lt(Thmax, t3(A, Bhi)),
                step("start set: t2(b_hi) <= theta_lo <= theta_hi < t3(b_hi)"));
   if (ball.start == Start::FromT2)  // [t2(b), th_hi] for each b: the min corner t2(b_lo) by the family's monotonicity
     st.require(le(t2(A, Bhi), Thmax) && lt(Thmax, t3(A, Bhi)), step("start set: t2(b_hi) <= theta_hi < t3(b_hi)"));
