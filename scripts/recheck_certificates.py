@@ -39,7 +39,8 @@ def exact(x):
 def bind(path, cert, claim, part):
     """Checks that the certificate (already accepted by the checker) proves what the claim states:
     the claim holds, and the certificate's claim text, statement parameters and decisive values (b_low,
-    the rounded doubles of vartheta0, the segments J0, J1 of a covering) are
+    the rounded doubles of vartheta0, the segments J0, J1 of a covering, the periods and words of
+    periodic orbits) are
     those of the claim's record (for a claim resting on several proofs, the record of its PART).
     Returns None, or what differs."""
     if claim["verdict"] != "holds":
@@ -56,7 +57,10 @@ def bind(path, cert, claim, part):
         rec = ev
     # A refutation (not_superstable) or an erratum's counterexample is recorded as a claim that holds
     # while the proof of the paper's statement failed; every other proof must be recorded as proved.
-    if cert.get("statement") not in ("not_superstable", "theorem2_counterexample") and not rec.get("proved"):
+    if cert.get("statement") == "periodic":  # one record per orbit, each proved
+        if not rec.get("orbits") or not all(o.get("proved") for o in rec["orbits"]):
+            return "the claim's record of an orbit is not proved"
+    elif cert.get("statement") not in ("not_superstable", "theorem2_counterexample") and not rec.get("proved"):
         return "the claim's record of this proof is not proved"
     if cert.get("claim") not in (rec.get("statement"), claim["statement"]):
         return "its claim text is neither the claim's statement nor its record's"
@@ -77,6 +81,11 @@ def bind(path, cert, claim, part):
                 return f"its {name} is not the claim's {name}"
         if len(segs) != 2:
             return "it does not hold two segments"
+    if cert.get("statement") == "periodic":  # the same orbits, through the same J0, J1 as the claim's records
+        got = [(o["period"], o["word"], [exact(x) for x in w["J0"]], [exact(x) for x in w["J1"]]) for o in w.get("orbits", [])]
+        want = [(o["period"], o["itinerary"], [float(x) for x in o["J0"]], [float(x) for x in o["J1"]]) for o in rec["orbits"]]
+        if got != want:
+            return "its orbits (periods, words, J0, J1) are not the claim's"
     if cert.get("statement") == "window":
         got = [exact(w[k]) for k in ("left_out", "left_in", "right_in", "right_out")]
         if got != [float(x) for x in rec.get("left_edge", []) + rec.get("right_edge", [])]:

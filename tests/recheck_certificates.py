@@ -28,6 +28,8 @@ REQUESTS = {
     "superstable": ["superstable", "--a", "1", "--b", "0.0641", "--q", "0.85"],
     # that window, with its edges bracketed (the floating estimate of certified_claims)
     "window": ["superstable", "--a", "1", "--b", "0.0641", "--q", "0.85", "--window", "0.064075562769072836:0.064187276762950898"],
+    # Sections 6-7 at point A: the orbit of period 3, itinerary (001)^infinity, in three boxes
+    "periodic": ["periodic", "--a", "1", "--b", "0.001", "--q", "0.85", "--period", "3"],
     # a box of certified_region, re-proved with the J0, J1 its row records
     "covering_box": ["covering", "--a", "1", "--b", "0.0019697602976329739:0.00196980455453853",
                      "--q", "0.80000000000000004:0.81000000000000005", "--J0", "3.2595461317302936:3.3248980967076651",
@@ -234,6 +236,27 @@ def main():
                     sys.exit("FAIL: a window box does not start at t2")
                 box["theta"][1] = c["witnesses"]["outer"][0]["theta"][1]  # the double above t2 at left_out < b
             recheck(checker, mutate(path, bad, cut), 1, "a window box without a neighbourhood of t2")
+        elif case == "rejects_periodic_period":  # the period changed to 4 (word 0001): three boxes are not four points
+            path, _ = write_certificate(cli, "periodic", d)
+
+            def longer(c):
+                c["witnesses"]["orbits"][0]["period"] = 4
+                c["witnesses"]["orbits"][0]["word"] = "0001"
+            recheck(checker, mutate(path, bad, longer), 1, "the period of an orbit changed")
+        elif case == "rejects_periodic_shortened":  # the middle box deleted, period 2 (word 01): T(X_0) does not cover X_1
+            path, _ = write_certificate(cli, "periodic", d)
+
+            def shorter(c):
+                o = c["witnesses"]["orbits"][0]
+                del o["boxes"][1]
+                o["period"], o["word"] = 2, "01"
+            recheck(checker, mutate(path, bad, shorter), 1, "an orbit shortened to period 2")
+        elif case == "rejects_periodic_overlap":  # J1 made a copy of J0: the itinerary no longer separates the points
+            path, _ = write_certificate(cli, "periodic", d)
+
+            def same(c):
+                c["witnesses"]["J1"] = list(c["witnesses"]["J0"])
+            recheck(checker, mutate(path, bad, same), 1, "J0 and J1 overlap")
         elif case == "rejects_truncated":
             path, _ = write_certificate(cli, "lemma1_point", d)
             with open(path, "rb") as f:
@@ -275,11 +298,11 @@ def main():
                 sys.exit(f"FAIL: --certificate '': exit {proc.returncode}, stderr {proc.stderr!r}")
             print(f"ok:   --certificate '': exit 2: {proc.stderr.strip()}")
             # a statement without a certificate format: bad input before any proof
-            proc = subprocess.run([cli, "certify", "periodic", "--b", "0.001", "--q", "0.85", "--period", "2", "--certificate",
+            proc = subprocess.run([cli, "certify", "discontinuities", "--b", "0.01", "--certificate",
                                    os.path.join(d, "c.json")], capture_output=True, text=True)
             if proc.returncode != 2 or proc.stdout or os.path.exists(os.path.join(d, "c.json")) or "certificate" not in proc.stderr:
-                sys.exit(f"FAIL: periodic --certificate: exit {proc.returncode}, stderr {proc.stderr!r}")
-            print(f"ok:   periodic --certificate: exit 2: {proc.stderr.strip()}")
+                sys.exit(f"FAIL: discontinuities --certificate: exit {proc.returncode}, stderr {proc.stderr!r}")
+            print(f"ok:   discontinuities --certificate: exit 2: {proc.stderr.strip()}")
             # a statement not proved writes no certificate (exit 1)
             target = os.path.join(d, "not-proved.json")
             proc = subprocess.run([cli, "certify", "lemma1", "--b", "0.05", "--q", "0.73", "--certificate", target], capture_output=True, text=True)

@@ -964,6 +964,67 @@ long check_theorem2_counterexample(const json& c) {
   return st.n;
 }
 
+/// A ball of a periodic certificate at the point (b, q) whose phases are exactly [lo, hi]: T is
+/// continuous on it and, with the theta2 bracket above t2 + 2 pi k (case AB), T = theta2 - 2 pi k
+/// lies in the bracket; returns that enclosure of T.
+Iv T_on(Steps& st, const Iv& A, const json& j, double b, double q, const Num& lo, const Num& hi, const std::string& who) {
+  const BallWitness w = read_ball(j, who + ".", false, true);
+  st.require(w.ball.start == Start::Interval && mpfr_equal_p(w.th_lo.x, lo.x) && mpfr_equal_p(w.th_hi.x, hi.x), who + ": its phases are the set named");
+  st.require(w.ball.box.b_lo == b && w.ball.box.b_hi == b && w.ball.box.q_lo == q && w.ball.box.q_hi == q, who + ": at the parameter point");
+  const Outcome o = check_ball(st, A, w, who);
+  st.require(o.ab && o.theta2, who + ": case AB with a theta2 bracket");
+  const Iv T = hull(o.u_lo, o.u_hi) - o.two_pi_k;
+  st.require(lt(t2(A, Iv(b)), T), who + ": u_lo - 2 pi k > t2, so T = theta2 - 2 pi k");
+  return T;
+}
+
+/// Sections 6-7: for each orbit, boxes X_0..X_(m-1) with X_j inside J_(w_j) (J0 < J1 disjoint, w =
+/// 0^(m-1)1), T continuous on X_j and T at the ends of X_j on opposite sides outside X_(j+1): then
+/// T(X_j) contains X_(j+1) (intermediate values), and going back along the cycle a point x of X_0 has
+/// T^j x in X_j and T^m x = x; its itinerary is w^infinity, of least period m (X_(m-1) lies in J1, the
+/// other boxes in J0).
+long check_periodic(const json& c) {
+  Steps st;
+  const auto [a, b, q] = read_point(c);
+  const json& w = field(c, "witnesses", "");
+  const Iv A = standing_box(st, a, {b, b, q, q});
+  const std::vector<double> J0 = doubles(field(w, "J0", "witnesses."), 2, "witnesses.J0"), J1 = doubles(field(w, "J1", "witnesses."), 2, "witnesses.J1");
+  st.require(J0[0] <= J0[1] && J0[1] < J1[0] && J1[0] <= J1[1], "J0 and J1 are segments, J0 left of J1 (disjoint)");
+  const json& orbits = field(w, "orbits", "witnesses.");
+  if (!orbits.is_array() || orbits.empty()) throw Malformed("'witnesses.orbits' is not a non-empty array");
+  for (std::size_t i = 0; i < orbits.size(); ++i) {
+    const std::string wo = "witnesses.orbits[" + std::to_string(i) + "].";
+    const json& jm = field(orbits[i], "period", wo);
+    if (!jm.is_number_integer() || jm.get<long long>() < 1 || jm.get<long long>() > 64) throw Malformed("'" + wo + "period' is not an integer in 1..64");
+    const std::size_t m = jm.get<std::size_t>();
+    const json& word = field(orbits[i], "word", wo), &boxes = field(orbits[i], "boxes", wo);
+    if (!word.is_string() || !boxes.is_array()) throw Malformed("'" + wo + "' has no word string or boxes array");
+    st.require(word == std::string(m - 1, '0') + "1", wo + "word is 0^(m-1)1 with m = period");
+    st.require(boxes.size() == m, wo + "boxes: one per point of the orbit (m of them)");
+    std::vector<Num> lo(m), hi(m);
+    std::vector<Iv> T_lo(m), T_hi(m);
+    for (std::size_t j = 0; j < m; ++j) {
+      const std::string wx = wo + "boxes[" + std::to_string(j) + "]";
+      const json& X = field(boxes[j], "X", wx + ".");
+      if (!X.is_array() || X.size() != 2) throw Malformed("'" + wx + ".X' is not [lo, hi]");
+      lo[j] = exact(X[0], wx + ".X[0]"), hi[j] = exact(X[1], wx + ".X[1]");
+      const std::vector<double>& Jw = j + 1 == m ? J1 : J0;
+      st.require(mpfr_cmp(lo[j].x, hi[j].x) < 0 && mpfr_cmp_d(lo[j].x, Jw[0]) >= 0 && mpfr_cmp_d(hi[j].x, Jw[1]) <= 0,
+                 wx + ": lo < hi, inside J" + word.get<std::string>()[j]);
+      T_on(st, A, field(boxes[j], "on", wx + "."), b, q, lo[j], hi[j], wx + ".on");
+      T_lo[j] = T_on(st, A, field(boxes[j], "at_lo", wx + "."), b, q, lo[j], lo[j], wx + ".at_lo");
+      T_hi[j] = T_on(st, A, field(boxes[j], "at_hi", wx + "."), b, q, hi[j], hi[j], wx + ".at_hi");
+    }
+    for (std::size_t j = 0; j < m; ++j) {
+      const std::size_t n = (j + 1) % m;
+      const Iv L(lo[n]), H(hi[n]);
+      st.require((lt(T_lo[j], L) && lt(H, T_hi[j])) || (lt(H, T_lo[j]) && lt(T_hi[j], L)),
+                 wo + "boxes[" + std::to_string(j) + "]: T at its ends lies on opposite sides outside box " + std::to_string(n));
+    }
+  }
+  return st.n;
+}
+
 /// Checks one file; returns its exit status after printing its line.
 int check_file(const std::string& path) {
   std::string statement = "?", what;
@@ -989,13 +1050,14 @@ int check_file(const std::string& path) {
     else if (statement == "lemma1") steps = check_lemma1(c);
     else if (statement == "b0") steps = check_b0(c);
     else if (statement == "covering") steps = check_covering(c);
+    else if (statement == "periodic") steps = check_periodic(c);
     else if (statement == "superstable") steps = check_superstable(c, what);
     else if (statement == "not_superstable") steps = check_not_superstable(c);
     else if (statement == "window") steps = check_window(c);
     else if (statement == "theorem2_counterexample") steps = check_theorem2_counterexample(c);
     else
       throw Malformed("unknown statement '" + statement +
-                      "' (this checker reads vartheta0, lemma1, b0, covering, superstable, not_superstable, window, theorem2_counterexample)");
+                      "' (this checker reads vartheta0, lemma1, b0, covering, periodic, superstable, not_superstable, window, theorem2_counterexample)");
     std::printf("OK %s: %s, %ld steps re-verified%s\n", path.c_str(), statement.c_str(), steps, what.empty() ? "" : ("; " + what).c_str());
     return 0;
   } catch (const Failed& e) {

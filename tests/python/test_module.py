@@ -296,9 +296,10 @@ def test_certify_writes_the_certificate_of_the_cli(cli, tmp_path):
     checker = os.path.join(os.path.dirname(cli.path), "dfchaos-recheck")
     proc = subprocess.run([checker, str(mine)], capture_output=True, text=True)
     assert proc.returncode == 0 and proc.stdout.startswith("OK "), proc.stdout + proc.stderr
-    # the covering (Lemma 4) and Theorem 2's conclusion, likewise
+    # the covering (Lemma 4), Theorem 2's conclusion and a periodic orbit (Sections 6-7), likewise
     for what, args, kw in (("covering", ["--b", "0.001", "--q", "0.85"], dict(b=0.001, q=0.85)),
-                           ("superstable", ["--b", "0.0641", "--q", "0.85"], dict(b=0.0641, q=0.85))):
+                           ("superstable", ["--b", "0.0641", "--q", "0.85"], dict(b=0.0641, q=0.85)),
+                           ("periodic", ["--b", "0.001", "--q", "0.85", "--period", "3"], dict(b=0.001, q=0.85, period=3))):
         mine, theirs = tmp_path / f"py-{what}.json", tmp_path / f"cli-{what}.json"
         dfchaos.certify(what, certificate=str(mine), **kw)
         rc, out, err = cli.run("certify", what, *args, "--certificate", str(theirs))
@@ -312,7 +313,7 @@ def test_certify_writes_the_certificate_of_the_cli(cli, tmp_path):
 def test_certify_certificate_refusals(tmp_path):
     """No certificate for a statement without a format, none for a statement not proved, OSError for a bad path."""
     with pytest.raises(dfchaos.InvalidParameter, match="certificate"):
-        dfchaos.certify("periodic", b=0.001, q=0.85, period=2, certificate=str(tmp_path / "c.json"))
+        dfchaos.certify("discontinuities", b=0.01, certificate=str(tmp_path / "c.json"))
     rec = dfchaos.certify("lemma1", b=0.05, q=0.73, certificate=str(tmp_path / "c.json"))
     assert rec["proved"] is False and rec["certificate"]["written"] is False
     with pytest.raises(dfchaos.InvalidParameter, match="certificate"):

@@ -6,8 +6,8 @@
 /// numbers (hexadecimal floating-point strings such as `"0x1.0624dd2f1a9fcp-10"`, which denote a
 /// binary number exactly, with a decimal beside them for humans) and every witness of the proof.
 /// The format, statement by statement, and what the checker does with it: docs/certificates.md.
-/// Statements with a certificate so far: vartheta0, lemma1, b0, covering, superstable (with or without
-/// a window), and in the experiments not_superstable and theorem2_counterexample.
+/// Statements with a certificate so far: vartheta0, lemma1, b0, covering, periodic, superstable (with or
+/// without a window), and in the experiments not_superstable and theorem2_counterexample.
 #pragma once
 
 #include <cstddef>
@@ -18,6 +18,7 @@
 #include "certify/certify.hpp"
 #include "dfchaos/certified/ball.hpp"
 #include "dfchaos/certified/covering.hpp"
+#include "dfchaos/certified/periodic.hpp"
 #include "dfchaos/certified/progression.hpp"
 #include "dfchaos/certified/superstable.hpp"
 #include "dfchaos/certified/vartheta0.hpp"
@@ -30,10 +31,10 @@ inline constexpr const char* kCertificateFormat = "dfchaos-certificate";
 /// The format version (`"version"`); a checker refuses any other.
 inline constexpr int kCertificateVersion = 1;
 
-/// Whether `dfchaos certify what` can write a certificate (vartheta0, lemma1, b0, covering, superstable).
+/// Whether `dfchaos certify what` can write a certificate (vartheta0, lemma1, b0, covering, periodic, superstable).
 bool has_certificate(const std::string& what);
 /// The statements with a certificate format, in words (for messages).
-inline constexpr const char* kCertificateStatements = "vartheta0, lemma1, b0, covering or superstable";
+inline constexpr const char* kCertificateStatements = "vartheta0, lemma1, b0, covering, periodic or superstable";
 
 /// The double x as a C99 hexadecimal floating-point string (`%a`: exactly x, e.g. "0x1p+0").
 std::string hex_double(double x);
@@ -69,6 +70,13 @@ kit::Json certificate_b0(double a, double q, const certified::Lemma1Bound& p, co
 /// @throws std::logic_error if it was not, or if a witness is missing (a ball needed Lemma 1 and
 /// p.lemma1 is not proved).
 kit::Json certificate_covering(const certified::CoveringProof& p, const std::string& claim);
+
+/// The certificate of periodic orbits at a parameter point (statement periodic): the covering's
+/// segments J0, J1 and, per orbit of minimal period m with itinerary \f$(0^{m-1}1)^\infty\f$, its boxes
+/// \f$X_j\f$ with the balls of T on each box and at its two ends (the covering relations
+/// \f$T(X_j) \supseteq X_{j+1}\f$, periodic.hpp). Each orbit must be proved with PeriodicOptions::record.
+/// @throws std::logic_error otherwise (the reason named).
+kit::Json certificate_periodic(const certified::CoveringProof& c, const std::vector<certified::PeriodicProof>& orbits, const std::string& claim);
 
 /// The certificate of Theorem 2's conclusion at (a, b, q) (statement superstable): T = t2 on
 /// [t2, theta_end] by closed balls from t2, the condition (21) or (22) from theta2(t2), and the

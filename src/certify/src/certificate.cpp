@@ -52,7 +52,7 @@ kit::Json lemma1_sub_boxes(const certified::Lemma1Proof& p) {
 }  // namespace
 
 bool has_certificate(const std::string& what) {
-  return what == "vartheta0" || what == "lemma1" || what == "b0" || what == "covering" || what == "superstable";
+  return what == "vartheta0" || what == "lemma1" || what == "b0" || what == "covering" || what == "periodic" || what == "superstable";
 }
 
 std::string hex_double(double x) {
@@ -189,10 +189,10 @@ kit::Json ball(const certified::BallProof& b) {
   if (b.at_t2) throw std::logic_error("certificate: the start set theta = t2(b) has no format");
   if (b.from_t2) {
     kit::Json th = kit::Json::array();
-    th.push("t2").push(hex_double(b.theta_hi));
+    th.push("t2").push(hex_exact(b.theta_hi));
     j.set("theta", th);
   } else {
-    j.set("theta", hex_array({b.theta_lo, b.theta_hi}));
+    j.set("theta", kit::Json::array().push(hex_exact(b.theta_lo)).push(hex_exact(b.theta_hi)));
   }
   j.set("b", hex_array({b.box.b_lo, b.box.b_hi}));
   j.set("q", hex_array({b.box.q_lo, b.box.q_hi}));
@@ -265,7 +265,7 @@ kit::Json superstable_witnesses(double a, double b, double q, const certified::S
   w.set("phase_turn", p.phase_turn);
   w.set("condition", static_cast<long long>(p.condition));
   double end = 0;
-  for (const certified::BallProof& b : p.cover) end = std::max(end, b.theta_hi);
+  for (const certified::BallProof& b : p.cover) end = std::max(end, b.theta_hi.mid());  // a double (the balls of the cover have double ends)
   w.set("theta_end", hex_double(end));
   w.set("cover", balls(p.cover));
   return w;
@@ -347,6 +347,34 @@ kit::Json certificate_covering(const certified::CoveringProof& p, const std::str
   kit::Json segs = kit::Json::array();
   segs.push(segment(p.J0)).push(segment(p.J1));
   w.set("segments", segs);
+  j.set("witnesses", w);
+  return j;
+}
+
+kit::Json certificate_periodic(const certified::CoveringProof& c, const std::vector<certified::PeriodicProof>& orbits, const std::string& claim) {
+  if (!c.verdict.proved || !c.box.is_point()) throw std::logic_error("certificate_periodic: the covering is not proved at a point");
+  kit::Json j = header("periodic", claim);
+  j.set("parameters", point_parameters(c.box.a, c.box.b_lo, c.box.q_lo));
+  kit::Json w = kit::Json::object();
+  w.set("J0", hex_array({c.J0.lo, c.J0.hi})).set("J1", hex_array({c.J1.lo, c.J1.hi}));
+  kit::Json all = kit::Json::array();
+  for (const certified::PeriodicProof& p : orbits) {
+    if (!p.verdict.proved) throw std::logic_error("certificate_periodic: the orbit of period " + std::to_string(p.period) + " is not proved");
+    if (p.boxes.size() != static_cast<std::size_t>(p.period))
+      throw std::logic_error("certificate_periodic: period " + std::to_string(p.period) + ": " +
+                             (p.unrecorded.empty() ? "not recorded (PeriodicOptions::record)" : p.unrecorded));
+    kit::Json boxes = kit::Json::array();
+    for (const certified::OrbitBoxProof& x : p.boxes) {
+      kit::Json e = kit::Json::object();
+      e.set("X", kit::Json::array().push(hex_exact(x.lo)).push(hex_exact(x.hi)));
+      e.set("on", ball(x.on)).set("at_lo", ball(x.at_lo)).set("at_hi", ball(x.at_hi));
+      boxes.push(e);
+    }
+    kit::Json o = kit::Json::object();
+    o.set("period", static_cast<long long>(p.period)).set("word", p.word).set("boxes", boxes);
+    all.push(o);
+  }
+  w.set("orbits", all);
   j.set("witnesses", w);
   return j;
 }

@@ -141,8 +141,18 @@ Result certify(const Request& r) {
     const ParameterBox box = box_from(r, true, false);
     if (r.period < 1 || r.period > 64) throw InvalidParameter("period", "an integer 1 <= m <= 64", r.period);
     const CoveringProof c = prove_covering(box);
-    const PeriodicProof p = prove_periodic(c, r.period);
-    return {p.verdict.proved, to_json(c, p)};
+    PeriodicOptions opt;
+    opt.record = r.certificate;
+    const PeriodicProof p = prove_periodic(c, r.period, opt);
+    Result res{p.verdict.proved, to_json(c, p)};
+    if (res.proved && r.certificate) {
+      try {
+        res.certificate = certificate_periodic(c, {p}, claim_of(res));
+      } catch (const std::logic_error& e) {
+        res.no_certificate = e.what();
+      }
+    }
+    return res;
   }
   // superstable
   const ParameterBox box = box_from(r, true, false);

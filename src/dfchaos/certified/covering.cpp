@@ -304,7 +304,7 @@ SegmentProof prove_segment(const ParameterBalls& m, const Candidate& c, const Co
                          if (!le(1.5 * mm.pi, top.T)) { why = Outcome::fail("T >= 3pi/2", "T = " + top.T.str(12)); return false; }
                          r.T_top = first_top ? top.T : Ball::hull(r.T_top, top.T);
                          first_top = false;
-                         if (opt.record) r.top_balls.push_back({t0, t1, mm.box(), std::move(top)});
+                         if (opt.record) r.top_balls.push_back(BallProof::of(StartSet::interval(t0, t1), mm.box(), std::move(top)));
                          return true;
                        });
   if (!v) { r.verdict = v; return r; }
@@ -317,7 +317,7 @@ SegmentProof prove_segment(const ParameterBalls& m, const Candidate& c, const Co
                  r.theta2_t2end = first_bot ? bot.theta2_phase : Ball::hull(r.theta2_t2end, bot.theta2_phase);
                  first_bot = false;
                  r.used_lemma1 = r.used_lemma1 || bot.used_lemma1;
-                 if (opt.record) r.t2_balls.push_back({t0, t1, mm.box(), std::move(bot)});
+                 if (opt.record) r.t2_balls.push_back(BallProof::of(StartSet::interval(t0, t1), mm.box(), std::move(bot)));
                  return true;
                });
   if (!v) { r.verdict = v; return r; }
@@ -329,7 +329,7 @@ SegmentProof prove_segment(const ParameterBalls& m, const Candidate& c, const Co
                  r.tests += t.tests;
                  if (!t.verdict) { why = t.verdict; return false; }
                  r.used_lemma1 = r.used_lemma1 || t.used_lemma1;
-                 if (opt.record) r.cover_balls.push_back({t0, t1, mm.box(), std::move(t)});
+                 if (opt.record) r.cover_balls.push_back(BallProof::of(StartSet::interval(t0, t1), mm.box(), std::move(t)));
                  return true;
                });
   r.balls -= end_balls;

@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <optional>
 
 #include "dfchaos/bisect.hpp"
 #include "dfchaos/certified/oracle.hpp"
@@ -57,6 +58,53 @@ PointEval eval_T(const ParameterBalls& m, const Ball& lo, const Ball& hi) {
   e.T = t.T;
   e.ok = true;
   return e;
+}
+
+/// x rounded to `bits` bits, down or up (an exact ball).
+Ball rounded(const Ball& x, long bits, bool up) {
+  Ball r;
+  arf_set_round(arb_midref(r.get()), arb_midref(x.get()), bits, up ? ARF_RND_CEIL : ARF_RND_FLOOR);
+  return r;
+}
+
+/// T on `set` with its witnesses, in scenario A (case AB with a theta2 bracket above t2): the
+/// bracket of T, \f$[u_{lo}, u_{hi}] - 2\pi k\f$, or nothing.
+std::optional<Ball> recorded_T(const ParameterBalls& m, const StartSet& set, BallProof& proof) {
+  Budget budget;
+  MapStepProof t = certify_T(m, set, budget, nullptr, true);
+  if (!t.verdict || t.t_case != TCase::ScenarioAB || !t.theta2.verdict) return std::nullopt;
+  const Ball T = Ball::hull(t.theta2.u_lo, t.theta2.u_hi) - Ball::pi() * Ball(2 * static_cast<long>(t.turn));
+  if (!lt(m.t2, T)) return std::nullopt;
+  proof = BallProof::of(set, m.box(), std::move(t));
+  return T;
+}
+
+/// The covering relations of the orbit boxes X (PeriodicProof::boxes), or a failure naming the box.
+Outcome covering_relations(const ParameterBalls& m, const std::vector<Ball>& X, std::vector<OrbitBoxProof>& out) {
+  const std::size_t n = X.size();
+  std::vector<OrbitBoxProof> boxes(n);
+  std::vector<Ball> T_lo(n), T_hi(n);
+  constexpr long kBits = 128;  // the ends as exact numbers of 128 bits (the checker reads 256)
+  for (std::size_t j = 0; j < n; ++j) {
+    OrbitBoxProof& x = boxes[j];
+    x.lo = rounded(X[j].lower_ball(), kBits, false);
+    x.hi = rounded(X[j].upper_ball(), kBits, true);
+    const std::string name = "X_" + std::to_string(j);
+    if (!recorded_T(m, StartSet::balls(x.lo, x.hi), x.on))
+      return Outcome::fail("periodic: certificate", name + ": T not proved in scenario A on the box");
+    const auto lo = recorded_T(m, StartSet::balls(x.lo, x.lo), x.at_lo), hi = recorded_T(m, StartSet::balls(x.hi, x.hi), x.at_hi);
+    if (!lo || !hi) return Outcome::fail("periodic: certificate", name + ": T not proved in scenario A at an end");
+    T_lo[j] = *lo, T_hi[j] = *hi;
+  }
+  for (std::size_t j = 0; j < n; ++j) {
+    const OrbitBoxProof& next = boxes[(j + 1) % n];
+    const bool up = lt(T_lo[j], next.lo) && lt(next.hi, T_hi[j]), down = lt(next.hi, T_lo[j]) && lt(T_hi[j], next.lo);
+    if (!up && !down)
+      return Outcome::fail("periodic: certificate", "T(X_" + std::to_string(j) + ") does not cover X_" + std::to_string((j + 1) % n) +
+                                                        " by its ends");
+  }
+  out = std::move(boxes);
+  return Outcome::ok();
 }
 
 }  // namespace
@@ -175,6 +223,10 @@ PeriodicProof prove_periodic(const CoveringProof& cov, int period, const Periodi
     logm = logm + l;
   }
   r.log_multiplier = logm;
+  if (opt.record) {  // the proof stands without them; a certificate is then not possible
+    const Outcome rel = covering_relations(m, X, r.boxes);
+    if (!rel) r.unrecorded = rel.describe();
+  }
   return finish(Outcome::ok());
 }
 

@@ -18,12 +18,20 @@
 /// \f$K = \hat x - C F(\hat x) + (I - C\,DF(X))(X - \hat x)\f$, \f$C \approx DF(\hat x)^{-1}\f$, inside the
 /// interior of X proves a unique zero of F in X. With \f$X_j \subset J_{w_j}\f$ this is the periodic
 /// orbit of itinerary \f$w^\infty\f$, enclosed to about \f$10^{-20}\f$.
+///
+/// **The certificate's form** (PeriodicOptions::record). A checker without matrices can verify the
+/// same enclosure by covering relations: T continuous on each \f$X_j = [l_j, h_j]\f$ with \f$T(l_j)\f$
+/// and \f$T(h_j)\f$ on opposite sides outside \f$X_{j+1}\f$ gives \f$T(X_j) \supseteq X_{j+1}\f$, and a
+/// cycle of such relations holds a point with \f$T^j x \in X_j\f$, \f$T^m x = x\f$ (intermediate values,
+/// going back along the cycle). As \f$|T'| \gg 1\f$ on these orbits, the Krawczyk boxes satisfy it; the
+/// prover checks the relations on the recorded brackets before recording.
 #pragma once
 
 #include <string>
 #include <vector>
 
 #include "dfchaos/certified/covering.hpp"
+#include "dfchaos/certified/return_map.hpp"
 
 namespace dfchaos::certified {
 
@@ -31,6 +39,16 @@ namespace dfchaos::certified {
 struct PeriodicOptions {
   double radius = 1e-22;  ///< half-width of the Krawczyk boxes \f$X_j\f$ (relative to 1)
   int newton_steps = 6;   ///< Newton refinements of the orbit before the Krawczyk test
+  bool record = false;    ///< keep the witnesses of the covering relations (for a certificate)
+};
+
+/// The witnesses of one box \f$X_j = [lo, hi]\f$ of an orbit (PeriodicOptions::record): T on the box and
+/// at its two ends, each in scenario A with a \f$\theta_2\f$ bracket, the ends mapped to opposite sides
+/// outside \f$X_{j+1}\f$ (checked on those brackets).
+struct OrbitBoxProof {
+  Ball lo, hi;             ///< the ends of \f$X_j\f$ (exact)
+  BallProof on;            ///< T on \f$[lo, hi]\f$ (continuous)
+  BallProof at_lo, at_hi;  ///< T at lo and at hi
 };
 
 /// A periodic orbit of T with itinerary \f$(0^{m-1}1)^\infty\f$.
@@ -41,6 +59,8 @@ struct PeriodicProof {
   std::string word;              ///< one period of the itinerary, e.g. "0001"
   std::vector<Ball> orbit;       ///< the boxes \f$X_0, \dots, X_{m-1}\f$ (each with the unique orbit point)
   Ball log_multiplier;           ///< \f$\ln|(T^m)'| = \sum_j \ln|T'(x_j)|\f$ over the boxes
+  std::vector<OrbitBoxProof> boxes;  ///< with PeriodicOptions::record: the covering relations, one per box
+  std::string unrecorded;            ///< why `boxes` is empty although recorded (a relation not shown)
   double seconds = 0;            ///< wall time
 };
 

@@ -114,8 +114,8 @@ BallProof BallProof::of(const StartSet& set, const ParameterBox& box, MapStepPro
   b.at_t2 = set.kind == StartSet::Kind::AtT2;
   b.from_t2 = set.lo_is_t2;
   if (!b.at_t2) {
-    b.theta_lo = b.from_t2 ? set.lo.upper() : set.lo.mid();  // (from_t2: not used)
-    b.theta_hi = set.hi.mid();
+    b.theta_lo = b.from_t2 ? Ball(set.lo.upper()) : set.lo;  // exact (from_t2: not used)
+    b.theta_hi = set.hi;
   }
   return b;
 }

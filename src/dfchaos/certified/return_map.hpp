@@ -68,8 +68,8 @@ MapStepProof certify_T(const ParameterBalls& m, const StartSet& set, Budget& bud
 /// One closed ball of a proof about T (a covering, Theorem 2): start phases over a sub-box of the
 /// parameters, with the proof of T on it and its witnesses (for a certificate).
 struct BallProof {
-  double theta_lo = 0;  ///< lower end of the start phases (unless from_t2 or at_t2)
-  double theta_hi = 0;  ///< upper end (unless at_t2)
+  Ball theta_lo;        ///< lower end of the start phases, exact (unless from_t2 or at_t2)
+  Ball theta_hi;        ///< upper end, exact (unless at_t2)
   ParameterBox box;     ///< the sub-box
   MapStepProof T;       ///< T on the ball, with its witnesses
   bool from_t2 = false; ///< the phases are \f$[t_2, \theta_{hi}]\f$, from \f$t_2\f$ exactly (a point box)
