@@ -19,6 +19,7 @@ parameters and decisive values, b_low, the rounded doubles of vartheta0 or the s
 are the claim's record);
 the tables are written whole (a temporary file renamed into place).
 """
+import concurrent.futures
 import glob
 import hashlib
 import json
@@ -36,6 +37,45 @@ def exact(x):
     return float.fromhex(x)
 
 
+REGION_BOXES = {}  # claim id -> boxes bound so far by its `coverings` certificates (one per column)
+
+
+def bind_region(path, cert, claim, part):
+    """A column of the certified region (statement coverings): the claim's statement, the band in b,
+    the column's q range, and exactly the column's proved boxes of data/certified_region.tsv (their b
+    ranges and the candidate ends of J0, J1, as doubles)."""
+    par, ev = claim.get("parameters", {}), claim["evidence"]
+    if not part or not part.startswith("column") or not part[6:].isdigit():
+        return f"part '{part}' is not columnNN"
+    i = int(part[6:]) - 1
+    if not 0 <= i < len(ev.get("columns", [])):
+        return f"part '{part}' is none of the claim's {len(ev.get('columns', []))} columns"
+    if cert.get("claim") != claim["statement"]:
+        return "its claim text is not the claim's statement"
+    cp = cert.get("parameters", {})
+    q = [float(x) for x in ev["columns"][i]["q"]]
+    got = (exact(cp["a"]["hex"]), [exact(cp["b"]["lo"]["hex"]), exact(cp["b"]["hi"]["hex"])], [exact(cp["q"]["lo"]["hex"]), exact(cp["q"]["hi"]["hex"])])
+    if got != (1.0, [float(x) for x in par["b_over_a"]], q):
+        return f"its parameters {got} are not a = 1, the band's b/a and column {i + 1}'s q/a"
+    rows = []
+    with open(os.path.join(os.path.dirname(os.path.dirname(path)), "data", "certified_region.tsv")) as f:
+        lines = [l.rstrip("\n").split("\t") for l in f if not l.startswith("#")]
+    head = lines[0]
+    for r in lines[1:]:
+        d = dict(zip(head, r))
+        if d["proved"] == "1" and [float(d["q_lo"]), float(d["q_hi"])] == q:
+            rows.append(tuple(float(d[k]) for k in ("b_lo", "b_hi", "J0_top", "J0_t2", "J1_top", "J1_t2")))
+    boxes = []
+    for b in cert.get("witnesses", {}).get("boxes", []):
+        s0, s1 = b["witnesses"]["segments"]
+        boxes.append((exact(b["parameters"]["b"]["lo"]["hex"]), exact(b["parameters"]["b"]["hi"]["hex"]), exact(s0["theta_top"]),
+                      exact(s0["theta_t2"]), exact(s1["theta_top"]), exact(s1["theta_t2"])))
+    if boxes != rows:
+        return f"its {len(boxes)} boxes are not the column's {len(rows)} proved boxes of data/certified_region.tsv"
+    REGION_BOXES[claim["id"]] = REGION_BOXES.get(claim["id"], 0) + len(boxes)
+    return None
+
+
 def bind(path, cert, claim, part):
     """Checks that the certificate (already accepted by the checker) proves what the claim states:
     the claim holds, and the certificate's claim text, statement parameters and decisive values (b_low,
@@ -45,6 +85,8 @@ def bind(path, cert, claim, part):
     Returns None, or what differs."""
     if claim["verdict"] != "holds":
         return f"its claim {claim['id']} does not hold (verdict {claim['verdict']})"
+    if cert.get("statement") == "coverings":
+        return bind_region(path, cert, claim, part)
     ev = claim["evidence"]
     if "grid" in ev:  # one certificate per proof of the grid, named by its q/a
         recs = {f"q{float(r['parameters']['q']):.2f}": r for r in ev["grid"]}
@@ -132,6 +174,11 @@ def main():
             fail(f"{path} names no certified claim of {build}/claims (claim id '{cid}')")
         by_claim[cid].append(path)
 
+    # The checker runs on every file first, one process per core (a region's columns take seconds each).
+    paths = [path for cid in claims for path in by_claim[cid]]
+    with concurrent.futures.ThreadPoolExecutor(max_workers=os.cpu_count() or 1) as pool:
+        checked = dict(zip(paths, pool.map(lambda p: subprocess.run([recheck, p], capture_output=True, text=True, timeout=600), paths)))
+
     rows, accepted, rejected, without = [], 0, [], 0
     accepted_of = {}  # claim id -> [(file stem, sha256, bytes)] of its accepted certificates
     for cid in claims:
@@ -148,7 +195,7 @@ def main():
             continue
         for path in by_claim[cid]:
             data = open(path, "rb").read()
-            run = subprocess.run([recheck, path], capture_output=True, text=True, timeout=600)
+            run = checked[path]
             if run.returncode != 0:
                 rejected.append(f"{path}: exit {run.returncode}: {(run.stdout + run.stderr).strip()}")
                 continue
@@ -163,6 +210,9 @@ def main():
             accepted_of.setdefault(cid, []).append((stem, hashlib.sha256(data).hexdigest(), len(data)))
             rows.append(f"\\dfccertrow{{{cid}}}{{{os.path.basename(path)[: -len('.json')]}}}{{{hashlib.sha256(data).hexdigest()}}}"
                         f"{{{len(data)}}}{{accepted}}")
+    for cid, n in REGION_BOXES.items():  # a region's certificates hold all of its proved boxes
+        if n != record[cid]["evidence"].get("boxes_proved"):
+            rejected.append(f"claim {cid}: its certificates hold {n} boxes, the claim {record[cid]['evidence'].get('boxes_proved')} proved")
     if rejected:
         fail("the checker rejected " + str(len(rejected)) + " certificate(s):\n  " + "\n  ".join(rejected))
 

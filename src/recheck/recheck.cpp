@@ -964,6 +964,29 @@ long check_theorem2_counterexample(const json& c) {
   return st.n;
 }
 
+/// Lemma 4 over a set of boxes (a column of the certified region): each element of witnesses.boxes is
+/// a `covering` certificate, checked as one, whose box lies in the certificate's {a} x B x Q.
+long check_coverings(const json& c) {
+  Steps st;
+  const auto [a, box] = read_box(c);
+  const json& boxes = field(field(c, "witnesses", ""), "boxes", "witnesses.");
+  if (!boxes.is_array()) throw Malformed("'witnesses.boxes' is not an array");
+  for (std::size_t i = 0; i < boxes.size(); ++i) {
+    const std::string who = "witnesses.boxes[" + std::to_string(i) + "]";
+    if (!boxes[i].is_object() || field(boxes[i], "statement", who + ".") != "covering") throw Malformed("'" + who + "' is not a covering certificate");
+    const auto [ai, x] = read_box(boxes[i]);
+    st.require(ai == a && box.b_lo <= x.b_lo && x.b_hi <= box.b_hi && box.q_lo <= x.q_lo && x.q_hi <= box.q_hi, who + ": its box lies in the parameters");
+    try {
+      st.n += check_covering(boxes[i]);
+    } catch (const Failed& e) {
+      throw Failed(who + " (" + describe(x) + "): " + e.what());
+    } catch (const Malformed& e) {
+      throw Malformed(who + ": " + e.what());
+    }
+  }
+  return st.n;
+}
+
 /// A ball of a periodic certificate at the point (b, q) whose phases are exactly [lo, hi]: T is
 /// continuous on it and, with the theta2 bracket above t2 + 2 pi k (case AB), T = theta2 - 2 pi k
 /// lies in the bracket; returns that enclosure of T.
@@ -1050,6 +1073,7 @@ int check_file(const std::string& path) {
     else if (statement == "lemma1") steps = check_lemma1(c);
     else if (statement == "b0") steps = check_b0(c);
     else if (statement == "covering") steps = check_covering(c);
+    else if (statement == "coverings") steps = check_coverings(c);
     else if (statement == "periodic") steps = check_periodic(c);
     else if (statement == "superstable") steps = check_superstable(c, what);
     else if (statement == "not_superstable") steps = check_not_superstable(c);
@@ -1057,7 +1081,7 @@ int check_file(const std::string& path) {
     else if (statement == "theorem2_counterexample") steps = check_theorem2_counterexample(c);
     else
       throw Malformed("unknown statement '" + statement +
-                      "' (this checker reads vartheta0, lemma1, b0, covering, periodic, superstable, not_superstable, window, theorem2_counterexample)");
+                      "' (this checker reads vartheta0, lemma1, b0, covering, coverings, periodic, superstable, not_superstable, window, theorem2_counterexample)");
     std::printf("OK %s: %s, %ld steps re-verified%s\n", path.c_str(), statement.c_str(), steps, what.empty() ? "" : ("; " + what).c_str());
     return 0;
   } catch (const Failed& e) {

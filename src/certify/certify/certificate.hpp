@@ -71,6 +71,14 @@ kit::Json certificate_b0(double a, double q, const certified::Lemma1Bound& p, co
 /// p.lemma1 is not proved).
 kit::Json certificate_covering(const certified::CoveringProof& p, const std::string& claim);
 
+/// One box of a region as a `covering` certificate in compact text (one line), for
+/// certificate_coverings_text(): certificate_covering(p, statement_covering(p.box)).dump(0).
+std::string covering_box_text(const certified::CoveringProof& p);
+/// The certificate of Lemma 4 over a set of boxes (statement coverings, e.g. a column of the certified
+/// region): parameters {a} x b x q (the set the boxes lie in) and witnesses.boxes, the `covering`
+/// certificates of the boxes as covering_box_text() wrote them.
+std::string certificate_coverings_text(double a, const Range& b, const Range& q, const std::vector<std::string>& boxes, const std::string& claim);
+
 /// The certificate of periodic orbits at a parameter point (statement periodic): the covering's
 /// segments J0, J1 and, per orbit of minimal period m with itinerary \f$(0^{m-1}1)^\infty\f$, its boxes
 /// \f$X_j\f$ with the balls of T on each box and at its two ends (the covering relations

@@ -351,6 +351,30 @@ kit::Json certificate_covering(const certified::CoveringProof& p, const std::str
   return j;
 }
 
+std::string covering_box_text(const certified::CoveringProof& p) {
+  std::string t = certificate_covering(p, statement_covering(p.box)).dump(0);
+  t.pop_back();  // the final newline
+  return t;
+}
+
+std::string certificate_coverings_text(double a, const Range& b, const Range& q, const std::vector<std::string>& boxes, const std::string& claim) {
+  kit::Json j = header("coverings", claim);
+  kit::Json par = kit::Json::object();
+  par.set("a", exact_number(a)).set("b", exact_range(b)).set("q", exact_range(q));
+  j.set("parameters", par);
+  j.set("witnesses", kit::Json::object().set("boxes", kit::Json::array()));
+  // The boxes are spliced into the empty array as text (each already a whole JSON document): a column
+  // holds hundreds of boxes, which as one JSON value would take gigabytes.
+  std::string text = certificate_text(j);
+  const std::string empty = "\"boxes\": []";
+  const std::size_t at = text.rfind(empty);
+  if (at == std::string::npos) throw std::logic_error("certificate_coverings_text: no empty boxes array");
+  std::string list = "\"boxes\": [";
+  for (std::size_t i = 0; i < boxes.size(); ++i) list += (i ? ",\n  " : "\n  ") + boxes[i];
+  list += boxes.empty() ? "]" : "\n  ]";
+  return text.replace(at, empty.size(), list);
+}
+
 kit::Json certificate_periodic(const certified::CoveringProof& c, const std::vector<certified::PeriodicProof>& orbits, const std::string& claim) {
   if (!c.verdict.proved || !c.box.is_point()) throw std::logic_error("certificate_periodic: the covering is not proved at a point");
   kit::Json j = header("periodic", claim);

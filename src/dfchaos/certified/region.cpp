@@ -4,6 +4,7 @@
 #include <cmath>
 #include <algorithm>
 #include <cstdio>
+#include <stdexcept>
 
 namespace dfchaos::certified {
 
@@ -48,13 +49,14 @@ std::vector<Candidate> widest_two(std::vector<Candidate> c) {
 
 /// The state of a column between passes (so that a later pass resumes where the last stopped).
 struct ColumnState {
+  std::size_t index = 0;
   RegionColumn col;
   double b = 0, c = 0;
   std::vector<Candidate> cand;
   bool done = false;
 };
 
-void tile_column(const RegionOptions& opt, ColumnState& st, long budget) {
+void tile_column(const RegionOptions& opt, const ProvedBoxSink& sink, ColumnState& st, long budget) {
   const auto start = std::chrono::steady_clock::now();
   const PrecisionScope precision_of_this_thread(opt.precision);
   RegionColumn& col = st.col;
@@ -79,6 +81,7 @@ void tile_column(const RegionOptions& opt, ColumnState& st, long budget) {
     CoveringOptions copt;
     copt.end_depth = 0;
     copt.max_depth = 12;
+    copt.record = static_cast<bool>(sink);
     CoveringProof p = prove_covering_split(box, cand, opt.split_depth, sub, copt);
     if (!p.verdict && !fresh && c <= opt.c_min) {
       cand = widest_two(covering_candidates(opt.a, bc, qc));
@@ -88,6 +91,7 @@ void tile_column(const RegionOptions& opt, ColumnState& st, long budget) {
     if (p.verdict) {
       const Candidate J0{p.J0.theta_top, p.J0.theta_t2}, J1{p.J1.theta_top, p.J1.theta_t2};
       col.boxes.push_back(RegionBox{box.b_lo, box.b_hi, q_lo, q_hi, true, sub, "", J0, J1});
+      if (sink) sink(st.index, col.boxes.back(), p);
       col.proved_length += box.b_hi - box.b_lo;
       b = box.b_hi;
       c = std::min(opt.c_max, c * 1.25);
@@ -108,7 +112,9 @@ void tile_column(const RegionOptions& opt, ColumnState& st, long budget) {
 
 }  // namespace
 
-RegionResult certify_region(const RegionOptions& opt) {
+RegionResult certify_region(const RegionOptions& opt, const ProvedBoxSink& sink) {
+  if (sink && opt.split_depth > 0)
+    throw std::invalid_argument("certify_region: recording needs split_depth = 0 (the proof of a split box keeps only its last half)");
   const auto start = std::chrono::steady_clock::now();
   RegionResult r;
   r.options = opt;
@@ -116,6 +122,7 @@ RegionResult certify_region(const RegionOptions& opt) {
   std::vector<ColumnState> st(static_cast<std::size_t>(n));
   for (int i = 0; i < n; ++i) {
     ColumnState& s = st[static_cast<std::size_t>(i)];
+    s.index = static_cast<std::size_t>(i);
     s.col.q_lo = opt.q_lo + (opt.q_hi - opt.q_lo) * i / n;
     s.col.q_hi = i + 1 == n ? opt.q_hi : opt.q_lo + (opt.q_hi - opt.q_lo) * (i + 1) / n;
     s.b = opt.b_lo;
@@ -136,7 +143,7 @@ RegionResult certify_region(const RegionOptions& opt) {
 #pragma omp parallel for schedule(dynamic, 1)
     for (int j = 0; j < m; ++j) {
       ColumnState& s = st[static_cast<std::size_t>(open[static_cast<std::size_t>(j)])];
-      tile_column(opt, s, share);
+      tile_column(opt, sink, s, share);
       if (opt.progress) {
 #pragma omp critical
         std::fprintf(stderr, "\rcertified_region: pass %d, column %d/%d done (q/a in [%.4f, %.4f] reached b/a = %.6g)   ", pass + 1, ++finished, m,

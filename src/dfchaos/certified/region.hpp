@@ -11,6 +11,8 @@
 /// a number of boxes, not by time, so that the result is deterministic.
 #pragma once
 
+#include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -34,6 +36,12 @@ struct RegionOptions {
   bool progress = false;        ///< print progress on stderr
   long precision = 64;          ///< bits of the ball arithmetic (64: one limb, enough for b/a >= 1e-5)
 };
+
+struct RegionBox;
+/// Called once per proved box with its proof, its witnesses recorded (CoveringOptions::record), and the
+/// index of its column: for certificates. Columns run in parallel: calls for different columns may be
+/// concurrent, calls for one column come in order from one thread.
+using ProvedBoxSink = std::function<void(std::size_t column, const RegionBox& box, const CoveringProof& proof)>;
 
 /// One box of the tiling.
 struct RegionBox {
@@ -74,7 +82,8 @@ struct RegionResult {
 
 /// Tiles the band. Columns run in parallel (OpenMP) when available; the result does not depend on
 /// the number of threads (each column is independent and its box budget fixed in advance).
-RegionResult certify_region(const RegionOptions& opt);
+/// With `sink`, every proved box's proof is recorded and handed to it (the proofs are the same).
+RegionResult certify_region(const RegionOptions& opt, const ProvedBoxSink& sink = {});
 
 /// Lemma 4 over `box` with the candidates `c`, splitting the b-range into halves up to `depth`
 /// times on failure; `sub_boxes` receives the number of boxes proved.
