@@ -242,20 +242,17 @@ kit::Json vartheta0_bracket() {
   return j;
 }
 
-/// `{"sub_boxes": [...]}`: Lemma 1 proved over {a} x [b_lo, b_hi] x {q}, for balls whose chain waits
-/// for t0 (scenario C). The covering proof keeps its own (CoveringProof::lemma1); Theorem 2's proofs
-/// prove it per ball, so it is proved here once more over the whole range of b.
-kit::Json lemma1_witness(double a, double b_lo, double b_hi, double q) {
-  const certified::Lemma1Proof l = certified::certify_lemma1(certified::ParameterBalls(certified::ParameterBox{a, b_lo, b_hi, q, q}));
+/// Lemma 1's witness of a proof that used it (`{"sub_boxes": [...]}`). @throws std::logic_error if not proved.
+kit::Json lemma1_witness(const certified::Lemma1Proof& l) {
   if (!l.verdict.proved) throw std::logic_error("certificate: a ball needed Lemma 1, which is not proved over the whole range of b");
   return lemma1_sub_boxes(l);
 }
 
 /// The witnesses of Theorem 2's conclusion at a point (statement superstable; also a window's middle).
-kit::Json superstable_witnesses(double a, double b, double q, const certified::SuperstableProof& p) {
+kit::Json superstable_witnesses(const certified::SuperstableProof& p) {
   if (!p.verdict.proved || p.at.size() != 1 || p.cover.empty()) throw std::logic_error("certificate_superstable: not proved, or not recorded");
   kit::Json w = kit::Json::object();
-  if (p.used_lemma1) w.set("lemma1", lemma1_witness(a, b, b, q));
+  if (p.used_lemma1) w.set("lemma1", lemma1_witness(p.lemma1));
   w.set("vartheta0", vartheta0_bracket());
   kit::Json hyp = kit::Json::array();
   if (p.eq2) hyp.push("(2)");
@@ -282,7 +279,7 @@ kit::Json point_parameters(double a, double b, double q) {
 kit::Json certificate_superstable(double a, double b, double q, const certified::SuperstableProof& p, const std::string& claim) {
   kit::Json j = header("superstable", claim);
   j.set("parameters", point_parameters(a, b, q));
-  j.set("witnesses", superstable_witnesses(a, b, q, p));
+  j.set("witnesses", superstable_witnesses(p));
   return j;
 }
 
@@ -309,9 +306,9 @@ kit::Json certificate_window(double a, double q, const certified::WindowProof& p
   w.set("boxes", balls(p.box_proofs));
   bool lemma1 = false;
   for (const certified::BallProof& b : p.box_proofs) lemma1 = lemma1 || b.T.used_lemma1;
-  if (lemma1) w.set("lemma1", lemma1_witness(a, p.left_in, p.right_in, q));
+  if (lemma1) w.set("lemma1", lemma1_witness(p.lemma1));
   const double b_mid = p.inside.at.front().box.b_lo;
-  kit::Json inside = superstable_witnesses(a, b_mid, q, p.inside);
+  kit::Json inside = superstable_witnesses(p.inside);
   inside.set("b", hex_double(b_mid));
   w.set("inside", inside);
   j.set("witnesses", w);

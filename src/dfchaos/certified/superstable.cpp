@@ -114,6 +114,8 @@ SuperstableProof prove_superstable(double a, double b, double q, double eps_try,
       r.eps = eps;
       r.balls = balls;
       r.used_lemma1 = used_l1 || at.used_lemma1;
+      // The balls proved Lemma 1 each on its own; a certificate holds it once, over the point.
+      if (record && r.used_lemma1) r.lemma1 = certify_lemma1(ParameterBalls(ParameterBox::point(a, b, q)));
       return finish(Outcome::ok());
     }
   }
@@ -195,6 +197,9 @@ WindowProof prove_window(double a, double q, double b_lo, double b_hi, double re
     }
     if (!ok) continue;
     r.boxes = boxes;
+    bool used_lemma1 = false;  // a certificate holds Lemma 1 once, over [left_in, right_in] x {q}
+    for (const BallProof& p : r.box_proofs) used_lemma1 = used_lemma1 || p.T.used_lemma1;
+    if (used_lemma1) r.lemma1 = certify_lemma1(ParameterBalls(ParameterBox{a, r.left_in, r.right_in, q, q}));
     return finish(Outcome::ok());
   }
   return finish(Outcome::fail("window: edges", last));

@@ -46,6 +46,7 @@ struct SuperstableProof {
   std::vector<BallProof> at;     ///< T at \f$[t_2, t_2^{\uparrow}]\f$ (\f$t_2^{\uparrow}\f$ the double above \f$t_2\f$): one ball
   std::vector<BallProof> cover;  ///< the balls on which T = t2, covering \f$[t_2, t_2^{\uparrow} + \varepsilon]\f$
   long long phase_turn = 0;      ///< the phase of \f$\theta_2(t_2)\f$ is \f$\theta_2 - 2\pi\f$ phase_turn
+  Lemma1Proof lemma1;            ///< when used_lemma1: Lemma 1 at the point (the certificate's witness)
 };
 
 /// Proves Theorem 2's conclusion at (a, b, q). `eps_try`: the width to try first (NaN: from the
@@ -82,6 +83,7 @@ struct WindowProof {
   // The witnesses, kept when asked (docs/certificates.md, statement window):
   std::vector<BallProof> outer;           ///< T at t2 at b = left_out and right_out (T != t2)
   std::vector<BallProof> box_proofs;      ///< T(t2(b)) = t2 on each b-box, covering [left_in, right_in]
+  Lemma1Proof lemma1;                     ///< when a box used Lemma 1: Lemma 1 over [left_in, right_in] x {q}
 };
 
 /// Certifies the window estimated by the floating layer as \f$[b_{lo}, b_{hi}]\f$; the edge brackets have
