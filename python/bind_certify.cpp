@@ -106,8 +106,9 @@ statement, the enclosures (decimal mid and radius), and on failure the step that
 raises dfchaos.InvalidParameter with the CLI's message. Doubles are exact binary numbers: the proofs
 are for those numbers (or every parameter of the box).
 
-With `certificate="path"` (vartheta0, lemma1, b0) a proved statement's certificate (the witnesses, for
-the independent checker dfchaos-recheck; docs/certificates.md) is written to path whole or not at all,
+With `certificate="path"` (vartheta0, lemma1, b0, covering, superstable, discontinuities) a proved
+statement's certificate (the witnesses, for the independent checker dfchaos-recheck;
+docs/certificates.md) is written to path whole or not at all,
 and the dict gets "certificate": {"path", "bytes", "sha256"} ({"written": False} when not proved).
 A path that cannot be written raises OSError and leaves no file.)doc");
 }

@@ -15,8 +15,8 @@ claim's accepted certificates (status "premise"). Also BUILD/tables/certificates
 \\dfcCertifiedClaims and \\dfcCertifiedClaimsWithout. Exits 1, writing nothing, when the checker
 rejects a certificate, when a certificate names no certified claim, and when an accepted certificate
 does not prove what its claim states (bind(): the claim holds, and the certificate's claim text,
-parameters and decisive values, b_low, the rounded doubles of vartheta0 or the segments J0 and J1,
-are the claim's record);
+parameters and decisive values, b_low, the rounded doubles of vartheta0, the segments J0 and J1 or
+the number of discontinuities of Lemma 2 and their segment, are the claim's record);
 the tables are written whole (a temporary file renamed into place).
 """
 import concurrent.futures
@@ -80,7 +80,7 @@ def bind(path, cert, claim, part):
     """Checks that the certificate (already accepted by the checker) proves what the claim states:
     the claim holds, and the certificate's claim text, statement parameters and decisive values (b_low,
     the rounded doubles of vartheta0, the segments J0, J1 of a covering, the periods and words of
-    periodic orbits) are
+    periodic orbits, the segment and the number of discontinuities of Lemma 2) are
     those of the claim's record (for a claim resting on several proofs, the record of its PART).
     Returns None, or what differs."""
     if claim["verdict"] != "holds":
@@ -107,6 +107,10 @@ def bind(path, cert, claim, part):
     if cert.get("claim") not in (rec.get("statement"), claim["statement"]):
         return "its claim text is neither the claim's statement nor its record's"
     cp, rp = cert.get("parameters", {}), rec.get("parameters") or claim.get("parameters", {})
+    if cert.get("statement") == "discontinuities":  # the segment is a name: "L0" for the record's "L0 = [...]"
+        cp = {k: v for k, v in cp.items() if k != "segment"}
+        if not str(rec.get("segment", "")).startswith(f"{cert['parameters'].get('segment')} = "):
+            return "its segment is not the claim's"
     if set(cp) != set(rp):
         return f"parameters {sorted(cp)} instead of {sorted(rp)}"
     for k, v in cp.items():
@@ -128,6 +132,11 @@ def bind(path, cert, claim, part):
         want = [(o["period"], o["itinerary"], [float(x) for x in o["J0"]], [float(x) for x in o["J1"]]) for o in rec["orbits"]]
         if got != want:
             return "its orbits (periods, words, J0, J1) are not the claim's"
+    if cert.get("statement") == "discontinuities":
+        if len(w.get("tangencies", [])) != int(rec.get("n", -1)):
+            return "its number of discontinuities is not the claim's"
+        if [t.get("k") for t in w["tangencies"]] != [z.get("k") for z in rec.get("discontinuities", [])]:
+            return "its k of the discontinuities are not the claim's"
     if cert.get("statement") == "window":
         got = [exact(w[k]) for k in ("left_out", "left_in", "right_in", "right_out")]
         if got != [float(x) for x in rec.get("left_edge", []) + rec.get("right_edge", [])]:

@@ -8,6 +8,7 @@ mutated copy of it is rejected with the exit status of its kind of damage (1: a 
 usage: recheck_certificates.py DFCHAOS DFCHAOS_RECHECK CASE
 """
 import json
+import math
 import os
 import subprocess
 import sys
@@ -30,6 +31,11 @@ REQUESTS = {
     "window": ["superstable", "--a", "1", "--b", "0.0641", "--q", "0.85", "--window", "0.064075562769072836:0.064187276762950898"],
     # Sections 6-7 at point A: the orbit of period 3, itinerary (001)^infinity, in three boxes
     "periodic": ["periodic", "--a", "1", "--b", "0.001", "--q", "0.85", "--period", "3"],
+    # Lemma 2 on L0 at b = 0.01 (point C of certified_claims: 15 tangencies), on L2 at b = 5e-5 (point D:
+    # 5), and on L2 at b = 0.001, where h(L2) holds no odd multiple of pi (no tangency: the witness k_above)
+    "discontinuities": ["discontinuities", "--a", "1", "--b", "0.01"],
+    "discontinuities_L2": ["discontinuities", "--a", "1", "--b", "5e-5", "--segment", "L2"],
+    "discontinuities_empty": ["discontinuities", "--a", "1", "--b", "0.001", "--segment", "L2"],
     # a box of certified_region, re-proved with the J0, J1 its row records
     "covering_box": ["covering", "--a", "1", "--b", "0.0019697602976329739:0.00196980455453853",
                      "--q", "0.80000000000000004:0.81000000000000005", "--J0", "3.2595461317302936:3.3248980967076651",
@@ -74,6 +80,68 @@ def next_double_hex(h, direction):
     """The hex float of the neighbour of the double `h` (direction +1 up, -1 down)."""
     import math
     return float.hex(math.nextafter(float.fromhex(h), direction * math.inf))
+
+
+def rejects_discontinuities(cli, checker, what, d, bad):
+    """The mutations of a Lemma 2 certificate (b = 0.01 on L0; for k_above, the one without tangency):
+    each rejected, with the step named."""
+    path, _ = write_certificate(cli, "discontinuities_empty" if what == "k_above" else "discontinuities", d)
+    with open(path) as f:
+        n = len(json.load(f)["witnesses"]["tangencies"])
+    if n < 3 and what != "k_above":
+        sys.exit(f"FAIL: the Lemma 2 certificate holds {n} tangencies; the cases need several")
+    mid = n // 2
+
+    def tangency(c):
+        return c["witnesses"]["tangencies"][mid]
+
+    def t_star(t):  # (2k+1) pi - z, in doubles
+        return (2 * t["k"] + 1) * math.pi - float.fromhex(t["z"][0])
+
+    def widen(c):  # W stretched to 3 on each side: F = a sin t + 2b >= 0 somewhere in it
+        t = tangency(c)
+        t["window"] = [float.hex(float.fromhex(t["window"][0]) - 3), float.hex(float.fromhex(t["window"][1]) + 3)]
+
+    def move(c):  # W moved past t* by its own width
+        t = tangency(c)
+        lo, hi = (float.fromhex(x) for x in t["window"])
+        t["window"] = [float.hex(hi + 1e-9), float.hex(2 * hi - lo + 1e-9)]
+
+    def narrow(c):  # W narrowed around t*: the left ball's skipped gap no longer lies inside it
+        t = tangency(c)
+        lo, hi, ts = float.fromhex(t["window"][0]), float.fromhex(t["window"][1]), t_star(t)
+        t["window"] = [float.hex(ts - (ts - lo) / 4), float.hex(ts + (hi - ts) / 4)]
+
+    def z_off(c):  # the z bracket replaced by [z + 1e-3, z + 2e-3], beside its root
+        t = tangency(c)
+        z = float.fromhex(t["z"][0])
+        t["z"] = [float.hex(z + 1e-3), float.hex(z + 2e-3)]
+
+    def k_changed(c):
+        tangency(c)["k"] += 1
+
+    def drop_cover(c):
+        cover = c["witnesses"]["cover"]
+        cover.pop(len(cover) // 2)
+
+    cases = {  # name: (change, exit status, a word of the step the checker must name)
+        "count": (lambda c: c["witnesses"]["tangencies"].pop(), 1, "count"),
+        "z_off_root": (z_off, 1, "z bracket"),
+        "cover_gap": (drop_cover, 1, "cover [lo, hi]"),
+        "window_widened": (widen, 1, "F < 0 on W"),
+        "window_moved": (move, 1, "wl < t*"),
+        "window_narrowed": (narrow, 1, "outside the window"),
+        "k_changed": (k_changed, 1, "k = k_0"),
+        "k_above": (lambda c: c["witnesses"].update(k_above=c["witnesses"]["k_above"] + 1), 1, "count"),
+        "segment_unknown": (lambda c: c["parameters"].update(segment="L1"), 2, "segment"),
+        "z_decimal": (lambda c: tangency(c).update(z=["3.2", "3.3"]), 2, "exact hexadecimal"),
+    }
+    change, want, word = cases[what]
+    proc = subprocess.run([checker, mutate(path, bad, change)], capture_output=True, text=True)
+    line = (proc.stdout + proc.stderr).strip()
+    if proc.returncode != want or word not in line:
+        sys.exit(f"FAIL: Lemma 2 mutation {what}: dfchaos-recheck exit {proc.returncode}, want {want} naming '{word}': {line}")
+    print(f"ok:   Lemma 2 mutation {what}: exit {want}: {line}")
 
 
 def main():
@@ -257,6 +325,8 @@ def main():
             def same(c):
                 c["witnesses"]["J1"] = list(c["witnesses"]["J0"])
             recheck(checker, mutate(path, bad, same), 1, "J0 and J1 overlap")
+        elif case.startswith("rejects_discontinuities_"):
+            rejects_discontinuities(cli, checker, case[len("rejects_discontinuities_"):], d, bad)
         elif case == "rejects_truncated":
             path, _ = write_certificate(cli, "lemma1_point", d)
             with open(path, "rb") as f:
@@ -297,12 +367,7 @@ def main():
             if proc.returncode != 2 or proc.stdout or len(proc.stderr.strip().splitlines()) != 1 or "certificate" not in proc.stderr:
                 sys.exit(f"FAIL: --certificate '': exit {proc.returncode}, stderr {proc.stderr!r}")
             print(f"ok:   --certificate '': exit 2: {proc.stderr.strip()}")
-            # a statement without a certificate format: bad input before any proof
-            proc = subprocess.run([cli, "certify", "discontinuities", "--b", "0.01", "--certificate",
-                                   os.path.join(d, "c.json")], capture_output=True, text=True)
-            if proc.returncode != 2 or proc.stdout or os.path.exists(os.path.join(d, "c.json")) or "certificate" not in proc.stderr:
-                sys.exit(f"FAIL: discontinuities --certificate: exit {proc.returncode}, stderr {proc.stderr!r}")
-            print(f"ok:   discontinuities --certificate: exit 2: {proc.stderr.strip()}")
+            # (every statement of the tool has a certificate format: no refusal of a statement to test)
             # a statement not proved writes no certificate (exit 1)
             target = os.path.join(d, "not-proved.json")
             proc = subprocess.run([cli, "certify", "lemma1", "--b", "0.05", "--q", "0.73", "--certificate", target], capture_output=True, text=True)

@@ -56,5 +56,20 @@ cp "$tmp/swap/certificates/cert.eq1.vartheta0.json" "$tmp/swap/certificates/cert
 check "the checker alone accepts the swapped file" '"$checker" "$tmp/swap/certificates/cert.lemma1.B.json" >/dev/null'
 check "a certificate of another statement filed under a claim fails the script" \
       '! "$py" "$script" "$tmp/swap" "$checker" >"$tmp/out3" 2>&1 && grep -q "not a proof of claim cert.lemma1.B" "$tmp/out3"'
+# Lemma 2: the record of cert.lemma2.C made to count one discontinuity more; the certificate, accepted
+# by the checker, no longer proves the claim.
+rm -rf "$tmp/count" && cp -r "$tmp/swap" "$tmp/count" && rm -f "$tmp/count/certificates/cert.lemma1.B.json"
+cp "$tmp/certificates/cert.lemma1.B.json" "$tmp/count/certificates/" 2>/dev/null
+"$py" - "$tmp/count/claims" <<'PY'
+import glob, json, sys
+for p in glob.glob(sys.argv[1] + "/*.json"):
+    d = json.load(open(p))
+    for c in d["claims"]:
+        if c["id"] == "cert.lemma2.C":
+            c["evidence"]["n"] += 1
+    json.dump(d, open(p, "w"))
+PY
+check "a Lemma 2 certificate whose count is not the claim's fails the script" \
+      '! "$py" "$script" "$tmp/count" "$checker" >"$tmp/out4" 2>&1 && grep -q "cert.lemma2.C: its number of discontinuities is not the claim" "$tmp/out4"'
 echo "recheck_experiment: $fails failures"
 exit $((fails > 0))

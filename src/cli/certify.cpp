@@ -82,7 +82,7 @@ CLI::App* add_certify(CLI::App& app, CertifyOptions& o) {
   c->add_option("--J0", o.J0, "covering: prove this segment J0, given as TOP:T2 (the phases where T >= 3pi/2 and T = t2; e.g. from "
                               "certified_region's data), with --J1, instead of searching candidates");
   c->add_option("--J1", o.J1, "covering: the segment J1 (right of J0), as TOP:T2");
-  c->add_option("--certificate", o.certificate, "write the proof's certificate (JSON witnesses for dfchaos-recheck) to FILE, whole or not at all; vartheta0, lemma1, b0, covering, superstable")
+  c->add_option("--certificate", o.certificate, "write the proof's certificate (JSON witnesses for dfchaos-recheck) to FILE, whole or not at all; vartheta0, lemma1, b0, covering, superstable, discontinuities")
       ->type_name("FILE")
       ->check([](const std::string& s) { return s.empty() ? std::string("certificate: a file name (got '')") : std::string(); });
   c->add_option("--max-seconds", o.max_seconds, "time budget: give up (exit 1, one line) after S seconds, 0 < S <= 1e6 [default 60]")->type_name("S");

@@ -483,7 +483,10 @@ struct Fn {
 ///   monotone: f' lies in D = f'(M) + [-1, 1] r |f''(X)| (the mean-value theorem); D > 0 and
 ///             f(x2) < 0, or D < 0 and f(x1) < 0;
 ///   envelope: U(x1) < 0 and U(x2) < 0.
-void negative_on(Steps& st, const std::vector<Piece>& ps, const Num& X1, const Num& X2, const Fn& fn, const std::string& what) {
+///   With `hole`, a gap (g1, g2) between the pieces is allowed where hole(g1, g2) holds (f < 0 is
+///   proved there by another argument: Lemma 2's tangency window).
+void negative_on(Steps& st, const std::vector<Piece>& ps, const Num& X1, const Num& X2, const Fn& fn, const std::string& what,
+                 const std::function<bool(const Num&, const Num&)>& hole = {}) {
   std::vector<const Piece*> order;
   for (std::size_t i = 0; i < ps.size(); ++i) {
     const Piece& p = ps[i];
@@ -508,10 +511,11 @@ void negative_on(Steps& st, const std::vector<Piece>& ps, const Num& X1, const N
   Num reach = X1;
   bool started = false;
   for (const Piece* p : order) {
-    if (mpfr_cmp(p->x1.x, reach.x) > 0) break;  // (reach, x1) is covered by nothing
+    if (mpfr_cmp(p->x1.x, reach.x) > 0 && !(hole && hole(reach, p->x1))) break;  // (reach, x1) is covered by nothing
     if (mpfr_cmp(p->x2.x, reach.x) >= 0) reach = p->x2, started = true;
   }
-  st.require(started && mpfr_cmp(reach.x, X2.x) >= 0, what + ": the pieces cover [" + hex(X1) + ", " + hex(X2) + "] (no gap)");
+  st.require(started && mpfr_cmp(reach.x, X2.x) >= 0,
+             what + ": the pieces cover [" + hex(X1) + ", " + hex(X2) + "] (no gap" + (hole ? " outside the window)" : ")"));
 }
 
 /// What one ball proves about T: its case, k, the theta2 bracket if any, whether Lemma 1 is needed.
@@ -539,6 +543,13 @@ long long turn(const json& jk, const std::string& where) {
   return jk.get<long long>();
 }
 
+/// Reads the T1 witnesses {"s0", "t_lo", "t_hi", "no_contact", "simple_root"} of a ball into w.
+void read_T1(const json& jt, const std::string& wt, BallWitness& w) {
+  w.s0 = exact(field(jt, "s0", wt), wt + "s0"), w.t_lo = exact(field(jt, "t_lo", wt), wt + "t_lo"), w.t_hi = exact(field(jt, "t_hi", wt), wt + "t_hi");
+  w.no_contact = pieces(field(jt, "no_contact", wt), wt + "no_contact");
+  w.simple_root = pieces(field(jt, "simple_root", wt), wt + "simple_root");
+}
+
 /// Reads a ball; `allow_none`: its case may be "none" (only the steps up to the first stop are
 /// checked, nothing about T is concluded; the erratum to Theorem 2); `long_theta`: its phases may be
 /// exact binary numbers that are not doubles (ball.th_lo, th_hi are then NaN: no cover of doubles).
@@ -559,11 +570,7 @@ BallWitness read_ball(const json& j, const std::string& where, bool allow_none =
     w.ball.th_lo = phase(jth[0], where + "theta[0]", w.th_lo);
     w.ball.th_hi = phase(jth[1], where + "theta[1]", w.th_hi);
   }
-  const json& jt = field(j, "T1", where);
-  const std::string wt = where + "T1.";
-  w.s0 = exact(field(jt, "s0", wt), wt + "s0"), w.t_lo = exact(field(jt, "t_lo", wt), wt + "t_lo"), w.t_hi = exact(field(jt, "t_hi", wt), wt + "t_hi");
-  w.no_contact = pieces(field(jt, "no_contact", wt), wt + "no_contact");
-  w.simple_root = pieces(field(jt, "simple_root", wt), wt + "simple_root");
+  read_T1(field(j, "T1", where), where + "T1.", w);
   const json& jc = field(j, "case", where);
   if (jc != "AB" && jc != "BC" && !(allow_none && jc == "none"))
     throw Malformed("'" + where + "case' is not \"AB\" or \"BC\"" + (allow_none ? " or \"none\"" : ""));
@@ -592,42 +599,45 @@ BallWitness read_ball(const json& j, const std::string& where, bool allow_none =
   return w;
 }
 
-/// One ball Theta x B x Q of a covering certificate (README.md): T1 is the only, simple zero of G1
-/// in [t_lo, t_hi] and G1 < 0 before it; the first stop is the simple zero theta2 in (u_lo, u_hi) or
-/// lies in [t3, t2 + 2 pi) + 2 pi k; the case then makes T = max(theta2 - 2 pi k, t2) (AB) or T = t2
-/// (BC), continuous on the ball.
-Outcome check_ball(Steps& st, const Iv& A, const BallWitness& w, const std::string& who) {
+/// A window [lo, hi] of t on which G1 < 0 is proved by another argument (Lemma 2's tangencies): a
+/// no-contact list may leave a gap inside it.
+struct Window {
+  Iv lo, hi;
+};
+
+/// A ball's b range and start phases: at the min corner (with b_lo), at the max corner (with b_hi),
+/// all of them. From t2 exactly, [t2(b), th_hi]: the least start t2(b) is least at b_lo, and along
+/// the family theta = t2(b) the total b-derivatives of G1 and dG1 are those at fixed theta, as
+/// F(t2) = 0 removes the theta terms; so the min corner is (t2(b_lo), b_lo).
+struct Corners {
+  Iv Blo, Bhi, B, Thmin, Thmax, Th;
+};
+Corners corners(const Iv& A, const BallWitness& w) {
+  const Box& x = w.ball.box;
+  Corners c{Iv(x.b_lo), Iv(x.b_hi), Iv(x.b_lo, x.b_hi), Iv(w.th_lo), Iv(w.th_hi), Iv()};
+  if (w.ball.start == Start::FromT2) c.Thmin = t2(A, c.Blo);
+  c.Th = hull(c.Thmin, c.Thmax);
+  return c;
+}
+
+/// Step 1 of a ball, the start set: t2 <= theta < t3, so F(theta) <= 0 for every b <= b_hi, and with
+/// t > theta the partial derivatives dG1/dtheta = -F(theta)(t - theta) >= 0, dG1/db = (t - theta)^2,
+/// and of dG1 (= dG1/dt) d(dG1)/dtheta = -F(theta) >= 0, d(dG1)/db = 2(t - theta) > 0: G1 and dG1 are
+/// least at (theta_lo, b_lo), greatest at (theta_hi, b_hi).
+void start_set_step(Steps& st, const Iv& A, const BallWitness& w, const Corners& c, const std::string& who) {
+  if (w.ball.start == Start::Interval)
+    st.require(le(t2(A, c.Bhi), c.Thmin) && le(c.Thmin, c.Thmax) && lt(c.Thmax, t3(A, c.Bhi)),
+               who + ": start set: t2(b_hi) <= theta_lo <= theta_hi < t3(b_hi)");
+  if (w.ball.start == Start::FromT2)  // [t2(b), th_hi] for each b: the min corner t2(b_lo) by the family's monotonicity
+    st.require(le(t2(A, c.Bhi), c.Thmax) && lt(c.Thmax, t3(A, c.Bhi)), who + ": start set: t2(b_hi) <= theta_hi < t3(b_hi)");
+}
+
+/// Steps 4 and 5 of a ball: G1(theta, t) < 0 for t in (theta, until] at every point of the ball
+/// (`until_name` names `until` in messages), except inside the window `skip` when one is given.
+void no_contact_steps(Steps& st, const Iv& A, const BallWitness& w, const Corners& c, const Iv& until, const std::string& until_name,
+                      const Window* skip, const std::string& who) {
   const auto step = [&](const std::string& s) { return who + ": " + s; };
-  const Ball& ball = w.ball;
-  const Num &s0 = w.s0, &tlo = w.t_lo, &thi = w.t_hi;
-  const Box& x = ball.box;
-  const Iv Blo(x.b_lo), Bhi(x.b_hi), B(x.b_lo, x.b_hi), Qlo(x.q_lo), Qhi(x.q_hi), Q(x.q_lo, x.q_hi);
-  // The start phases at the min corner (with b_lo), at the max corner (with b_hi), all of them.
-  // From t2 exactly, [t2(b), th_hi]: the least start t2(b) is least at b_lo, and along the family
-  // theta = t2(b) the total b-derivatives of G1 and dG1 are those at fixed theta, as F(t2) = 0
-  // removes the theta terms; so the min corner is (t2(b_lo), b_lo).
-  Iv Thmin(w.th_lo), Thmax(w.th_hi);
-  if (ball.start == Start::FromT2) Thmin = t2(A, Blo);
-  const Iv Th = hull(Thmin, Thmax);
-  // 1. The start set: t2 <= theta < t3, so F(theta) <= 0 for every b <= b_hi, and with t > theta
-  // the partial derivatives dG1/dtheta = -F(theta)(t - theta) >= 0, dG1/db = (t - theta)^2, and of
-  // dG1 (= dG1/dt) d(dG1)/dtheta = -F(theta) >= 0, d(dG1)/db = 2(t - theta) > 0: G1 and dG1 are least
-  // at (theta_lo, b_lo), greatest at (theta_hi, b_hi).
-  if (ball.start == Start::Interval)
-    st.require(le(t2(A, Bhi), Thmin) && le(Thmin, Thmax) && lt(Thmax, t3(A, Bhi)),
-               step("start set: t2(b_hi) <= theta_lo <= theta_hi < t3(b_hi)"));
-  if (ball.start == Start::FromT2)  // [t2(b), th_hi] for each b: the min corner t2(b_lo) by the family's monotonicity
-    st.require(le(t2(A, Bhi), Thmax) && lt(Thmax, t3(A, Bhi)), step("start set: t2(b_hi) <= theta_hi < t3(b_hi)"));
-  const Iv S0(s0), Tlo(tlo), Thi(thi);
-  // 2. The bracket: G1 < 0 at t_lo and > 0 at t_hi at every point (Eq. 11, the corners).
-  st.require(lt(Thmax, Tlo) && lt(Tlo, Thi), step("T1 bracket: theta_hi < t_lo < t_hi"));
-  st.require(G1(A, Bhi, Thmax, Tlo).negative(), step("T1 bracket: G1(theta_hi, t_lo; b_hi) < 0"));
-  st.require(G1(A, Blo, Thmin, Thi).positive(), step("T1 bracket: G1(theta_lo, t_hi; b_lo) > 0"));
-  // 3. dG1 > 0 on [t_lo, t_hi] at the min corner, so everywhere: the zero T1 is simple.
-  negative_on(st, w.simple_root, tlo, thi,
-              {[&](const Iv& t) { return -dG1(A, Blo, Thmin, t); }, [&](const Iv& t) { return -F(A, Blo, t); },
-               [&](const Iv& t) { return -F_slope(A, t); }, {}},
-              who + ": T1 simple root");
+  const Iv S0(w.s0), &Thmin = c.Thmin, &Thmax = c.Thmax, &Th = c.Th, &B = c.B, &Bhi = c.Bhi;
   // 4. Departure: G1(theta, theta + s) = s^2 [b + (a/2) sin theta + s g], g = -a sin theta s E(s) -
   // a cos theta K(s), E = (1/2 - (1 - cos s)/s^2)/s^2 in [1/24 - s^2/720, 1/24], K = (sin s - s)/s^3
   // in [-1/6, -1/6 + s^2/120] for 0 < s <= 1 (alternating series); b + (a/2) sin theta <= 0 (step 1).
@@ -640,22 +650,57 @@ Outcome check_ball(Steps& st, const Iv& A, const BallWitness& w, const std::stri
     const Iv g = -(A * sin(Th) * S * E) - A * cos(Th) * K;
     st.require(g.negative() || (B + 0.5 * A * sin(Th) + S * g).negative(), step("departure: G1(theta, theta + s) < 0 for s in (0, s0]"));
   }
-  // 5. No contact: G1(theta_hi, theta_hi + s; b_hi) < 0 on [s0, s_end], theta_hi + s_end >= t_lo;
-  // by step 1 G1 < 0 on (theta, t_lo] at every point. U(s) = b s^2 + a s cos theta + a sin theta + a
-  // >= G1 (-a sin <= a), convex.
-  {
-    const std::vector<Piece>& nc = w.no_contact;
-    st.require(!nc.empty(), step("T1 no contact: the list is not empty"));
-    Num s_end = nc[0].x2;
-    for (const Piece& p : nc)
-      if (mpfr_cmp(p.x2.x, s_end.x) > 0) s_end = p.x2;
-    st.require(le(Tlo, Thmax + Iv(s_end)), step("T1 no contact: theta_hi + s_end >= t_lo"));
-    negative_on(st, nc, s0, s_end,
-                {[&](const Iv& s) { return G1(A, Bhi, Thmax, Thmax + s); }, [&](const Iv& s) { return dG1(A, Bhi, Thmax, Thmax + s); },
-                 [&](const Iv& s) { return F(A, Bhi, Thmax + s); },
-                 [&](const Iv& s) { return Bhi * sqr(s) + A * s * cos(Thmax) + A * sin(Thmax) + A; }},
-                who + ": T1 no contact");
-  }
+  // 5. No contact: G1(theta_hi, theta_hi + s; b_hi) < 0 on [s0, s_end], theta_hi + s_end >= until;
+  // by step 1 G1 < 0 on (theta, until] at every point. U(s) = b s^2 + a s cos theta + a sin theta + a
+  // >= G1 (-a sin <= a), convex. With `skip`, a gap (g1, g2) of the pieces is allowed where
+  // [theta_hi + g1, theta_hi + g2] lies inside the window.
+  const std::vector<Piece>& nc = w.no_contact;
+  st.require(!nc.empty(), step("T1 no contact: the list is not empty"));
+  Num s_end = nc[0].x2;
+  for (const Piece& p : nc)
+    if (mpfr_cmp(p.x2.x, s_end.x) > 0) s_end = p.x2;
+  st.require(le(until, Thmax + Iv(s_end)), step("T1 no contact: theta_hi + s_end >= " + until_name));
+  std::function<bool(const Num&, const Num&)> hole;
+  if (skip) hole = [&](const Num& g1, const Num& g2) { return le(skip->lo, Thmax + Iv(g1)) && le(Thmax + Iv(g2), skip->hi); };
+  negative_on(st, nc, w.s0, s_end,
+              {[&](const Iv& s) { return G1(A, Bhi, Thmax, Thmax + s); }, [&](const Iv& s) { return dG1(A, Bhi, Thmax, Thmax + s); },
+               [&](const Iv& s) { return F(A, Bhi, Thmax + s); },
+               [&](const Iv& s) { return Bhi * sqr(s) + A * s * cos(Thmax) + A * sin(Thmax) + A; }},
+              who + ": T1 no contact", hole);
+}
+
+/// Steps 1-5 of a ball (README.md), the part about T1: for every point of the ball, T1 is the only,
+/// simple zero of G1 in [t_lo, t_hi] and G1 < 0 on (theta, t_lo] (outside the window `skip`, when
+/// given); so T1 is continuous on the ball (where the window is proved free of zeros otherwise).
+void check_T1(Steps& st, const Iv& A, const BallWitness& w, const std::string& who, const Window* skip = nullptr) {
+  const auto step = [&](const std::string& s) { return who + ": " + s; };
+  const Corners c = corners(A, w);
+  start_set_step(st, A, w, c, who);
+  const Iv Tlo(w.t_lo), Thi(w.t_hi);
+  // 2. The bracket: G1 < 0 at t_lo and > 0 at t_hi at every point (Eq. 11, the corners).
+  st.require(lt(c.Thmax, Tlo) && lt(Tlo, Thi), step("T1 bracket: theta_hi < t_lo < t_hi"));
+  st.require(G1(A, c.Bhi, c.Thmax, Tlo).negative(), step("T1 bracket: G1(theta_hi, t_lo; b_hi) < 0"));
+  st.require(G1(A, c.Blo, c.Thmin, Thi).positive(), step("T1 bracket: G1(theta_lo, t_hi; b_lo) > 0"));
+  // 3. dG1 > 0 on [t_lo, t_hi] at the min corner, so everywhere: the zero T1 is simple.
+  negative_on(st, w.simple_root, w.t_lo, w.t_hi,
+              {[&](const Iv& t) { return -dG1(A, c.Blo, c.Thmin, t); }, [&](const Iv& t) { return -F(A, c.Blo, t); },
+               [&](const Iv& t) { return -F_slope(A, t); }, {}},
+              who + ": T1 simple root");
+  no_contact_steps(st, A, w, c, Tlo, "t_lo", skip, who);
+}
+
+/// One ball Theta x B x Q of a covering certificate (README.md): T1 is the only, simple zero of G1
+/// in [t_lo, t_hi] and G1 < 0 before it; the first stop is the simple zero theta2 in (u_lo, u_hi) or
+/// lies in [t3, t2 + 2 pi) + 2 pi k; the case then makes T = max(theta2 - 2 pi k, t2) (AB) or T = t2
+/// (BC), continuous on the ball.
+Outcome check_ball(Steps& st, const Iv& A, const BallWitness& w, const std::string& who) {
+  check_T1(st, A, w, who);  // steps 1-5
+  const auto step = [&](const std::string& s) { return who + ": " + s; };
+  const Num &tlo = w.t_lo, &thi = w.t_hi;
+  const Box& x = w.ball.box;
+  const Iv Blo(x.b_lo), Bhi(x.b_hi), B(x.b_lo, x.b_hi), Qlo(x.q_lo), Qhi(x.q_hi), Q(x.q_lo, x.q_hi);
+  const Corners c = corners(A, w);
+  const Iv &Thmin = c.Thmin, &Thmax = c.Thmax, Tlo(tlo), Thi(thi);
   // 6. The first progression, Eq. (17). dG2/dtheta1 = q > 0, dG2/dtheta = -F(theta) >= 0, dG2/db =
   // 2(t - theta) > 0, dG2/dq = -(t - theta1) <= 0: for t >= T1, G2min(t) <= G2 and, for t >= t_hi,
   // G2 <= G2max(t).
@@ -776,6 +821,135 @@ long check_covering(const json& c) {
   }
   st.require(needs_lemma1.empty() || has_lemma1, "Lemma 1 is needed (first by " + needs_lemma1 + ") and witnesses.lemma1 is given");
   st.require(J[0].hi < J[1].lo, "Lemma 4: J0.hi < J1.lo (disjoint segments)");
+  return st.n;
+}
+
+// ---- Lemma 2: the discontinuities of T1 ------------------------------------------------------------
+
+/// The symmetric tangencies (proof of Lemma 2, Eq. 14): h(z) = 2z - (a/b) cos z = (2k+1) pi.
+Iv h_tangency(const Iv& a, const Iv& b, const Iv& z) { return 2.0 * z - a / b * cos(z); }
+/// (2k+1) pi.
+Iv odd_pi(long long k) { return Iv(static_cast<double>(2 * k + 1)) * pi(); }
+
+/// A pair [x, y] of exact numbers.
+std::pair<Num, Num> exact_pair(const json& j, const std::string& where) {
+  if (!j.is_array() || j.size() != 2) throw Malformed("'" + where + "' is not an array of 2 numbers");
+  return {exact(j[0], where + "[0]"), exact(j[1], where + "[1]")};
+}
+
+/// A T1 ball of Lemma 2 at the point b: {"theta": [x, y] (exact), "T1": {...}}; or, with `right`,
+/// the right piece of a tangency {"theta", "s0", "no_contact"} (no bracket).
+BallWitness read_t1_ball(const json& j, const std::string& where, double b, bool right = false) {
+  BallWitness w;
+  std::tie(w.th_lo, w.th_hi) = exact_pair(field(j, "theta", where), where + "theta");
+  w.ball = {NAN, NAN, {b, b, 0, 0}};
+  if (!right) {
+    read_T1(field(j, "T1", where), where + "T1.", w);
+  } else {
+    w.s0 = exact(field(j, "s0", where), where + "s0");
+    w.no_contact = pieces(field(j, "no_contact", where), where + "no_contact");
+  }
+  return w;
+}
+
+/// Lemma 2 at (a, b) on L = L0 or L2 (docs/certificates.md): the k listed are exactly those with
+/// (2k+1) pi in h(L), k >= 2; each z_k is bracketed, its tangency t* = (2k+1) pi - z_k lies in a
+/// window W where F < 0; left of z_k a T1 ball whose no-contact proof skips W, right of z_k no
+/// contact up to W (then the concavity of G1 on W); T1 balls cover the rest of [lo, hi], which
+/// contains L. So T1 is discontinuous exactly at the z_k on L.
+long check_discontinuities(const json& c, std::string& what) {
+  Steps st;
+  const json& p = field(c, "parameters", "");
+  const double a = parameter(p, "a", "parameters."), b = parameter(p, "b", "parameters.");
+  const json& segment = field(p, "segment", "parameters.");
+  if (segment != "L0" && segment != "L2") throw Malformed("'parameters.segment' is not \"L0\" or \"L2\"");
+  const json& w = field(c, "witnesses", "");
+  const double lo = exact_double(field(w, "lo", "witnesses."), "witnesses.lo"), hi = exact_double(field(w, "hi", "witnesses."), "witnesses.hi");
+  struct Tangency {
+    long long k;
+    Num zl, zh, wl, wh;
+    BallWitness left, right;
+  };
+  std::vector<Tangency> ts;
+  std::vector<BallWitness> cover;
+  const json& jt = field(w, "tangencies", "witnesses."), &jc = field(w, "cover", "witnesses.");
+  if (!jt.is_array() || !jc.is_array()) throw Malformed("'witnesses.tangencies' or 'witnesses.cover' is not an array");
+  for (std::size_t i = 0; i < jt.size(); ++i) {
+    const std::string wi = "witnesses.tangencies[" + std::to_string(i) + "].";
+    Tangency t;
+    t.k = turn(field(jt[i], "k", wi), wi + "k");
+    std::tie(t.zl, t.zh) = exact_pair(field(jt[i], "z", wi), wi + "z");
+    std::tie(t.wl, t.wh) = exact_pair(field(jt[i], "window", wi), wi + "window");
+    t.left = read_t1_ball(field(jt[i], "left", wi), wi + "left.", b);
+    t.right = read_t1_ball(field(jt[i], "right", wi), wi + "right.", b, true);
+    ts.push_back(std::move(t));
+  }
+  for (std::size_t i = 0; i < jc.size(); ++i) cover.push_back(read_t1_ball(jc[i], "witnesses.cover[" + std::to_string(i) + "].", b));
+  // Everything is read: the checks. L and h' = 2 + (a/b) sin z < 0 on (t2, t3) (sin z < -2b/a there).
+  const Iv A(a), B(b);
+  st.require(A.positive() && B.positive() && lt(2.0 * B, A), "a > 0 and 0 < 2b < a");
+  const Iv Llo = Iv(101.0) * pi() / Iv(100.0), Lhi = segment == "L0" ? 1.5 * pi() : Iv(51.0) * pi() / Iv(50.0);
+  st.require(le(Iv(lo), Llo) && le(Lhi, Iv(hi)), "[lo, hi] contains L = " + segment.get<std::string>());
+  st.require(lt(t2(A, B), Iv(lo)) && lt(Iv(hi), t3(A, B)), "t2 < lo and hi < t3 (h decreases on [lo, hi])");
+  // (i) The count: the k listed are consecutive, descending as z ascends, and exactly those k >= 2
+  // with h(L.hi) < (2k+1) pi < h(L.lo).
+  const Iv Hlo = h_tangency(A, B, Lhi), Hhi = h_tangency(A, B, Llo);
+  for (std::size_t i = 0; i < ts.size(); ++i)
+    st.require(ts[i].k == ts[0].k - static_cast<long long>(i), "tangency " + std::to_string(i) + ": k = k_0 - " + std::to_string(i));
+  if (ts.empty()) {  // h(L) lies between (2K-1) pi (or K = 2) and (2K+1) pi
+    const long long K = turn(field(w, "k_above", "witnesses."), "witnesses.k_above");
+    st.require(K >= 2 && lt(Hhi, odd_pi(K)) && (K == 2 || lt(odd_pi(K - 1), Hlo)),
+               "count: none listed, and (2K-1) pi < h(L.hi) (or K = 2), h(L.lo) < (2K+1) pi for K = k_above");
+  } else {
+    const long long kmax = ts.front().k, kmin = ts.back().k;
+    st.require(kmin >= 2 && lt(Hlo, odd_pi(kmin)) && (kmin == 2 || lt(odd_pi(kmin - 1), Hlo)),
+               "count: the least k listed is the least k >= 2 with (2k+1) pi > h(L.hi)");
+    st.require(lt(odd_pi(kmax), Hhi) && lt(Hhi, odd_pi(kmax + 1)), "count: the greatest k listed is the greatest with (2k+1) pi < h(L.lo)");
+  }
+  std::vector<std::pair<Num, Num>> pieces_of_L;  // the closed sets on which T1 is continuous (one-sided at z_k)
+  Num reach;
+  for (std::size_t i = 0; i < ts.size(); ++i) {
+    const Tangency& t = ts[i];
+    const std::string who = "tangency " + std::to_string(i) + " (k = " + std::to_string(t.k) + ")";
+    // (ii) z_k in (z_lo, z_hi) inside L; t* = z + s = (2k+1) pi - z with the flight s = -(a/b) cos z > 0
+    // is a double root of G1(z_k, .) (analytic); F < 0 on W makes G1(z_k, .) <= 0 on W.
+    const Iv Zl(t.zl), Zh(t.zh), Z(t.zl, t.zh), Wl(t.wl), Wh(t.wh), Tstar = odd_pi(t.k) - Z;
+    st.require(lt(Llo, Zl) && lt(Zl, Zh) && lt(Zh, Lhi), who + ": L.lo < z_lo < z_hi < L.hi");
+    st.require((h_tangency(A, B, Zl) - odd_pi(t.k)).positive() && (h_tangency(A, B, Zh) - odd_pi(t.k)).negative(),
+               who + ": z bracket: h(z_lo) > (2k+1) pi > h(z_hi)");
+    st.require(cos(Z).negative(), who + ": the flight -(a/b) cos z > 0");
+    st.require(lt(Wl, Tstar) && lt(Tstar, Wh), who + ": window: wl < t* = (2k+1) pi - z < wh");
+    st.require(F(A, B, Iv(t.wl, t.wh)).negative(), who + ": window: F < 0 on W (G1 concave in t there)");
+    // (iii) Left: T1 on [theta_lo, z_k) (theta_hi >= z_hi), W skipped: for theta < z_k, G1(theta, .) <
+    // G1(z_k, .) <= 0 on W; the bracket after W.
+    st.require(mpfr_cmp(t.left.th_lo.x, t.zl.x) <= 0 && mpfr_cmp(t.left.th_hi.x, t.zh.x) >= 0, who + ": left ball: theta_lo <= z_lo, theta_hi >= z_hi");
+    const Window W{Wl, Wh};
+    check_T1(st, A, t.left, who + " left ball", &W);
+    st.require(lt(Wh, Iv(t.left.t_lo)), who + ": left ball: wh < t_lo (T1(z_k - 0) > T1(z_k) = t*)");
+    // (iv) Right: G1 < 0 on (theta, wl] on [theta_lo, theta_hi], which contains [z_k, z_hi], theta_hi < wl; for
+    // theta >= z_k, G1(theta, t*) >= 0 and G1 concave on W: T1 is the one crossing in (wl, t*].
+    st.require(mpfr_cmp(t.right.th_lo.x, t.zl.x) <= 0 && mpfr_cmp(t.right.th_hi.x, t.zh.x) >= 0 && lt(Iv(t.right.th_hi), Wl),
+               who + ": right piece: theta_lo <= z_lo, z_hi <= theta_hi < wl");
+    const Corners cr = corners(A, t.right);
+    start_set_step(st, A, t.right, cr, who + " right piece");
+    no_contact_steps(st, A, t.right, cr, Wl, "wl", nullptr, who + " right piece");
+    st.require(i == 0 || mpfr_cmp(ts[i - 1].zh.x, t.zl.x) < 0, who + ": z ascending");
+    pieces_of_L.emplace_back(t.left.th_lo, t.right.th_hi);
+  }
+  // (v) T1 balls cover the rest: with the tangencies' [left theta_lo, right theta_hi], [lo, hi].
+  for (std::size_t i = 0; i < cover.size(); ++i) {
+    check_T1(st, A, cover[i], "cover ball " + std::to_string(i));
+    pieces_of_L.emplace_back(cover[i].th_lo, cover[i].th_hi);
+  }
+  std::sort(pieces_of_L.begin(), pieces_of_L.end(), [](const auto& x, const auto& y) { return mpfr_cmp(x.first.x, y.first.x) < 0; });
+  mpfr_set_d(reach.x, lo, MPFR_RNDN);
+  bool started = false;
+  for (const auto& [x, y] : pieces_of_L) {
+    if (mpfr_cmp(x.x, reach.x) > 0) break;  // (reach, x) is covered by nothing
+    if (mpfr_cmp(y.x, reach.x) >= 0) reach = y, started = true;
+  }
+  st.require(started && mpfr_cmp_d(reach.x, hi) >= 0, "the tangencies' pieces and the cover balls cover [lo, hi] (no gap)");
+  what = std::to_string(ts.size()) + " discontinuities of T1 on " + segment.get<std::string>();
   return st.n;
 }
 
@@ -1079,9 +1253,11 @@ int check_file(const std::string& path) {
     else if (statement == "not_superstable") steps = check_not_superstable(c);
     else if (statement == "window") steps = check_window(c);
     else if (statement == "theorem2_counterexample") steps = check_theorem2_counterexample(c);
+    else if (statement == "discontinuities") steps = check_discontinuities(c, what);
     else
       throw Malformed("unknown statement '" + statement +
-                      "' (this checker reads vartheta0, lemma1, b0, covering, coverings, periodic, superstable, not_superstable, window, theorem2_counterexample)");
+                      "' (this checker reads vartheta0, lemma1, b0, covering, coverings, periodic, superstable, not_superstable, window, "
+                      "theorem2_counterexample, discontinuities)");
     std::printf("OK %s: %s, %ld steps re-verified%s\n", path.c_str(), statement.c_str(), steps, what.empty() ? "" : ("; " + what).c_str());
     return 0;
   } catch (const Failed& e) {

@@ -19,6 +19,7 @@
 #include "dfchaos/certified/ball.hpp"
 #include "dfchaos/certified/covering.hpp"
 #include "dfchaos/certified/periodic.hpp"
+#include "dfchaos/certified/discontinuities.hpp"
 #include "dfchaos/certified/progression.hpp"
 #include "dfchaos/certified/superstable.hpp"
 #include "dfchaos/certified/vartheta0.hpp"
@@ -31,10 +32,11 @@ inline constexpr const char* kCertificateFormat = "dfchaos-certificate";
 /// The format version (`"version"`); a checker refuses any other.
 inline constexpr int kCertificateVersion = 1;
 
-/// Whether `dfchaos certify what` can write a certificate (vartheta0, lemma1, b0, covering, periodic, superstable).
+/// Whether `dfchaos certify what` can write a certificate (vartheta0, lemma1, b0, discontinuities, covering,
+/// periodic, superstable: today every statement of the tool).
 bool has_certificate(const std::string& what);
 /// The statements with a certificate format, in words (for messages).
-inline constexpr const char* kCertificateStatements = "vartheta0, lemma1, b0, covering, periodic or superstable";
+inline constexpr const char* kCertificateStatements = "vartheta0, lemma1, b0, discontinuities, covering, periodic or superstable";
 
 /// The double x as a C99 hexadecimal floating-point string (`%a`: exactly x, e.g. "0x1p+0").
 std::string hex_double(double x);
@@ -102,6 +104,14 @@ kit::Json certificate_window(double a, double q, const certified::WindowProof& p
 /// hold at (a, b, q) but u(t2) > 0 > u(t3). `p` must be proved with its witnesses recorded.
 kit::Json certificate_theorem2_counterexample(double a, double b, double q, const certified::Theorem2Counterexample& p,
                                               const std::string& claim);
+
+/// The certificate of Lemma 2 at (a, b) on the segment "L0" or "L2" (statement discontinuities): the
+/// covered segment, for each discontinuity z_k its k, the bracket of z_k, the window W around the
+/// tangency t* on which F < 0, the T1 ball left of z_k (W skipped in its no-contact proof) and the
+/// no-contact proof right of z_k up to W; and the T1 balls covering the rest. `p` must be proved with
+/// `record`. @throws std::logic_error otherwise.
+kit::Json certificate_discontinuities(double a, double b, const std::string& segment, const certified::DiscontinuityProof& p,
+                                      const std::string& claim);
 
 /// The text of a certificate as every writer stores it (the tool, Python and the experiments).
 std::string certificate_text(const kit::Json& certificate);

@@ -52,7 +52,8 @@ kit::Json lemma1_sub_boxes(const certified::Lemma1Proof& p) {
 }  // namespace
 
 bool has_certificate(const std::string& what) {
-  return what == "vartheta0" || what == "lemma1" || what == "b0" || what == "covering" || what == "periodic" || what == "superstable";
+  return what == "vartheta0" || what == "lemma1" || what == "b0" || what == "discontinuities" || what == "covering" || what == "periodic" ||
+         what == "superstable";
 }
 
 std::string hex_double(double x) {
@@ -179,6 +180,15 @@ kit::Json pieces(const certified::NegativityRecord& r) {
   return j;
 }
 
+/// `{"s0", "t_lo", "t_hi", "no_contact", "simple_root"}`: the T1 witnesses of a recorded proof.
+kit::Json t1_witness(const certified::FirstHitProof& p) {
+  if (!p.verdict.proved || (p.no_contact.empty() && p.simple_root.empty())) throw std::logic_error("certificate: a T1 proof is not proved or not recorded");
+  kit::Json t1 = kit::Json::object();
+  t1.set("s0", hex_exact(p.s0)).set("t_lo", hex_exact(p.t_lo)).set("t_hi", hex_exact(p.t_hi));
+  t1.set("no_contact", pieces(p.no_contact)).set("simple_root", pieces(p.simple_root));
+  return t1;
+}
+
 /// One ball of a covering proof: its set, the T1 witnesses, the case and the first progression's.
 kit::Json ball(const certified::BallProof& b) {
   using certified::TCase;
@@ -196,10 +206,7 @@ kit::Json ball(const certified::BallProof& b) {
   }
   j.set("b", hex_array({b.box.b_lo, b.box.b_hi}));
   j.set("q", hex_array({b.box.q_lo, b.box.q_hi}));
-  kit::Json t1 = kit::Json::object();
-  t1.set("s0", hex_exact(T.t1.s0)).set("t_lo", hex_exact(T.t1.t_lo)).set("t_hi", hex_exact(T.t1.t_hi));
-  t1.set("no_contact", pieces(T.t1.no_contact)).set("simple_root", pieces(T.t1.simple_root));
-  j.set("T1", t1);
+  j.set("T1", t1_witness(T.t1));
   j.set("case", T.t_case == TCase::ScenarioAB ? "AB" : T.t_case == TCase::ScenarioBC ? "BC" : "none");
   j.set("k", static_cast<long long>(T.turn));
   if (T.stop_arc.verdict.proved) {
@@ -396,6 +403,58 @@ kit::Json certificate_periodic(const certified::CoveringProof& c, const std::vec
     all.push(o);
   }
   w.set("orbits", all);
+  j.set("witnesses", w);
+  return j;
+}
+
+namespace {
+
+/// `{"theta": [lo, hi], "T1": {...}}`: a T1 ball of Lemma 2 (exact ends, at the certificate's b).
+kit::Json t1_ball(const certified::T1Piece& x) {
+  kit::Json th = kit::Json::array();
+  th.push(hex_exact(x.lo)).push(hex_exact(x.hi));
+  kit::Json j = kit::Json::object();
+  j.set("theta", th).set("T1", t1_witness(x.proof));
+  return j;
+}
+
+/// `[hex_exact(lo), hex_exact(hi)]`.
+kit::Json exact_pair(const certified::Ball& lo, const certified::Ball& hi) {
+  kit::Json j = kit::Json::array();
+  j.push(hex_exact(lo)).push(hex_exact(hi));
+  return j;
+}
+
+}  // namespace
+
+kit::Json certificate_discontinuities(double a, double b, const std::string& segment, const certified::DiscontinuityProof& p,
+                                      const std::string& claim) {
+  if (!p.verdict.proved) throw std::logic_error("certificate_discontinuities: not proved");
+  if (segment != "L0" && segment != "L2") throw std::logic_error("certificate_discontinuities: segment L0 or L2");
+  kit::Json j = header("discontinuities", claim);
+  kit::Json par = kit::Json::object();
+  par.set("a", exact_number(a)).set("b", exact_number(b)).set("segment", segment);
+  j.set("parameters", par);
+  kit::Json w = kit::Json::object();
+  w.set("lo", hex_double(p.lo)).set("hi", hex_double(p.hi));
+  kit::Json ts = kit::Json::array();
+  for (const certified::Tangency& t : p.z) {
+    if (t.right_no_contact.empty()) throw std::logic_error("certificate_discontinuities: the proof was not recorded");
+    kit::Json e = kit::Json::object();
+    e.set("k", static_cast<long long>(t.k));
+    e.set("z", exact_pair(t.z.lower_ball(), t.z.upper_ball()));
+    e.set("window", exact_pair(t.window_lo, t.window_hi));
+    e.set("left", t1_ball(t.left));
+    kit::Json r = kit::Json::object();
+    r.set("theta", exact_pair(t.right_lo, t.right_hi)).set("s0", hex_exact(t.right_s0)).set("no_contact", pieces(t.right_no_contact));
+    e.set("right", r);
+    ts.push(e);
+  }
+  w.set("tangencies", ts);
+  if (p.z.empty()) w.set("k_above", p.k_above);
+  kit::Json cover = kit::Json::array();
+  for (const certified::T1Piece& x : p.cover) cover.push(t1_ball(x));
+  w.set("cover", cover);
   j.set("witnesses", w);
   return j;
 }

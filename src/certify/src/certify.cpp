@@ -106,8 +106,10 @@ Result certify(const Request& r) {
     const ParameterBox box = box_from(r, false, false);
     if (r.segment != "L0" && r.segment != "L2") throw InvalidParameter("segment", "L0 or L2 (got '" + r.segment + "')");
     const bool l2 = r.segment == "L2";
-    const DiscontinuityProof p = prove_discontinuities(box.a, box.b_lo, L_101pi_100(), l2 ? L_51pi_50() : L_3pi_2());
-    return {p.verdict.proved, to_json(box.a, box.b_lo, p, l2 ? "L2 = [101pi/100, 51pi/50]" : "L0 = [101pi/100, 3pi/2]")};
+    const DiscontinuityProof p = prove_discontinuities(box.a, box.b_lo, L_101pi_100(), l2 ? L_51pi_50() : L_3pi_2(), 4000, r.certificate);
+    Result c{p.verdict.proved, to_json(box.a, box.b_lo, p, l2 ? "L2 = [101pi/100, 51pi/50]" : "L0 = [101pi/100, 3pi/2]")};
+    if (c.proved && r.certificate) c.certificate = certificate_discontinuities(box.a, box.b_lo, r.segment, p, claim_of(c));
+    return c;
   }
   if (r.what == "covering") {
     const ParameterBox box = box_from(r, true, true);

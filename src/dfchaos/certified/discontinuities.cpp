@@ -16,17 +16,21 @@ Ball L_3pi_2() { return Ball::pi() * 1.5; }
 
 namespace {
 
-/// Covers [x, y] by closed balls on which certify_T1 proves a simple first root.
-Outcome cover_simple(const ParameterBalls& m, double x, double y, Budget& budget, int& balls) {
+/// Covers [x, y] by closed balls on which certify_T1 proves a simple first root; with `record`, keeps
+/// each ball's proof there.
+Outcome cover_simple(const ParameterBalls& m, double x, double y, Budget& budget, int& balls, std::vector<T1Piece>* record) {
   if (!(x < y)) return Outcome::ok();
   struct Item { double lo, hi; int depth; };
   std::vector<Item> stack{{x, y, 0}};
   while (!stack.empty()) {
     const Item it = stack.back();
     stack.pop_back();
-    const FirstHitProof p = certify_T1(m, StartSet::interval(it.lo, it.hi), budget);
+    FirstHitOptions opt;
+    opt.record = record != nullptr;
+    FirstHitProof p = certify_T1(m, StartSet::interval(it.lo, it.hi), budget, opt);
     if (p.verdict) {
       ++balls;
+      if (record) record->push_back({Ball(it.lo), Ball(it.hi), std::move(p)});
       continue;
     }
     const double mid = 0.5 * (it.lo + it.hi);
@@ -41,7 +45,7 @@ Outcome cover_simple(const ParameterBalls& m, double x, double y, Budget& budget
 
 }  // namespace
 
-DiscontinuityProof prove_discontinuities(double a, double b, const Ball& lo, const Ball& hi, int max_tangencies) {
+DiscontinuityProof prove_discontinuities(double a, double b, const Ball& lo, const Ball& hi, int max_tangencies, bool record) {
   const auto start = std::chrono::steady_clock::now();
   DiscontinuityProof r;
   auto finish = [&](Outcome v) {
@@ -68,6 +72,8 @@ DiscontinuityProof prove_discontinuities(double a, double b, const Ball& lo, con
       return finish(Outcome::fail("Lemma 2: count", "h at an end of L is too close to (2k+1) pi, k = " + std::to_string(k)));
     ks.push_back(k);
   }
+  r.k_above = k_first;
+  while (!lt(h_lo, Ball(static_cast<double>(2 * r.k_above + 1)) * pi) && r.k_above <= k_last) ++r.k_above;
   if (static_cast<int>(ks.size()) > max_tangencies)
     return finish(Outcome::fail("Lemma 2: count", std::to_string(ks.size()) + " tangencies exceed the bound " + std::to_string(max_tangencies)));
   // Enclose each z_k (ascending z = descending k).
@@ -99,6 +105,8 @@ DiscontinuityProof prove_discontinuities(double a, double b, const Ball& lo, con
       window = m.F(Ball::hull(wl, wh)).is_negative();
     }
     if (!window) return finish(Outcome::fail("Lemma 2: tangency window", "F < 0 near t* not proved at z = " + t.z.mid_str(20)));
+    t.window_lo = wl;
+    t.window_hi = wh;
     // Left piece [z - eta', z): skip W, the later root.
     const double eta_l = std::max(gap_left / 8, 0.0);
     const double left_start = z_lo - eta_l;
@@ -106,24 +114,33 @@ DiscontinuityProof prove_discontinuities(double a, double b, const Ball& lo, con
     opt.skip = {{wl, wh}};
     opt.guess_at_max = oracle::T1(a, b, z_lo - std::max(1e-9, 1e-6 * eta_l));
     opt.guess_at_min = oracle::T1(a, b, left_start);
-    const FirstHitProof left = certify_T1(m, StartSet::balls(Ball(left_start), t.z.upper_ball()), budget, opt);
+    opt.record = record;
+    FirstHitProof left = certify_T1(m, StartSet::balls(Ball(left_start), t.z.upper_ball()), budget, opt);
     if (!left.verdict) return finish(Outcome::fail("Lemma 2: left of a tangency", "z = " + t.z.mid_str(20) + ": " + left.verdict.describe()));
     if (!lt(wh, left.t_lo)) return finish(Outcome::fail("Lemma 2: left of a tangency", "the later root is not after the window"));
     ++r.balls;
     t.left_limit = left.enclosure;
     t.jump = left.t_lo - t.t_star.upper_ball();
+    if (record) t.left = {Ball(left_start), t.z.upper_ball(), std::move(left)};
     // Right piece [z, z + eta]: concavity on W.
     double eta = std::min(gap_right / 8, (delta * delta).mid() / (8 * t.flight.mid()));
     Outcome right = Outcome::fail("Lemma 2: right of a tangency", "not tried");
-    for (int j = 0; j < 8 && !(right = certify_no_contact(m, StartSet::balls(t.z.lower_ball(), Ball(z_hi + eta)), wl, budget)); ++j) eta /= 4;
+    for (int j = 0; j < 8; ++j, eta /= 4) {
+      t.right_no_contact.clear();
+      right = certify_no_contact(m, StartSet::balls(t.z.lower_ball(), Ball(z_hi + eta)), wl, budget, {}, nullptr, &t.right_s0,
+                                 record ? &t.right_no_contact : nullptr);
+      if (right) break;
+    }
     if (!right) return finish(Outcome::fail("Lemma 2: right of a tangency", "z = " + t.z.mid_str(20) + ": " + right.describe()));
     ++r.balls;
+    t.right_lo = t.z.lower_ball();
+    t.right_hi = Ball(z_hi + eta);
     // The stretch between the previous piece and this tangency's left piece.
-    if (Outcome v = cover_simple(m, cursor, left_start, budget, r.balls); !v) return finish(v);
+    if (Outcome v = cover_simple(m, cursor, left_start, budget, r.balls, record ? &r.cover : nullptr); !v) return finish(v);
     t.verdict = Outcome::ok();
     cursor = z_hi + eta;
   }
-  if (Outcome v = cover_simple(m, cursor, r.hi, budget, r.balls); !v) return finish(v);
+  if (Outcome v = cover_simple(m, cursor, r.hi, budget, r.balls, record ? &r.cover : nullptr); !v) return finish(v);
   return finish(Outcome::ok());
 }
 

@@ -32,6 +32,13 @@
 
 namespace dfchaos::certified {
 
+/// A proof of \f$T_1\f$ over the start interval [lo, hi] (exact ends), kept for a certificate.
+struct T1Piece {
+  Ball lo;              ///< least start phase (exact)
+  Ball hi;              ///< greatest start phase (exact)
+  FirstHitProof proof;  ///< certify_T1 with FirstHitOptions::record
+};
+
 /// A certified discontinuity of \f$T_1\f$.
 struct Tangency {
   Outcome verdict;     ///< proved: first-contact tangency, T1 continuous on both one-sided neighbourhoods, jump
@@ -41,6 +48,14 @@ struct Tangency {
   Ball t_star;         ///< \f$T_1(z) = z + s\f$ (the tangency, \f$T_1(z+0)\f$)
   Ball left_limit;     ///< enclosure of \f$T_1(z - 0)\f$
   Ball jump;           ///< lower bound of \f$T_1(z-0) - T_1(z)\f$
+  Ball window_lo;      ///< W = [window_lo, window_hi] around t* on which F < 0 (exact ends)
+  Ball window_hi;      ///< (see window_lo)
+  // The witnesses, kept when prove_discontinuities records (docs/certificates.md, discontinuities):
+  T1Piece left;                       ///< T1 on [z - eta', z.hi] with W skipped in the no-contact proof
+  Ball right_lo;                      ///< the right piece's start phases [right_lo, right_hi] (exact ends)
+  Ball right_hi;                      ///< (see right_lo)
+  Ball right_s0;                      ///< its departure length
+  NegativityRecord right_no_contact;  ///< G1(right_hi, right_hi + s; b) < 0 on these s-pieces, up to window_lo
 };
 
 /// Lemma 2 on a segment.
@@ -49,13 +64,17 @@ struct DiscontinuityProof {
   double lo = 0;            ///< left end of the segment covered (contains the requested one)
   double hi = 0;            ///< right end of the segment covered
   std::vector<Tangency> z;  ///< ascending
+  long long k_above = 0;    ///< the least k >= 2 with (2k+1) pi > h(hi) proved (= the last k of z when there is one)
   int balls = 0;            ///< certify_T1 calls that succeeded (pieces of the cover)
+  std::vector<T1Piece> cover;  ///< when recording: the T1 balls between the tangencies' pieces
   double seconds = 0;       ///< wall time
 };
 
 /// Lemma 2 at (a, b) on the segment [lo, hi] (balls, e.g. 101 pi/100 and 3 pi/2): covers
 /// [lower(lo), upper(hi)]. At most `max_tangencies` discontinuities are handled (else not proved).
-DiscontinuityProof prove_discontinuities(double a, double b, const Ball& lo, const Ball& hi, int max_tangencies = 4000);
+/// With `record`, every witness a certificate needs is kept (Tangency::left, right_*, cover); without,
+/// the proof does no more work than before.
+DiscontinuityProof prove_discontinuities(double a, double b, const Ball& lo, const Ball& hi, int max_tangencies = 4000, bool record = false);
 
 /// \f$L_0 = [101\pi/100, 3\pi/2]\f$ and \f$L_2 = [101\pi/100, 51\pi/50]\f$ of Lemma 2 and Lemma 4, as balls.
 Ball L_101pi_100();
