@@ -282,10 +282,11 @@ const Experiment experiment{
         if (!fast) {
           const double b = 5e-5, q = 0.85;
           const ParameterBox box = ParameterBox::point(1.0, b, q);
-          const DiscontinuityProof d = prove_discontinuities(1.0, b, L_101pi_100(), L_51pi_50());
+          const DiscontinuityProof d = prove_discontinuities(1.0, b, L_101pi_100(), L_51pi_50(), 4000, true);
           CoveringOptions opt;
           opt.lo = L_101pi_100().upper();
           opt.hi = L_51pi_50().lower();
+          opt.record = true;  // for the certificate
           const CoveringProof cov = prove_covering(box, opt);
           // Each J strictly between two consecutive certified discontinuities of L2.
           auto branch_of = [&](const SegmentProof& J) {
@@ -299,11 +300,13 @@ const Experiment experiment{
           e.set("discontinuities_L2", static_cast<long long>(d.z.size())).set("covering", to_json(cov));
           e.set("J0_between_z", b0 >= 0 ? Json(Json::array().push(b0 + 1).push(b0 + 2)) : Json("no"));
           e.set("J1_between_z", b1 >= 0 ? Json(Json::array().push(b1 + 1).push(b1 + 2)) : Json("no"));
-          auto& c = certified_claim(out, "cert.lemma4.paper_construction", "Lemma 4 (proof)",
-                                    "The paper's construction at (q/a, b/a) = (0.85, 5e-5), double values: T1 has n >= 3 certified discontinuities "
-                                    "z_1 < ... < z_n in L2 = [101pi/100, 51pi/50], and two certified covering segments lie in branches (z_i, z_(i+1)) "
-                                    "of L2, as in the proof of Lemma 4 (T1(z_i) mod 2pi = pi - z_i mod 2pi lies in L1 = [197pi/100, t3]).",
-                                    e, ok, cov.verdict.proved ? &d.verdict : &cov.verdict);
+          const std::string statement =
+              "The paper's construction at (q/a, b/a) = (0.85, 5e-5), double values: T1 has n >= 3 certified discontinuities "
+              "z_1 < ... < z_n in L2 = [101pi/100, 51pi/50], and two certified covering segments lie in branches (z_i, z_(i+1)) "
+              "of L2, as in the proof of Lemma 4 (T1(z_i) mod 2pi = pi - z_i mod 2pi lies in L1 = [197pi/100, t3]).";
+          if (ok) run.certificate("cert.lemma4.paper_construction", certificate_text(certificate_paper_construction(cov, d, statement)));
+          auto& c = certified_claim(out, "cert.lemma4.paper_construction", "Lemma 4 (proof)", statement, e, ok,
+                                    cov.verdict.proved ? &d.verdict : &cov.verdict);
           c.parameter_object(Json::object().set("a", 1.0).set("b", b).set("q", q));
           tex_row("Lemma 4 (paper's L1, L2)", "(0.85, " + num(b) + ")",
                   ok ? "$n=" + std::to_string(d.z.size()) + "$ on $L_2$; $J_0=[" + fmt(cov.J0.lo, 8) + ", " + fmt(cov.J0.hi, 8) + "]$, $J_1=[" +

@@ -102,6 +102,9 @@ def bind(path, cert, claim, part):
     if cert.get("statement") == "periodic":  # one record per orbit, each proved
         if not rec.get("orbits") or not all(o.get("proved") for o in rec["orbits"]):
             return "the claim's record of an orbit is not proved"
+    elif cert.get("statement") == "paper_construction":  # the record of its covering, proved
+        if not rec.get("covering", {}).get("proved"):
+            return "the claim's record of the covering is not proved"
     elif cert.get("statement") not in ("not_superstable", "theorem2_counterexample") and not rec.get("proved"):
         return "the claim's record of this proof is not proved"
     if cert.get("claim") not in (rec.get("statement"), claim["statement"]):
@@ -137,6 +140,12 @@ def bind(path, cert, claim, part):
             return "its number of discontinuities is not the claim's"
         if [t.get("k") for t in w["tangencies"]] != [z.get("k") for z in rec.get("discontinuities", [])]:
             return "its k of the discontinuities are not the claim's"
+    if cert.get("statement") == "paper_construction":  # the claim's J0, J1 and number of discontinuities on L2
+        segs, dis = w["covering"]["witnesses"]["segments"], w["discontinuities"]["witnesses"]["tangencies"]
+        if [[exact(g["lo"]), exact(g["hi"])] for g in segs] != [[float(x) for x in rec["covering"][n]] for n in ("J0", "J1")]:
+            return "its J0, J1 are not the claim's"
+        if len(dis) != int(rec.get("discontinuities_L2", -1)):
+            return "its number of discontinuities on L2 is not the claim's"
     if cert.get("statement") == "window":
         got = [exact(w[k]) for k in ("left_out", "left_in", "right_in", "right_out")]
         if got != [float(x) for x in rec.get("left_edge", []) + rec.get("right_edge", [])]:

@@ -1161,6 +1161,41 @@ long check_coverings(const json& c) {
   return st.n;
 }
 
+/// The paper's construction in the proof of Lemma 4 at the point (a, b, q): a `covering` certificate
+/// there and a `discontinuities` certificate on L2, each checked as such; at least three
+/// discontinuities z_1 < ... < z_n of T1 on L2 (all of them, by the latter), and each segment J of
+/// the covering inside a branch: z_i < J < z_(i+1) for consecutive i. The paper's remark that
+/// T1(z_i) mod 2 pi = pi - z_i mod 2 pi lies in L1 = [197 pi/100, t3] holds as z_i is in L2 and
+/// 199 pi/100 < t3 (checked).
+long check_paper_construction(const json& c, std::string& what) {
+  Steps st;
+  const auto [a, b, q] = read_point(c);
+  const json& w = field(c, "witnesses", "");
+  const json &cov = field(w, "covering", "witnesses."), &dis = field(w, "discontinuities", "witnesses.");
+  if (field(cov, "statement", "witnesses.covering.") != "covering" || field(dis, "statement", "witnesses.discontinuities.") != "discontinuities")
+    throw Malformed("'witnesses' does not hold a covering and a discontinuities certificate");
+  const auto [ac, box] = read_box(cov);
+  const json& dp = field(dis, "parameters", "witnesses.discontinuities.");
+  st.require(ac == a && box.b_lo == b && box.b_hi == b && box.q_lo == q && box.q_hi == q, "the covering is at the point (a, b, q)");
+  st.require(parameter(dp, "a", "witnesses.discontinuities.parameters.") == a && parameter(dp, "b", "witnesses.discontinuities.parameters.") == b &&
+                 field(dp, "segment", "witnesses.discontinuities.parameters.") == "L2",
+             "the discontinuities are at (a, b), on L2");
+  st.n += check_covering(cov) + check_discontinuities(dis, what);
+  const json& ts = field(field(dis, "witnesses", ""), "tangencies", "witnesses.discontinuities.witnesses.");
+  st.require(ts.size() >= 3, "at least three discontinuities on L2");
+  std::vector<Num> zl, zh;
+  for (const json& t : ts) zl.push_back(exact(t["z"][0], "z")), zh.push_back(exact(t["z"][1], "z"));
+  for (std::size_t s = 0; s < 2; ++s) {
+    const json& seg = cov["witnesses"]["segments"][s];
+    const double lo = exact_double(seg["lo"], "lo"), hi = exact_double(seg["hi"], "hi");
+    bool inside = false;
+    for (std::size_t i = 0; i + 1 < zl.size(); ++i) inside = inside || (mpfr_cmp_d(zh[i].x, lo) < 0 && mpfr_cmp_d(zl[i + 1].x, hi) > 0);
+    st.require(inside, std::string(s == 0 ? "J0" : "J1") + " lies strictly between two consecutive discontinuities");
+  }
+  st.require(lt(Iv(199.0) / Iv(100.0) * pi(), t3(Iv(a), Iv(b))), "199 pi/100 < t3 (T1(z_i) mod 2 pi in L1)");
+  return st.n;
+}
+
 /// A ball of a periodic certificate at the point (b, q) whose phases are exactly [lo, hi]: T is
 /// continuous on it and, with the theta2 bracket above t2 + 2 pi k (case AB), T = theta2 - 2 pi k
 /// lies in the bracket; returns that enclosure of T.
@@ -1254,10 +1289,11 @@ int check_file(const std::string& path) {
     else if (statement == "window") steps = check_window(c);
     else if (statement == "theorem2_counterexample") steps = check_theorem2_counterexample(c);
     else if (statement == "discontinuities") steps = check_discontinuities(c, what);
+    else if (statement == "paper_construction") steps = check_paper_construction(c, what);
     else
       throw Malformed("unknown statement '" + statement +
                       "' (this checker reads vartheta0, lemma1, b0, covering, coverings, periodic, superstable, not_superstable, window, "
-                      "theorem2_counterexample, discontinuities)");
+                      "theorem2_counterexample, discontinuities, paper_construction)");
     std::printf("OK %s: %s, %ld steps re-verified%s\n", path.c_str(), statement.c_str(), steps, what.empty() ? "" : ("; " + what).c_str());
     return 0;
   } catch (const Failed& e) {

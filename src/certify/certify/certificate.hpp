@@ -73,6 +73,13 @@ kit::Json certificate_b0(double a, double q, const certified::Lemma1Bound& p, co
 /// p.lemma1 is not proved).
 kit::Json certificate_covering(const certified::CoveringProof& p, const std::string& claim);
 
+/// The certificate of the paper's construction in the proof of Lemma 4 (statement paper_construction):
+/// at the point of `cov`, the covering's certificate and Lemma 2's on L2 = [101pi/100, 51pi/50] (`d`,
+/// recorded), from which the checker shows each covering segment strictly between two consecutive
+/// discontinuities z_i < z_(i+1) of T1 on L2, with at least three discontinuities.
+/// @throws std::logic_error if either proof is not proved or not recorded.
+kit::Json certificate_paper_construction(const certified::CoveringProof& cov, const certified::DiscontinuityProof& d, const std::string& claim);
+
 /// One box of a region as a `covering` certificate in compact text (one line), for
 /// certificate_coverings_text(): certificate_covering(p, statement_covering(p.box)).dump(0).
 std::string covering_box_text(const certified::CoveringProof& p);

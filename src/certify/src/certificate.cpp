@@ -459,6 +459,18 @@ kit::Json certificate_discontinuities(double a, double b, const std::string& seg
   return j;
 }
 
+kit::Json certificate_paper_construction(const certified::CoveringProof& cov, const certified::DiscontinuityProof& d, const std::string& claim) {
+  if (!cov.box.is_point()) throw std::logic_error("certificate_paper_construction: the covering is not at a point");
+  kit::Json j = header("paper_construction", claim);
+  j.set("parameters", point_parameters(cov.box.a, cov.box.b_lo, cov.box.q_lo));
+  kit::Json w = kit::Json::object();
+  w.set("covering", certificate_covering(cov, statement_covering(cov.box)));
+  w.set("discontinuities", certificate_discontinuities(cov.box.a, cov.box.b_lo, "L2", d,
+                                                       statement_discontinuities("L2 = [101pi/100, 51pi/50]", d.z.size())));
+  j.set("witnesses", w);
+  return j;
+}
+
 std::string certificate_text(const kit::Json& certificate) { return certificate.dump(1); }
 
 WrittenCertificate write_certificate(const std::filesystem::path& path, const kit::Json& certificate) {
