@@ -189,6 +189,13 @@ kit::Json t1_witness(const certified::FirstHitProof& p) {
   return t1;
 }
 
+/// `[hex_exact(lo), hex_exact(hi)]`.
+kit::Json exact_pair(const certified::Ball& lo, const certified::Ball& hi) {
+  kit::Json j = kit::Json::array();
+  j.push(hex_exact(lo)).push(hex_exact(hi));
+  return j;
+}
+
 /// One ball of a covering proof: its set, the T1 witnesses, the case and the first progression's.
 kit::Json ball(const certified::BallProof& b) {
   using certified::TCase;
@@ -202,7 +209,7 @@ kit::Json ball(const certified::BallProof& b) {
     th.push("t2").push(hex_exact(b.theta_hi));
     j.set("theta", th);
   } else {
-    j.set("theta", kit::Json::array().push(hex_exact(b.theta_lo)).push(hex_exact(b.theta_hi)));
+    j.set("theta", exact_pair(b.theta_lo, b.theta_hi));
   }
   j.set("b", hex_array({b.box.b_lo, b.box.b_hi}));
   j.set("q", hex_array({b.box.q_lo, b.box.q_hi}));
@@ -394,7 +401,7 @@ kit::Json certificate_periodic(const certified::CoveringProof& c, const std::vec
     kit::Json boxes = kit::Json::array();
     for (const certified::OrbitBoxProof& x : p.boxes) {
       kit::Json e = kit::Json::object();
-      e.set("X", kit::Json::array().push(hex_exact(x.lo)).push(hex_exact(x.hi)));
+      e.set("X", exact_pair(x.lo, x.hi));
       e.set("on", ball(x.on)).set("at_lo", ball(x.at_lo)).set("at_hi", ball(x.at_hi));
       boxes.push(e);
     }
@@ -411,19 +418,11 @@ namespace {
 
 /// `{"theta": [lo, hi], "T1": {...}}`: a T1 ball of Lemma 2 (exact ends, at the certificate's b).
 kit::Json t1_ball(const certified::T1Piece& x) {
-  kit::Json th = kit::Json::array();
-  th.push(hex_exact(x.lo)).push(hex_exact(x.hi));
   kit::Json j = kit::Json::object();
-  j.set("theta", th).set("T1", t1_witness(x.proof));
+  j.set("theta", exact_pair(x.lo, x.hi)).set("T1", t1_witness(x.proof));
   return j;
 }
 
-/// `[hex_exact(lo), hex_exact(hi)]`.
-kit::Json exact_pair(const certified::Ball& lo, const certified::Ball& hi) {
-  kit::Json j = kit::Json::array();
-  j.push(hex_exact(lo)).push(hex_exact(hi));
-  return j;
-}
 
 }  // namespace
 
