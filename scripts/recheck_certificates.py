@@ -38,6 +38,7 @@ def exact(x):
 
 
 REGION_BOXES = {}  # claim id -> boxes bound so far by its `coverings` certificates (one per column)
+REGION_COLUMNS = {}  # claim id -> the columns bound so far (each at most once)
 
 
 def bind_region(path, cert, claim, part):
@@ -45,11 +46,12 @@ def bind_region(path, cert, claim, part):
     the column's q range, and exactly the column's proved boxes of data/certified_region.tsv (their b
     ranges and the candidate ends of J0, J1, as doubles)."""
     par, ev = claim.get("parameters", {}), claim["evidence"]
-    if not part or not part.startswith("column") or not part[6:].isdigit():
-        return f"part '{part}' is not columnNN"
-    i = int(part[6:]) - 1
-    if not 0 <= i < len(ev.get("columns", [])):
-        return f"part '{part}' is none of the claim's {len(ev.get('columns', []))} columns"
+    names = [f"column{i + 1:02d}" for i in range(len(ev.get("columns", [])))]
+    if part not in names:  # exactly as the experiment names them (no alias such as column2 for column02)
+        return f"part '{part}' is none of the claim's columns column01..column{len(names):02d}"
+    i = names.index(part)
+    if part in REGION_COLUMNS.setdefault(claim["id"], set()):
+        return f"column {part} is bound twice"
     if cert.get("claim") != claim["statement"]:
         return "its claim text is not the claim's statement"
     cp = cert.get("parameters", {})
@@ -67,11 +69,15 @@ def bind_region(path, cert, claim, part):
             rows.append(tuple(float(d[k]) for k in ("b_lo", "b_hi", "J0_top", "J0_t2", "J1_top", "J1_t2")))
     boxes = []
     for b in cert.get("witnesses", {}).get("boxes", []):
+        bp = b["parameters"]
+        if exact(bp["a"]["hex"]) != 1.0 or [exact(bp["q"]["lo"]["hex"]), exact(bp["q"]["hi"]["hex"])] != q:
+            return "a box is not at a = 1 over the column's whole q range"
         s0, s1 = b["witnesses"]["segments"]
-        boxes.append((exact(b["parameters"]["b"]["lo"]["hex"]), exact(b["parameters"]["b"]["hi"]["hex"]), exact(s0["theta_top"]),
+        boxes.append((exact(bp["b"]["lo"]["hex"]), exact(bp["b"]["hi"]["hex"]), exact(s0["theta_top"]),
                       exact(s0["theta_t2"]), exact(s1["theta_top"]), exact(s1["theta_t2"])))
     if boxes != rows:
         return f"its {len(boxes)} boxes are not the column's {len(rows)} proved boxes of data/certified_region.tsv"
+    REGION_COLUMNS[claim["id"]].add(part)
     REGION_BOXES[claim["id"]] = REGION_BOXES.get(claim["id"], 0) + len(boxes)
     return None
 
