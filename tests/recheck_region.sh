@@ -55,6 +55,9 @@ c = json.load(open(sys.argv[1]))
 del c["witnesses"]["boxes"][0]
 json.dump(c, open(sys.argv[1], "w"), indent=1)
 PY
+"$py" -c 'import json, sys; c = json.load(open(sys.argv[1])); c["witnesses"]["boxes"] = []; json.dump(c, open(sys.argv[2], "w"))' "$f" "$tmp/empty.json"
+"$checker" "$tmp/empty.json" >/dev/null 2>&1; rc=$?
+check "a column certificate with no box is malformed (exit $rc)" '((rc == 2))'
 check "the checker accepts the column with a box deleted (a proof of less)" '"$checker" "$f" >"$tmp/one" 2>&1'
 check "the script refuses it: not the column's proved boxes" '! "$py" "$script" "$tmp" "$checker" >"$tmp/out2" 2>&1 && grep -q "proved boxes" "$tmp/out2"'
 cat "$tmp/out2"

@@ -1144,10 +1144,12 @@ long check_coverings(const json& c) {
   Steps st;
   const auto [a, box] = read_box(c);
   const json& boxes = field(field(c, "witnesses", ""), "boxes", "witnesses.");
-  if (!boxes.is_array()) throw Malformed("'witnesses.boxes' is not an array");
+  if (!boxes.is_array() || boxes.empty()) throw Malformed("'witnesses.boxes' is not a non-empty array");
   for (std::size_t i = 0; i < boxes.size(); ++i) {
     const std::string who = "witnesses.boxes[" + std::to_string(i) + "]";
-    if (!boxes[i].is_object() || field(boxes[i], "statement", who + ".") != "covering") throw Malformed("'" + who + "' is not a covering certificate");
+    if (!boxes[i].is_object() || field(boxes[i], "format", who + ".") != kFormat || field(boxes[i], "version", who + ".") != kVersion ||
+        field(boxes[i], "statement", who + ".") != "covering")
+      throw Malformed("'" + who + "' is not a covering certificate of this format and version");
     const auto [ai, x] = read_box(boxes[i]);
     st.require(ai == a && box.b_lo <= x.b_lo && x.b_hi <= box.b_hi && box.q_lo <= x.q_lo && x.q_hi <= box.q_hi, who + ": its box lies in the parameters");
     try {
@@ -1215,8 +1217,10 @@ Iv T_on(Steps& st, const Iv& A, const json& j, double b, double q, const Num& lo
 /// T(X_j) contains X_(j+1) (intermediate values), and going back along the cycle a point x of X_0 has
 /// T^j x in X_j and T^m x = x; its itinerary is w^infinity, of least period m (X_(m-1) lies in J1, the
 /// other boxes in J0).
-long check_periodic(const json& c) {
+long check_periodic(const json& c, std::string& what) {
   Steps st;
+  what = "re-verified: an orbit of least period m with itinerary (0^(m-1)1)^infinity in the boxes of each orbit; not re-verified: "
+         "that it is the only one there (the prover's Krawczyk test)";
   const auto [a, b, q] = read_point(c);
   const json& w = field(c, "witnesses", "");
   const Iv A = standing_box(st, a, {b, b, q, q});
@@ -1283,7 +1287,7 @@ int check_file(const std::string& path) {
     else if (statement == "b0") steps = check_b0(c);
     else if (statement == "covering") steps = check_covering(c);
     else if (statement == "coverings") steps = check_coverings(c);
-    else if (statement == "periodic") steps = check_periodic(c);
+    else if (statement == "periodic") steps = check_periodic(c, what);
     else if (statement == "superstable") steps = check_superstable(c, what);
     else if (statement == "not_superstable") steps = check_not_superstable(c);
     else if (statement == "window") steps = check_window(c);
