@@ -46,9 +46,11 @@ struct PeriodicOptions {
 /// at its two ends, each in scenario A with a \f$\theta_2\f$ bracket, the ends mapped to opposite sides
 /// outside \f$X_{j+1}\f$ (checked on those brackets).
 struct OrbitBoxProof {
-  Ball lo, hi;             ///< the ends of \f$X_j\f$ (exact)
+  Ball lo;                 ///< the lower end of \f$X_j\f$ (exact)
+  Ball hi;                 ///< the upper end of \f$X_j\f$ (exact)
   BallProof on;            ///< T on \f$[lo, hi]\f$ (continuous)
-  BallProof at_lo, at_hi;  ///< T at lo and at hi
+  BallProof at_lo;         ///< T at lo
+  BallProof at_hi;         ///< T at hi
 };
 
 /// A periodic orbit of T with itinerary \f$(0^{m-1}1)^\infty\f$.
