@@ -113,6 +113,15 @@ double plateau_middle(const Parameters& p, double th, double scale, double& widt
   return 0.5 * (ends[0] + ends[1]);
 }
 
+/// The end w of the window [lo, w] of [lo, hi] that holds at most `branches` branches of T1
+/// (symmetric_tangency_count, closed form), largest to 2e-16 relative; hi when [lo, hi] holds them.
+double branch_window(const Parameters& p, double lo, double hi, long long branches) {
+  if (symmetric_tangency_count(p, lo, hi) + 1 <= branches) return hi;
+  return bisect([&](double w) { return symmetric_tangency_count(p, lo, w) + 1 <= branches; }, lo, hi,
+                {.max_iterations = 200, .rel_tol = 2e-16})
+      .first;
+}
+
 }  // namespace
 
 std::vector<Candidate> track_candidates(double a, double b, double q, const std::vector<Candidate>& old, const CoveringOptions& opt) {
@@ -178,20 +187,37 @@ std::vector<Candidate> track_candidates(double a, double b, double q, const std:
   return out;
 }
 
-std::vector<Candidate> covering_candidates(double a, double b, double q, const CoveringOptions& opt) {
-  std::vector<Candidate> out;
+namespace {
+
+/// The floating-point candidates at (a, b, q), ends moved as in the file comment, ascending and
+/// disjoint, handed one by one to `take` until it returns true (enough) or the search ends.
+/// The covering search looks near lo first: a window [lo, w] holding opt.first_branches branches of
+/// T1 (closed form), grown fourfold until it yields opt.candidates segments, becomes [lo, hi], or
+/// holds opt.max_branches. The cost follows the branches visited, not the (a/b)/(2 pi) branches
+/// of [t2, 3 pi/2]. Segments are re-checked on 32 points only: the proof decides, not the search.
+/// Returns how far the search looked when it stopped short of hi (empty when it searched [lo, hi]).
+template <class Take>
+std::string for_each_candidate(double a, double b, double q, const CoveringOptions& opt, Take&& take) {
+  std::string searched;
   try {
     const Parameters p(a, b, q);
     p.require_return_map();
     const double lo = std::isnan(opt.lo) ? *p.t2() : std::max(opt.lo, *p.t2());
     const double hi = std::isnan(opt.hi) ? kThreeHalvesPi : std::min(opt.hi, kThreeHalvesPi);
-    if (!(lo < hi)) return out;
+    if (!(lo < hi)) return searched;
     CoveringSearch search;
     search.max_segments = opt.candidates;
-    // No branch budget here: a proof is bounded by its caller's time and memory budget instead
-    // (`dfchaos certify`: kit/budget.hpp), and at b/a = 1e-8 it still fits in the default one.
-    search.max_branches = std::numeric_limits<long long>::max();
-    const auto segs = covering_segments(p, lo, hi, kThreeHalvesPi, search);
+    search.recheck = 32;
+    std::vector<dfchaos::CoveringSegment> segs;
+    for (long long branches = std::min(opt.first_branches, opt.max_branches);; branches = std::min(4 * branches, opt.max_branches)) {
+      const double w = branch_window(p, lo, hi, branches);
+      search.max_branches = branches + 1;
+      segs = covering_segments(p, lo, w, kThreeHalvesPi, search);
+      if (w < hi) searched = " in [" + format_double(lo) + ", " + format_double(w) + "] (" + std::to_string(branches) + " branches of T1, max_branches)";
+      else searched.clear();
+      if (static_cast<int>(segs.size()) >= opt.candidates || w == hi || branches >= opt.max_branches) break;
+    }
+    double last_hi = -std::numeric_limits<double>::infinity();  // keep them disjoint
     for (const auto& s : segs) {
       Candidate c;
       c.theta_top = move_top(p, s, kThreeHalvesPi + opt.margin_top);
@@ -201,16 +227,26 @@ std::vector<Candidate> covering_candidates(double a, double b, double q, const C
         const double mid = plateau_middle(p, c.theta_t2, std::fabs(c.theta_t2 - c.theta_top), w);
         if (!std::isnan(mid)) c.plateau = w;
       }
-      if (c.lo() < lo) continue;
-      if (c.hi() > hi) continue;
-      if (!out.empty() && !(out.back().hi() < c.lo())) continue;  // keep them disjoint
-      out.push_back(c);
+      if (c.lo() < lo || c.hi() > hi || !(last_hi < c.lo())) continue;
+      last_hi = c.hi();
+      if (take(c)) return searched;
     }
   } catch (const std::bad_alloc&) {
     throw;  // memory ran out: not an answer of the search
   } catch (const std::exception&) {
-    // The floating layer refused (parameters outside its domain, or it gave up): no candidates.
+    // The floating layer refused (parameters outside its domain, or it gave up): no more candidates.
   }
+  return searched;
+}
+
+}  // namespace
+
+std::vector<Candidate> covering_candidates(double a, double b, double q, const CoveringOptions& opt) {
+  std::vector<Candidate> out;
+  for_each_candidate(a, b, q, opt, [&](const Candidate& c) {
+    out.push_back(c);
+    return false;
+  });
   return out;
 }
 
@@ -337,35 +373,58 @@ SegmentProof prove_segment(const ParameterBalls& m, const Candidate& c, const Co
   return r;
 }
 
+namespace {
+
+/// Lemma 4 over a box from candidates offered one by one (in ascending order): each disjoint from the
+/// segments proved so far is proved, until two are.
+class CoveringAttempt {
+ public:
+  CoveringAttempt(const ParameterBox& box, const CoveringOptions& opt) : m_(box), opt_(opt) { r_.box = box; }
+  /// Tries `c`; true when two segments are proved (offer no more).
+  bool offer(const Candidate& c) {
+    if (proved_.size() == 2) return true;
+    if (!proved_.empty() && !(proved_.back().hi < c.lo())) return false;
+    ++r_.candidates_tried;
+    SegmentProof s = prove_segment(m_, c, opt_);
+    if (s.verdict) proved_.push_back(s);
+    else last_failure_ = s;
+    return proved_.size() == 2;
+  }
+  /// The verdict after the last offer; `searched` (if not empty) says where the candidates were sought.
+  CoveringProof finish(const std::string& searched = {}) {
+    if (proved_.size() == 2) {
+      r_.J0 = proved_[0];
+      r_.J1 = proved_[1];
+      r_.verdict = Outcome::ok();
+      if (opt_.record && (r_.J0.used_lemma1 || r_.J1.used_lemma1)) r_.lemma1 = certify_lemma1(m_);
+    } else if (r_.candidates_tried == 0) {
+      r_.verdict = Outcome::fail("covering: candidates", "the floating-point search proposed no covering segment" + searched);
+    } else if (!last_failure_.verdict.proved && !last_failure_.verdict.step.empty()) {
+      r_.verdict = last_failure_.verdict;
+      if (!proved_.empty()) r_.J0 = proved_[0];
+    } else {
+      r_.verdict = Outcome::fail("covering: candidates", "fewer than two disjoint candidates were proved" + searched);
+      if (!proved_.empty()) r_.J0 = proved_[0];
+    }
+    return r_;
+  }
+
+ private:
+  const ParameterBalls m_;
+  const CoveringOptions& opt_;
+  CoveringProof r_;
+  std::vector<SegmentProof> proved_;
+  SegmentProof last_failure_;
+};
+
+}  // namespace
+
 CoveringProof prove_covering(const ParameterBox& box, const std::vector<Candidate>& candidates, const CoveringOptions& opt) {
   const auto start = std::chrono::steady_clock::now();
-  CoveringProof r;
-  r.box = box;
-  const ParameterBalls m(box);
-  std::vector<SegmentProof> proved;
-  SegmentProof last_failure;
-  for (const Candidate& c : candidates) {
-    if (proved.size() == 2) break;
-    if (!proved.empty() && !(proved.back().hi < c.lo())) continue;
-    ++r.candidates_tried;
-    SegmentProof s = prove_segment(m, c, opt);
-    if (s.verdict) proved.push_back(s);
-    else last_failure = s;
-  }
-  if (proved.size() == 2) {
-    r.J0 = proved[0];
-    r.J1 = proved[1];
-    r.verdict = Outcome::ok();
-    if (opt.record && (r.J0.used_lemma1 || r.J1.used_lemma1)) r.lemma1 = certify_lemma1(m);
-  } else if (candidates.empty()) {
-    r.verdict = Outcome::fail("covering: candidates", "the floating-point search proposed no covering segment");
-  } else if (!last_failure.verdict.proved && !last_failure.verdict.step.empty()) {
-    r.verdict = last_failure.verdict;
-    if (!proved.empty()) r.J0 = proved[0];
-  } else {
-    r.verdict = Outcome::fail("covering: candidates", "fewer than two disjoint candidates were proved");
-    if (!proved.empty()) r.J0 = proved[0];
-  }
+  CoveringAttempt attempt(box, opt);
+  for (const Candidate& c : candidates)
+    if (attempt.offer(c)) break;
+  CoveringProof r = attempt.finish();
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;
 }
@@ -373,8 +432,11 @@ CoveringProof prove_covering(const ParameterBox& box, const std::vector<Candidat
 CoveringProof prove_covering(const ParameterBox& box, const CoveringOptions& opt) {
   const auto start = std::chrono::steady_clock::now();
   const double b = 0.5 * (box.b_lo + box.b_hi), q = 0.5 * (box.q_lo + box.q_hi);
-  const std::vector<Candidate> c = covering_candidates(box.a, b, q, opt);
-  CoveringProof r = prove_covering(box, c, opt);
+  // Candidates are moved and proved one at a time: the walks that move the ends of a candidate are
+  // most of the search's cost, and the first two usually prove.
+  CoveringAttempt attempt(box, opt);
+  const std::string searched = for_each_candidate(box.a, b, q, opt, [&](const Candidate& c) { return attempt.offer(c); });
+  CoveringProof r = attempt.finish(searched);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;
 }

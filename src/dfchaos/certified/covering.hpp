@@ -34,6 +34,10 @@ struct CoveringOptions {
   int end_depth = 6;              ///< bisection depth (b and q) of the checks at the two ends
   long max_tests = 4'000'000;     ///< interval tests per segment
   int candidates = 6;             ///< floating-point candidates examined (at most)
+  /// Branches of \f$T_1\f$ in the first window [lo, w] of the candidate search (covering_candidates).
+  long long first_branches = 1LL << 14;
+  /// The candidate search stops at a window of this many branches, with the candidates it found.
+  long long max_branches = 1LL << 16;
   double lo = 0.0 / 0.0;          ///< search window for candidates (NaN: \f$t_2\f$)
   double hi = 0.0 / 0.0;          ///< (NaN: \f$3\pi/2\f$)
   /// Keep every ball's proof (SegmentProof::top_balls, t2_balls, cover_balls) and Lemma 1 over the
