@@ -20,6 +20,7 @@
 #include "dfchaos/covering.hpp"
 #include "dfchaos/errors.hpp"
 #include "dfchaos/map_derivative.hpp"
+#include "dfchaos/next_hit.hpp"
 #include "dfchaos/orbit.hpp"
 #include "dfchaos/phase.hpp"
 #include "dfchaos/superstable.hpp"
@@ -455,6 +456,17 @@ TEST(Cell, CertifiedFailuresAreRecordedNotThrown) {
   EXPECT_FALSE(std::isnan(over.superstable));
   const std::string row = format_row(s, over);
   EXPECT_EQ(row_problem(row.substr(0, row.size() - 1), 0, s.columns()), "") << row;
+  // The budget is max_branches / kDenseCostFactor branches (the proof's candidate search is a
+  // Dense one), exactly at its edge.
+  const Parameters p(1.0, 1e-3, 0.85);
+  const long long branches = symmetric_tangency_count(p, *p.t2(), 1.5 * pi) + 1;
+  ASSERT_GT(branches, 100);
+  s.covering_max_branches = branches * kDenseCostFactor;
+  const CellValues at = evaluate_cell(s, 0);
+  EXPECT_EQ(at.status, CellStatus::Ok) << at.error;
+  EXPECT_EQ(at.certified, 1);
+  s.covering_max_branches = branches * kDenseCostFactor - 1;  // a budget of branches - 1
+  EXPECT_EQ(evaluate_cell(s, 0).error.rfind("certified: work budget", 0), 0u);
 }
 
 TEST(Cell, CertifiedRowsDoNotDependOnTheThreadCount) {

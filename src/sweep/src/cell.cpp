@@ -1,5 +1,6 @@
 #include "sweep/cell.hpp"
 
+#include <algorithm>
 #include <exception>
 #include <new>
 #include <optional>
@@ -88,9 +89,10 @@ PlaneCertified plane_certified(const Parameters& p, long long max_branches) {
   p.require_return_map();
   const double top = 1.5 * pi;
   const long long branches = symmetric_tangency_count(p, *p.t2(), top) + 1;
-  if (branches > max_branches)
-    throw GaveUp("work budget: [t2, 3pi/2] holds " + std::to_string(branches) + " branches of T1, more than " +
-                 std::to_string(max_branches) + " (max-branches; docs/reliability.md)");
+  const long long budget = std::max(1LL, max_branches / kDenseCostFactor);  // its candidate search is a Dense one
+  if (branches > budget)
+    throw GaveUp("work budget: [t2, 3pi/2] holds " + std::to_string(branches) + " branches of T1, more than " + std::to_string(budget) +
+                 " = max-branches / " + std::to_string(kDenseCostFactor) + " for the proof's dense candidate search (docs/reliability.md)");
   const certified::CoveringProof proof = certified::prove_covering(certified::ParameterBox::point(p.a(), p.b(), p.q()));
   if (proof.verdict.proved) return {.proved = true, .step = CertifiedStep::Proved};
   const std::optional<CertifiedStep> step = certified_step_of(proof.verdict.step);

@@ -22,8 +22,8 @@ void SweepArguments::add_to(CLI::App* app) {
   app->add_option("--b-range", b_range, "b/a axis lo:hi:n[:lin|log|mid] (every b/a in [" + format_double(kMinMapRatio) + ", 1/2))")->required()->type_name("LO:HI:N[:KIND]");
   app->add_option("--observables", observables, "comma-separated: covering,superstable,lyapunov,rate,period,certified\n"
                   "(default " + std::string(kDefaultObservables) + ": all but certified, a proof per cell of about 5-40 ms)")->type_name("LIST");
-  app->add_option("--max-branches", max_branches, "covering's and certified's work budget per cell: a cell whose [t2, 3pi/2] holds more branches of T1\n"
-                  "(about 0.16 a/b) is an error cell naming it, 1.." + std::to_string(kMaxCoveringBranches) + " (default " + std::to_string(kDefaultMaxCoveringBranches) + ")")
+  app->add_option("--max-branches", max_branches, "covering's work budget per cell: a cell whose [t2, 3pi/2] holds more branches of T1\n"
+                  "(about 0.16 a/b) is an error cell naming it (certified: more than N/" + std::to_string(kDenseCostFactor) + "), 1.." + std::to_string(kMaxCoveringBranches) + " (default " + std::to_string(kDefaultMaxCoveringBranches) + ")")
       ->type_name("N");
   app->add_option("--superstable-scan", superstable_scan, "scan of superstable_check, " + std::to_string(kMinSuperstableScan) + ".." +
                                                               std::to_string(kMaxSuperstableScan) + " (default 400)")->type_name("N");

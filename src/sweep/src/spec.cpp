@@ -64,7 +64,8 @@ std::vector<std::string> Spec::header_lines() const {
   h.push_back("observables = " + observables.canonical());
   if (observables.has(Observable::Covering) || observables.has(Observable::Certified))
     h.push_back("max_branches = " + count_text(covering_max_branches) +
-                "  (work budget per cell of covering and certified: most branches of T1 in [t2, 3pi/2])");
+                "  (work budget per cell: most branches of T1 in [t2, 3pi/2] for covering, max_branches / " +
+                count_text(kDenseCostFactor) + " for certified)");
   if (observables.has(Observable::Superstable)) h.push_back("superstable_scan = " + count_text(superstable_scan));
   if (observables.needs_orbit()) {
     h.push_back("theta0 = " + format_double(orbit.theta0_fraction) + "  (theta_0 = t2 + theta0 (t3 - t2))");
