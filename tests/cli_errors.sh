@@ -107,6 +107,9 @@ expect_error "a:"        sweep --a 1e308 "${W[@]}"
 expect_error "observables:" sweep "${G[@]}" --observables covering,chaos
 expect_error "observables:" sweep "${G[@]}" --observables ,
 expect_error "observables:" sweep "${G[@]}" --observables rate,rate
+expect_error "observables:" sweep "${G[@]}" --observables covering,certified,certified
+expect_error "observables:" sweep "${G[@]}" --observables certified_step
+expect_error "max-branches:" sweep "${G[@]}" --observables certified --max-branches 0
 expect_error "shard:"    sweep "${W[@]}" --shard 2/2
 expect_error "shard:"    sweep "${W[@]}" --shard 1/0
 expect_error "shard:"    sweep "${W[@]}" --shard 1

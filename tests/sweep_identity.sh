@@ -8,8 +8,11 @@
 #   sweep_identity.sh mpi DFCHAOS DFCHAOS-SWEEP-MPI MPIEXEC [MPIEXEC-FLAGS...]
 #       dfchaos-sweep-mpi on 2 ranks (1 thread each): unsharded, a shard, and resumed after a stop.
 #
-# The grid, 6 x 5 cells with every observable, holds ok, inadmissible (q/a <= 2 b/a) and error
-# cells (eternal stick-slip at b/a = 0.45). Each check prints ok/FAIL; exit 1 if any failed.
+# The grid, 6 x 5 cells with every default observable, holds ok, inadmissible (q/a <= 2 b/a) and error
+# cells (eternal stick-slip at b/a = 0.45). A second grid C, 5 x 5 cells with covering and
+# certified (a proof in ball arithmetic per cell), holds proved and not-proved cells: its outputs
+# too must not depend on threads, shards, resumption or ranks. Each check prints ok/FAIL; exit 1 if
+# any failed.
 set -u
 mode=$1
 cli=$2
@@ -18,6 +21,7 @@ trap 'rm -rf "$tmp"' EXIT
 fails=0
 checks=0
 S=(--q-range 0.6:0.98:6 --b-range 2e-3:0.45:5:log --transient 200 --steps 200)
+C=(--q-range 0.7:1.1:5 --b-range 1e-3:0.45:5:log --observables covering,certified)
 
 same() {  # same DESCRIPTION FILE-A FILE-B
   checks=$((checks + 1))
@@ -41,6 +45,16 @@ for kind in ok inadmissible error; do  # the grid exercises every status
   fi
 done
 [[ $(grep -vc '^#' "$tmp/serial.tsv") -eq 31 ]] || { echo "FAIL: 30 rows and a column line expected"; fails=$((fails + 1)); }
+OMP_NUM_THREADS=1 "$cli" sweep "${C[@]}" > "$tmp/cserial.tsv" || { echo "FAIL: the serial sweep of C"; exit 1; }
+checks=$((checks + 1))
+# certified is column 6, certified_step 7: C holds proved cells, not-proved ones (two steps at least)
+# and inadmissible ones.
+if awk -F'\t' '!/^#/ && $4 == "ok" && $6 == 1 && $7 == 0 { p = 1 } !/^#/ && $4 == "ok" && $6 == 0 { n[$7] = 1 }
+                !/^#/ && $4 == "inadmissible" { i = 1 } END { k = 0; for (s in n) k++; exit !(p && k >= 2 && i) }' "$tmp/cserial.tsv"; then
+  echo "ok:   the certified grid holds proved, not-proved (2 steps or more) and inadmissible cells"
+else
+  echo "FAIL: the certified grid lacks proved, not-proved or inadmissible cells"; fails=$((fails + 1))
+fi
 
 case "$mode" in
 serial)
@@ -60,6 +74,16 @@ serial)
   for i in 0 1 2; do OMP_NUM_THREADS=2 "$cli" sweep "${S[@]}" --shard "$i/3" --resume "$tmp/rshard$i.tsv" --chunk 2 2> /dev/null; done
   "$cli" sweep-merge "$tmp/rshard0.tsv" "$tmp/rshard1.tsv" "$tmp/rshard2.tsv" > "$tmp/merged-resumable.tsv"
   same "3 resumable shards merged" "$tmp/serial.tsv" "$tmp/merged-resumable.tsv"
+
+  OMP_NUM_THREADS=2 "$cli" sweep "${C[@]}" --chunk 3 > "$tmp/cthreads.tsv"
+  same "certified: 2 threads, chunks of 3 = 1 thread" "$tmp/cserial.tsv" "$tmp/cthreads.tsv"
+  for i in 0 1 2; do "$cli" sweep "${C[@]}" --shard "$i/3" --out "$tmp/cshard$i.tsv"; done
+  "$cli" sweep-merge "$tmp/cshard1.tsv" "$tmp/cshard0.tsv" "$tmp/cshard2.tsv" > "$tmp/cmerged.tsv"
+  same "certified: 3 shards merged" "$tmp/cserial.tsv" "$tmp/cmerged.tsv"
+  "$cli" sweep "${C[@]}" --resume "$tmp/cresumed.tsv" --chunk 4 --max-chunks 2 2> /dev/null
+  status "certified: stopped by --max-chunks 2" 3 $?
+  OMP_NUM_THREADS=2 "$cli" sweep "${C[@]}" --resume "$tmp/cresumed.tsv" --chunk 7 2> /dev/null
+  same "certified: stopped and resumed = one run" "$tmp/cserial.tsv" "$tmp/cresumed.tsv"
 
   "$cli" sweep "${S[@]}" --resume "$tmp/resumed.tsv" --chunk 4 --max-chunks 3 2> /dev/null
   status "stopped by --max-chunks 3" 3 $?
@@ -117,6 +141,11 @@ mpi)
   status "MPI run stopped by --max-chunks" 3 $?
   "${launch[@]}" "$mpi" "${S[@]}" --resume "$tmp/mpi-resumed.tsv" --chunk 3 > /dev/null 2>&1
   same "MPI run stopped and resumed = serial" "$tmp/serial.tsv" "$tmp/mpi-resumed.tsv"
+  "${launch[@]}" "$mpi" "${C[@]}" > "$tmp/cmpi.tsv"
+  same "certified: 2 MPI ranks = serial" "$tmp/cserial.tsv" "$tmp/cmpi.tsv"
+  "$cli" sweep "${C[@]}" --shard 2/3 > "$tmp/cshard.tsv"
+  "${launch[@]}" "$mpi" "${C[@]}" --shard 2/3 --chunk 2 > "$tmp/cmpi-shard.tsv"
+  same "certified: shard 2/3 on 2 MPI ranks, chunks of 2 = serial shard 2/3" "$tmp/cshard.tsv" "$tmp/cmpi-shard.tsv"
   "$mpi" --q-range 1:0:3 --b-range 0.1:0.2:2 > "$tmp/bad.out" 2> "$tmp/bad.err"
   rc=$?
   checks=$((checks + 1))

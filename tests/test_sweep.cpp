@@ -16,9 +16,11 @@
 #include <set>
 #include <sstream>
 
+#include "dfchaos/certified/covering.hpp"
 #include "dfchaos/covering.hpp"
 #include "dfchaos/errors.hpp"
 #include "dfchaos/map_derivative.hpp"
+#include "dfchaos/next_hit.hpp"
 #include "dfchaos/orbit.hpp"
 #include "dfchaos/phase.hpp"
 #include "dfchaos/superstable.hpp"
@@ -142,8 +144,20 @@ TEST(Observables, ParsedInAnyOrderWrittenInColumnOrder) {
   EXPECT_FALSE(ObservableSet::parse("observables", "covering").needs_orbit());
 }
 
+TEST(Observables, CertifiedIsLastAndNotInTheDefaultSet) {
+  const auto s = ObservableSet::parse("observables", "certified,period,covering");
+  EXPECT_EQ(s.canonical(), "covering,period,certified");
+  EXPECT_EQ(s.columns(), (std::vector<std::string>{"covering", "period", "certified", "certified_step"}));
+  const auto d = ObservableSet::parse("observables", kDefaultObservables);
+  EXPECT_FALSE(d.has(Observable::Certified));
+  for (Observable o : kAllObservables) EXPECT_EQ(d.has(o), o != Observable::Certified) << observable_name(o);
+  EXPECT_EQ(spec_of("0.8:0.9:2", "0.01:0.02:2", "certified,lyapunov").columns(),
+            (std::vector<std::string>{"index", "q_over_a", "b_over_a", "status", "lyapunov", "certified", "certified_step", "error"}));
+}
+
 TEST(Observables, RejectsUnknownEmptyAndRepeatedNames) {
-  for (const char* bad : {"", ",", "covering,", ",covering", "covering,,rate", "chaos", "Covering", "rate,rate"}) {
+  for (const char* bad : {"", ",", "covering,", ",covering", "covering,,rate", "chaos", "Covering", "rate,rate", "certified,certified",
+                          "certified_step", "Certified"}) {
     const std::string msg = rejection([&] { ObservableSet::parse("observables", bad); });
     EXPECT_EQ(msg.rfind("observables:", 0), 0u) << "'" << bad << "' -> " << msg;
   }
@@ -242,6 +256,20 @@ TEST(Header, RowProblemChecksEveryField) {
            "12\t0.80000000000000004\t0.001\tok\t1\t3\t-\t-",       // a field too many
            std::string("12\t0.80000000000000004\t0.0") + '\0' + "01\tok\t1\t3\t-"})  // a NUL byte
     EXPECT_NE(row_problem(bad, 12, cols), "") << bad;
+}
+
+TEST(Header, RowProblemChecksTheCertifiedColumns) {
+  const std::vector<std::string> cols = {"index", "q_over_a", "b_over_a", "status", "certified", "certified_step", "error"};
+  EXPECT_EQ(row_problem("3\t0.84999999999999998\t0.01\tok\t0\t2\t-", 3, cols), "");
+  EXPECT_EQ(row_problem("3\t0.84999999999999998\t0.01\tok\t1\t0\t-", 3, cols), "");
+  EXPECT_EQ(row_problem("3\t0.84999999999999998\t0.01\terror\tnan\tnan\tcertified: x", 3, cols), "");
+  for (const std::string& bad : std::vector<std::string>{
+           "3\t0.84999999999999998\t0.01\tok\t2\t0\t-",     // certified 2
+           "3\t0.84999999999999998\t0.01\tok\t0\t7\t-",     // no step 7
+           "3\t0.84999999999999998\t0.01\tok\t0\t-1\t-",    // nor -1
+           "3\t0.84999999999999998\t0.01\tok\t0\t2.5\t-",   // a code is an integer
+           "3\t0.84999999999999998\t0.01\tinadmissible\tnan\t0\t-"})
+    EXPECT_NE(row_problem(bad, 3, cols), "") << bad;
 }
 
 TEST(Seal, ParsesExactlyWhatItWrites) {
@@ -348,6 +376,123 @@ TEST(Cell, InadmissibleAndFailingCellsAreRecordedNotThrown) {
   const std::string row = format_row(s, failed);
   EXPECT_EQ(row_problem(row.substr(0, row.size() - 1), 1, s.columns()), "") << row;  // one line, all fields well-formed
   EXPECT_NE(row.find("\terror\tnan\tnan\tnan\tnan\tcovering: "), std::string::npos) << row;
+}
+
+TEST(Cell, CertifiedStepCodesAreProveCoveringsStepNames) {
+  std::set<std::string> names;
+  for (std::size_t k = 0; k < std::size(kAllCertifiedSteps); ++k) {
+    const CertifiedStep c = kAllCertifiedSteps[k];
+    const int code = static_cast<int>(c);
+    EXPECT_EQ(code, static_cast<int>(k)) << "codes in order";
+    names.insert(certified_step_name(c));
+    if (c != CertifiedStep::Proved) {
+      EXPECT_EQ(certified_step_of(certified_step_name(c)), c);
+    }
+    EXPECT_NE(certified_step_legend().find(std::to_string(code) + " " + certified_step_name(c)), std::string::npos);
+  }
+  EXPECT_EQ(names.size(), std::size(kAllCertifiedSteps));  // one name per code
+  EXPECT_FALSE(certified_step_of("proved").has_value());  // not a step of a failed proof
+  EXPECT_FALSE(certified_step_of("covering: candidate").has_value());
+  EXPECT_FALSE(certified_step_of("").has_value());
+}
+
+TEST(Cell, CertifiedIsProvedWhereProveCoveringProvesIt) {
+  // a = 1, q = 0.85, b = 1e-4 and b = 2e-3 (q from 0.78 to 0.99): proved in a few ms each.
+  const Spec s = spec_of("0.85:0.85:1", "1e-4:2e-3:2:log", "covering,certified");
+  for (long long index = 0; index < s.cells(); ++index) {
+    const CellValues v = evaluate_cell(s, index);
+    ASSERT_EQ(v.status, CellStatus::Ok) << v.error;
+    EXPECT_EQ(v.certified, 1) << "b/a = " << s.b_at(index);
+    EXPECT_EQ(v.certified_step, 0);
+    EXPECT_EQ(v.covering, 1);  // the sampled search finds what is proved
+    EXPECT_TRUE(std::isnan(v.superstable) && std::isnan(v.lyapunov));
+    const std::string row = format_row(s, v);
+    EXPECT_NE(row.find("\tok\t1\t1\t0\t-\n"), std::string::npos) << row;
+    EXPECT_EQ(row_problem(row.substr(0, row.size() - 1), index, s.columns()), "") << row;
+  }
+  for (double q : {0.78, 0.9, 0.99}) {
+    const PlaneCertified c = plane_certified(Parameters(1.0, 2e-3, q));
+    EXPECT_TRUE(c.proved) << "q = " << q;
+    EXPECT_EQ(c.step, CertifiedStep::Proved);
+  }
+}
+
+TEST(Cell, CertifiedNotProvedGivesZeroAndTheStep) {
+  // q/a = 0.85, b/a = 1e-2: the floating search proposes fewer than two disjoint candidates
+  // ("covering: candidates"); q/a = 1.2 > 1 + 2 b/a: T is defined (q > 2b) but the certified layer
+  // requires q - 2b < a ("admissibility").
+  const Spec s = spec_of("0.85:1.2:2", "1e-2:1e-2:1", "certified");
+  const CellValues candidates = evaluate_cell(s, 0), admissibility = evaluate_cell(s, 1);
+  ASSERT_EQ(candidates.status, CellStatus::Ok) << candidates.error;
+  EXPECT_EQ(candidates.certified, 0);
+  EXPECT_EQ(candidates.certified_step, static_cast<int>(CertifiedStep::Candidates));
+  ASSERT_EQ(admissibility.status, CellStatus::Ok) << admissibility.error;
+  EXPECT_EQ(admissibility.certified, 0);
+  EXPECT_EQ(admissibility.certified_step, static_cast<int>(CertifiedStep::Admissibility));
+  // The same verdicts from the certified layer called directly.
+  for (long long index : {0LL, 1LL}) {
+    const certified::CoveringProof p = certified::prove_covering(certified::ParameterBox::point(1.0, s.b_at(index), s.q_at(index)));
+    EXPECT_FALSE(p.verdict.proved);
+    EXPECT_EQ(p.verdict.step, certified_step_name(index == 0 ? CertifiedStep::Candidates : CertifiedStep::Admissibility));
+  }
+  const std::string row = format_row(s, candidates);
+  EXPECT_NE(row.find("\tok\t0\t2\t-\n"), std::string::npos) << row;
+}
+
+TEST(Cell, CertifiedFailuresAreRecordedNotThrown) {
+  // Inadmissible: nan. Beyond the work budget: an error cell naming it, certified nan, the other
+  // observables kept.
+  Spec s = spec_of("0.6:0.85:2", "0.4:0.4:1", "superstable,certified");
+  const CellValues inadmissible = evaluate_cell(s, 0);  // q/a = 0.6 <= 2 b/a = 0.8
+  EXPECT_EQ(inadmissible.status, CellStatus::Inadmissible);
+  EXPECT_TRUE(std::isnan(inadmissible.certified) && std::isnan(inadmissible.certified_step));
+  s = spec_of("0.85:0.85:1", "1e-3:1e-3:1", "superstable,certified");
+  s.covering_max_branches = 10;  // [t2, 3pi/2] holds about 160 branches at b/a = 1e-3
+  const CellValues over = evaluate_cell(s, 0);
+  EXPECT_EQ(over.status, CellStatus::Error);
+  EXPECT_EQ(over.error.rfind("certified: work budget", 0), 0u) << over.error;
+  EXPECT_NE(over.error.find("max-branches"), std::string::npos) << over.error;
+  EXPECT_TRUE(std::isnan(over.certified) && std::isnan(over.certified_step));
+  EXPECT_FALSE(std::isnan(over.superstable));
+  const std::string row = format_row(s, over);
+  EXPECT_EQ(row_problem(row.substr(0, row.size() - 1), 0, s.columns()), "") << row;
+  // The budget is max_branches / kDenseCostFactor branches (the proof's candidate search is a
+  // Dense one), exactly at its edge.
+  const Parameters p(1.0, 1e-3, 0.85);
+  const long long branches = symmetric_tangency_count(p, *p.t2(), 1.5 * pi) + 1;
+  ASSERT_GT(branches, 100);
+  s.covering_max_branches = branches * kDenseCostFactor;
+  const CellValues at = evaluate_cell(s, 0);
+  EXPECT_EQ(at.status, CellStatus::Ok) << at.error;
+  EXPECT_EQ(at.certified, 1);
+  s.covering_max_branches = branches * kDenseCostFactor - 1;  // a budget of branches - 1
+  EXPECT_EQ(evaluate_cell(s, 0).error.rfind("certified: work budget", 0), 0u);
+}
+
+TEST(Cell, CertifiedRowsDoNotDependOnTheThreadCount) {
+  // prove_covering's work is bounded by counts, not time: the same rows on 1 and 3 threads, in
+  // either order, and again on a second run.
+  const Spec s = spec_of("0.8:1.1:3", "1e-3:0.2:4:log", "covering,certified");
+  std::vector<long long> cells;
+  for (long long i = 0; i < s.cells(); ++i) cells.push_back(i);
+  const int before = omp_get_max_threads();
+  omp_set_num_threads(1);
+  const auto one = compute_rows(s, cells, nullptr);
+  omp_set_num_threads(3);
+  std::vector<long long> reversed(cells.rbegin(), cells.rend());
+  const auto three = compute_rows(s, reversed, nullptr);
+  const auto again = compute_rows(s, cells, nullptr);
+  omp_set_num_threads(before);
+  int proved = 0, not_proved = 0;
+  for (std::size_t k = 0; k < cells.size(); ++k) {
+    EXPECT_EQ(one[k], three[cells.size() - 1 - k]);
+    EXPECT_EQ(one[k], again[k]);
+    const std::string tail = one[k].substr(one[k].rfind('\t', one[k].rfind('\t', one[k].rfind('\t') - 1) - 1));
+    if (tail == "\t1\t0\t-\n") ++proved;
+    if (tail.rfind("\t0\t", 0) == 0) ++not_proved;
+  }
+  EXPECT_GT(proved, 0);  // the grid holds both answers
+  EXPECT_GT(not_proved, 0);
 }
 
 TEST(Cell, RowsDoNotDependOnTheThreadCount) {

@@ -1,12 +1,16 @@
 #include "sweep/cell.hpp"
 
+#include <algorithm>
 #include <exception>
 #include <new>
 #include <optional>
+#include <stdexcept>
 
+#include "dfchaos/certified/covering.hpp"
 #include "dfchaos/covering.hpp"
 #include "dfchaos/errors.hpp"
 #include "dfchaos/map_derivative.hpp"
+#include "dfchaos/next_hit.hpp"
 #include "dfchaos/parameters.hpp"
 #include "dfchaos/phase.hpp"
 #include "dfchaos/orbit.hpp"
@@ -54,6 +58,47 @@ std::string one_field(std::string text) {
 }
 
 }  // namespace
+
+const char* certified_step_name(CertifiedStep s) {
+  switch (s) {
+    case CertifiedStep::Proved: return "proved";
+    case CertifiedStep::Admissibility: return "admissibility";
+    case CertifiedStep::Candidates: return "covering: candidates";
+    case CertifiedStep::Inside: return "covering: J inside [t2, 3pi/2]";
+    case CertifiedStep::TopEnd: return "covering: T >= 3pi/2 at the top end";
+    case CertifiedStep::T2End: return "covering: T = t2 at the t2 end";
+    case CertifiedStep::Continuity: return "covering: continuity on J";
+  }
+  return "?";
+}
+
+std::optional<CertifiedStep> certified_step_of(const std::string& step) {
+  for (CertifiedStep s : kAllCertifiedSteps)
+    if (s != CertifiedStep::Proved && step == certified_step_name(s)) return s;
+  return std::nullopt;
+}
+
+std::string certified_step_legend() {
+  std::string s;
+  for (CertifiedStep c : kAllCertifiedSteps)
+    s += (s.empty() ? "" : " | ") + std::to_string(static_cast<int>(c)) + " " + certified_step_name(c);
+  return s;
+}
+
+PlaneCertified plane_certified(const Parameters& p, long long max_branches) {
+  p.require_return_map();
+  const double top = 1.5 * pi;
+  const long long branches = symmetric_tangency_count(p, *p.t2(), top) + 1;
+  const long long budget = std::max(1LL, max_branches / kDenseCostFactor);  // its candidate search is a Dense one
+  if (branches > budget)
+    throw GaveUp("work budget: [t2, 3pi/2] holds " + std::to_string(branches) + " branches of T1, more than " + std::to_string(budget) +
+                 " = max-branches / " + std::to_string(kDenseCostFactor) + " for the proof's dense candidate search (docs/reliability.md)");
+  const certified::CoveringProof proof = certified::prove_covering(certified::ParameterBox::point(p.a(), p.b(), p.q()));
+  if (proof.verdict.proved) return {.proved = true, .step = CertifiedStep::Proved};
+  const std::optional<CertifiedStep> step = certified_step_of(proof.verdict.step);
+  if (!step) throw std::logic_error("not proved at a step with no code in this sweep: '" + proof.verdict.step + "'");
+  return {.proved = false, .step = *step};
+}
 
 Lemma4Covering plane_covering(const Parameters& p, long long max_branches, CoveringSearchStats* stats) {
   CoveringSearch search = CoveringSearch::branchwise();
@@ -105,6 +150,12 @@ CellValues evaluate_cell(const Spec& spec, long long index) {
       }
       if (obs.has(Observable::Period)) v.period = static_cast<double>(cycle_period(p, end, spec.period));
     });
+  if (obs.has(Observable::Certified))
+    guarded(v, "certified", [&] {
+      const PlaneCertified c = plane_certified(p, spec.covering_max_branches);
+      v.certified = c.proved ? 1 : 0;
+      v.certified_step = static_cast<double>(static_cast<int>(c.step));
+    });
   return v;
 }
 
@@ -120,6 +171,7 @@ std::string format_row(const Spec& spec, const CellValues& v) {
       case Observable::Lyapunov: add(v.lyapunov); break;
       case Observable::Rate: add(v.rate); break;
       case Observable::Period: add(v.period); break;
+      case Observable::Certified: add(v.certified); add(v.certified_step); break;
     }
   }
   row += '\t' + one_field(v.error) + '\n';

@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <iterator>
 
 #include "dfchaos/errors.hpp"
 #include "kit/provenance.hpp"
+#include "sweep/cell.hpp"
 #include "sweep/seal.hpp"
 
 namespace dfchaos::sweep {
@@ -109,7 +111,10 @@ std::string row_problem(std::string_view row, long long index, const std::vector
   for (std::size_t k = 4; k + 1 < f.size(); ++k) {
     if (!canonical_number(f[k], x)) return columns[k] + " is not a number as the sweep writes it";
     const std::string& c = columns[k];
-    if ((c == "covering" || c == "superstable") && !(x == 0 || x == 1 || std::isnan(x))) return c + " is not 0, 1 or nan";
+    if ((c == "covering" || c == "superstable" || c == "certified") && !(x == 0 || x == 1 || std::isnan(x))) return c + " is not 0, 1 or nan";
+    if (c == "certified_step" && !std::isnan(x) &&
+        !(x >= 0 && x == std::floor(x) && x <= static_cast<int>(std::size(kAllCertifiedSteps)) - 1))
+      return "certified_step is not a step code";
     if (c == "period" && !std::isnan(x) && !(x >= 0 && x == std::floor(x) && x <= 1e18)) return "period is not a count";
     if (status == "inadmissible" && !std::isnan(x)) return c + " is not nan in an inadmissible cell";
   }

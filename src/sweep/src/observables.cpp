@@ -11,6 +11,7 @@ const char* observable_name(Observable o) {
     case Observable::Lyapunov: return "lyapunov";
     case Observable::Rate: return "rate";
     case Observable::Period: return "period";
+    case Observable::Certified: return "certified";
   }
   return "?";
 }
@@ -60,6 +61,7 @@ std::vector<std::string> ObservableSet::columns() const {
     if (has(o)) {
       c.emplace_back(observable_name(o));
       if (o == Observable::Superstable) c.emplace_back("epsilon");
+      if (o == Observable::Certified) c.emplace_back("certified_step");
     }
   return c;
 }

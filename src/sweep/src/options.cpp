@@ -2,6 +2,7 @@
 
 #include "dfchaos/errors.hpp"
 #include "kit/options.hpp"
+#include "sweep/cell.hpp"
 #include "sweep/header.hpp"
 
 namespace dfchaos::sweep {
@@ -19,9 +20,10 @@ void SweepArguments::add_to(CLI::App* app) {
   app->add_option("--a", a, "forcing amplitude, " + format_double(kMinA) + " <= a <= " + format_double(kMaxA) + " (default 1; only q/a and b/a matter)")->type_name("FLOAT");
   app->add_option("--q-range", q_range, "q/a axis lo:hi:n[:lin|log|mid] (every q/a > 0)")->required()->type_name("LO:HI:N[:KIND]");
   app->add_option("--b-range", b_range, "b/a axis lo:hi:n[:lin|log|mid] (every b/a in [" + format_double(kMinMapRatio) + ", 1/2))")->required()->type_name("LO:HI:N[:KIND]");
-  app->add_option("--observables", observables, "comma-separated: covering,superstable,lyapunov,rate,period (default all)")->type_name("LIST");
-  app->add_option("--max-branches", max_branches, "covering's work budget per cell: a cell whose [t2, 3pi/2] holds more branches of T1 (about 0.16 a/b)\n"
-                  "is an error cell naming it, 1.." + std::to_string(kMaxCoveringBranches) + " (default " + std::to_string(kDefaultMaxCoveringBranches) + ")")
+  app->add_option("--observables", observables, "comma-separated: covering,superstable,lyapunov,rate,period,certified\n"
+                  "(default " + std::string(kDefaultObservables) + ": all but certified, a proof per cell of about 5-40 ms)")->type_name("LIST");
+  app->add_option("--max-branches", max_branches, "covering's work budget per cell: a cell whose [t2, 3pi/2] holds more branches of T1\n"
+                  "(about 0.16 a/b) is an error cell naming it (certified: more than N/" + std::to_string(kDenseCostFactor) + "), 1.." + std::to_string(kMaxCoveringBranches) + " (default " + std::to_string(kDefaultMaxCoveringBranches) + ")")
       ->type_name("N");
   app->add_option("--superstable-scan", superstable_scan, "scan of superstable_check, " + std::to_string(kMinSuperstableScan) + ".." +
                                                               std::to_string(kMaxSuperstableScan) + " (default 400)")->type_name("N");
@@ -50,6 +52,9 @@ void SweepArguments::add_to(CLI::App* app) {
       "  lyapunov     mean ln|T'| over the averaged steps of the orbit (-inf when a step stops)\n"
       "  rate         mean drilling speed over those steps (delimiter advance / elapsed time)\n"
       "  period       smallest k <= period-max with |T^k(e) - e| <= period-tol, e = T^(transient+steps)(theta_0); 0 if none\n"
+      "  certified    Lemma 4 proved in ball arithmetic (Arb) at the cell's double parameters (1) or not proved (0):\n"
+      "               a proof at that point, not over the cell (as 'dfchaos certify covering'); then certified_step,\n"
+      "               the code of the step not proved: " + certified_step_legend() + "\n"
       "  error        'observable: message' for each observable that threw, '-' if none\n"
       "The last line is the seal '# end: N rows, sha256 HEX (of every byte above this line)': sweep-merge and --resume\n"
       "refuse a file without it (cut short) or whose bytes or rows do not match it (damaged). --out follows a symlink and\n"

@@ -5,6 +5,7 @@
 
 #include "dfchaos/errors.hpp"
 #include "dfchaos/parameters.hpp"
+#include "sweep/cell.hpp"
 
 namespace dfchaos::sweep {
 
@@ -61,8 +62,10 @@ std::vector<std::string> Spec::header_lines() const {
   h.push_back("q_over_a = " + q_over_a.canonical());
   h.push_back("b_over_a = " + b_over_a.canonical());
   h.push_back("observables = " + observables.canonical());
-  if (observables.has(Observable::Covering))
-    h.push_back("max_branches = " + count_text(covering_max_branches) + "  (the covering search's work budget per cell)");
+  if (observables.has(Observable::Covering) || observables.has(Observable::Certified))
+    h.push_back("max_branches = " + count_text(covering_max_branches) +
+                "  (work budget per cell: most branches of T1 in [t2, 3pi/2] for covering, max_branches / " +
+                count_text(kDenseCostFactor) + " for certified)");
   if (observables.has(Observable::Superstable)) h.push_back("superstable_scan = " + count_text(superstable_scan));
   if (observables.needs_orbit()) {
     h.push_back("theta0 = " + format_double(orbit.theta0_fraction) + "  (theta_0 = t2 + theta0 (t3 - t2))");
@@ -75,6 +78,11 @@ std::vector<std::string> Spec::header_lines() const {
                 "  (period: the smallest k <= period_max with |T^k(e) - e| <= period_tol on the circle, "
                 "e = T^(transient+steps)(theta_0); 0 if none)");
   }
+  if (observables.has(Observable::Certified))
+    h.push_back("certified_step = " + certified_step_legend() +
+                "  (certified: 1 when Lemma 4 is proved in ball arithmetic at the cell's double parameters, "
+                "prove_covering with its default options; else 0 and the code of the step not proved; "
+                "a proof at one point, not over the cell)");
   h.push_back("cells = " + count_text(cells()) + "  (index = i * " + count_text(b_over_a.size()) +
               " + j, i over q_over_a, j over b_over_a; a = A, q = q_over_a A, b = b_over_a A)");
   h.push_back("status: ok | inadmissible (q/a <= 2 b/a: T undefined; values nan) | error (an observable threw: "

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cmath>
+#include <optional>
 #include <string>
 
 #include "dfchaos/covering.hpp"
@@ -29,6 +30,54 @@ struct PlaneSuperstable {
 /// experiments/thm1_parameter_plane. @throws as superstable_check.
 PlaneSuperstable plane_superstable(const Parameters& p, int scan = 400);
 
+/// The step of certified::prove_covering that was not proved, as the code written in the
+/// `certified_step` column (0 when the covering is proved). The codes follow the order of the
+/// proof: admissibility of the parameters, the floating-point candidates, then, for a candidate
+/// segment J, its place, its two ends and the continuity of T on it. When several candidates fail,
+/// it is the step of the last one tried (prove_covering's verdict). "Not proved" is never "false".
+enum class CertifiedStep {
+  Proved = 0,         ///< nothing failed: two disjoint covering segments proved
+  Admissibility = 1,  ///< "admissibility": 2b < a, q > 2b or q - 2b < a not proved in ball arithmetic
+  Candidates = 2,     ///< "covering: candidates": fewer than two disjoint candidate segments to prove
+  Inside = 3,         ///< "covering: J inside [t2, 3pi/2]": a candidate not proved inside the arc
+  TopEnd = 4,         ///< "covering: T >= 3pi/2 at the top end"
+  T2End = 5,          ///< "covering: T = t2 at the t2 end"
+  Continuity = 6      ///< "covering: continuity on J"
+};
+
+/// Every CertifiedStep, in code order.
+inline constexpr CertifiedStep kAllCertifiedSteps[] = {CertifiedStep::Proved,  CertifiedStep::Admissibility, CertifiedStep::Candidates,
+                                                       CertifiedStep::Inside,  CertifiedStep::TopEnd,        CertifiedStep::T2End,
+                                                       CertifiedStep::Continuity};
+
+/// The step's name exactly as prove_covering's Outcome::step spells it ("proved" for Proved).
+const char* certified_step_name(CertifiedStep s);
+
+/// The code of the step named `step` by prove_covering's verdict; none for a name without a code.
+std::optional<CertifiedStep> certified_step_of(const std::string& step);
+
+/// The legend of the codes, "0 proved | 1 admissibility | 2 covering: candidates | ...", as written in
+/// the header and the help.
+std::string certified_step_legend();
+
+/// Lemma 4 proved at one point of the plane (the `certified` and `certified_step` columns).
+struct PlaneCertified {
+  bool proved = false;                          ///< prove_covering's verdict
+  CertifiedStep step = CertifiedStep::Proved;   ///< the step not proved (Proved when proved)
+};
+
+/// The rule of the `certified` and `certified_step` columns: certified::prove_covering at the point
+/// (a, b, q) of `p`, with its default options (as `dfchaos certify covering --a A --b B --q Q`).
+/// Its work is bounded by counts only (interval tests, balls, candidates), never by time, so the
+/// answer is deterministic. Its candidates come from a Dense floating-point search with no branch
+/// budget of its own (about 58 s at b/a = 1e-6, q/a = 0.3, where every branch is visited), so before
+/// any work the number of continuity branches of \f$T_1\f$ in \f$[t_2, 3\pi/2]\f$
+/// (symmetric_tangency_count + 1, in closed form) is checked against max_branches /
+/// kDenseCostFactor, the budget of the covering column's Dense fallback.
+/// @throws GaveUp beyond that budget; std::logic_error when the verdict names a step without a
+/// code (a newer certified layer: the cell is then an error cell, not a wrong code).
+PlaneCertified plane_certified(const Parameters& p, long long max_branches = kDefaultMaxCoveringBranches);
+
 /// The status of a cell.
 enum class CellStatus {
   Ok,            ///< every observable computed
@@ -48,6 +97,8 @@ struct CellValues {
   double lyapunov = NAN;    ///< orbit_statistics: Lyapunov exponent (-inf when a step stops)
   double rate = NAN;        ///< orbit_statistics: penetration rate
   double period = NAN;      ///< the period of the cycle at the orbit's end, 0 if none (see Spec)
+  double certified = NAN;   ///< plane_certified(p).proved as 0/1
+  double certified_step = NAN;  ///< plane_certified(p).step as its code (0 when proved)
   /// With lyapunov or rate: the image of the orbit's last step with a stop (orbit_statistics'
   /// last_stop_image), NaN if none. Not a column of the output.
   double stop_image = NAN;
@@ -55,7 +106,7 @@ struct CellValues {
 };
 
 /// Computes the observables of cell `index` of `spec`. Never throws for a failure of the cell:
-/// each group (covering; superstable; the orbit behind lyapunov, rate and period) that throws is
+/// each group (covering; superstable; the orbit behind lyapunov, rate and period; certified) that throws is
 /// recorded in `error` and its values stay NaN; the others are kept. Running out of memory is not
 /// a failure of the cell (another run, with more memory, would answer): std::bad_alloc passes.
 CellValues evaluate_cell(const Spec& spec, long long index);

@@ -57,7 +57,8 @@ ParsedHeader read_header(const std::string& option, const std::string& file, std
 /// Why `row` (without its '\n') is not a well-formed row of cell `index` under `columns`, or ""
 /// when it is one. Every field is checked: the index; q/a and b/a positive finite numbers; the
 /// status one of ok, inadmissible, error; each observable a number in the form the sweep writes
-/// (%.17g, nan, inf), covering and superstable 0, 1 or nan, period nan or a count; the error
+/// (%.17g, nan, inf), covering, superstable and certified 0, 1 or nan, period nan or a count,
+/// certified_step nan or a code of CertifiedStep; the error
 /// field "-" exactly when the status is not error, and no control character anywhere.
 std::string row_problem(std::string_view row, long long index, const std::vector<std::string>& columns);
 

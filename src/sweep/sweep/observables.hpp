@@ -10,7 +10,12 @@
 ///    superstable.hpp, stop_cycle);
 ///  - `rate`: the mean drilling speed, the delimiter's advance over the elapsed time of those steps;
 ///  - `period`: the period of the cycle the computed orbit closes at its end (see Spec: through a stop,
-///    it may be a cycle of the rounding).
+///    it may be a cycle of the rounding);
+///  - `certified`: Lemma 4 / Theorem 1 *proved* in ball arithmetic (Arb) at the cell's parameters as
+///    doubles, certified::prove_covering(ParameterBox::point(a, b, q)) with its default options (0 or
+///    1), and `certified_step`, the code of the step that was not proved (CertifiedStep; 0 when
+///    proved). Certified evidence at one point of the cell, not a proof over the cell's area. Not in
+///    the default set: about 5 to 40 ms per cell.
 /// Their columns always come in this order, whatever the order in which they were asked for.
 #pragma once
 
@@ -20,11 +25,14 @@
 namespace dfchaos::sweep {
 
 /// One observable.
-enum class Observable { Covering, Superstable, Lyapunov, Rate, Period };
+enum class Observable { Covering, Superstable, Lyapunov, Rate, Period, Certified };
 
 /// All observables, in column order.
 inline constexpr Observable kAllObservables[] = {Observable::Covering, Observable::Superstable, Observable::Lyapunov,
-                                                  Observable::Rate, Observable::Period};
+                                                  Observable::Rate,     Observable::Period,      Observable::Certified};
+
+/// The observables computed when none are named (`--observables` omitted): all but `certified`.
+inline constexpr const char* kDefaultObservables = "covering,superstable,lyapunov,rate,period";
 
 /// The name as written on the command line and in the header ("covering", ...).
 const char* observable_name(Observable o);
@@ -41,7 +49,8 @@ class ObservableSet {
   bool needs_orbit() const { return has(Observable::Lyapunov) || has(Observable::Rate) || has(Observable::Period); }
   /// The canonical list, in column order, e.g. "covering,superstable".
   std::string canonical() const;
-  /// The data columns of these observables, in order (superstable gives two: superstable, epsilon).
+  /// The data columns of these observables, in order (superstable gives two: superstable, epsilon;
+  /// certified two: certified, certified_step).
   std::vector<std::string> columns() const;
 
  private:

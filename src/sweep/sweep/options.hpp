@@ -13,7 +13,7 @@ namespace dfchaos::sweep {
 
 /// The options as typed (parsed by resolve()).
 struct SweepArguments {
-  std::string a = "1", q_range, b_range, observables = "covering,superstable,lyapunov,rate,period";
+  std::string a = "1", q_range, b_range, observables = kDefaultObservables;
   std::string max_branches = std::to_string(kDefaultMaxCoveringBranches);
   std::string superstable_scan = "400", theta0 = "0.5", transient = "1000", steps = "1000";
   std::string period_max = "64", period_tol = "1e-9";
