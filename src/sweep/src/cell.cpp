@@ -87,13 +87,9 @@ std::string certified_step_legend() {
 
 PlaneCertified plane_certified(const Parameters& p, long long max_branches) {
   p.require_return_map();
-  const double top = 1.5 * pi;
-  const long long branches = symmetric_tangency_count(p, *p.t2(), top) + 1;
-  const long long budget = std::max(1LL, max_branches / kDenseCostFactor);  // its candidate search is a Dense one
-  if (branches > budget)
-    throw GaveUp("work budget: [t2, 3pi/2] holds " + std::to_string(branches) + " branches of T1, more than " + std::to_string(budget) +
-                 " = max-branches / " + std::to_string(kDenseCostFactor) + " for the proof's dense candidate search (docs/reliability.md)");
-  const certified::CoveringProof proof = certified::prove_covering(certified::ParameterBox::point(p.a(), p.b(), p.q()));
+  certified::CoveringOptions opt;
+  opt.max_branches = std::max(1LL, max_branches / kDenseCostFactor);  // its candidate search is a Dense one
+  const certified::CoveringProof proof = certified::prove_covering(certified::ParameterBox::point(p.a(), p.b(), p.q()), opt);
   if (proof.verdict.proved) return {.proved = true, .step = CertifiedStep::Proved};
   const std::optional<CertifiedStep> step = certified_step_of(proof.verdict.step);
   if (!step) throw std::logic_error("not proved at a step with no code in this sweep: '" + proof.verdict.step + "'");

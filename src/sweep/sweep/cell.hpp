@@ -67,15 +67,14 @@ struct PlaneCertified {
 };
 
 /// The rule of the `certified` and `certified_step` columns: certified::prove_covering at the point
-/// (a, b, q) of `p`, with its default options (as `dfchaos certify covering --a A --b B --q Q`).
-/// Its work is bounded by counts only (interval tests, balls, candidates), never by time, so the
-/// answer is deterministic. Its candidates come from a Dense floating-point search with no branch
-/// budget of its own (about 58 s at b/a = 1e-6, q/a = 0.3, where every branch is visited), so before
-/// any work the number of continuity branches of \f$T_1\f$ in \f$[t_2, 3\pi/2]\f$
-/// (symmetric_tangency_count + 1, in closed form) is checked against max_branches /
-/// kDenseCostFactor, the budget of the covering column's Dense fallback.
-/// @throws GaveUp beyond that budget; std::logic_error when the verdict names a step without a
-/// code (a newer certified layer: the cell is then an error cell, not a wrong code).
+/// (a, b, q) of `p`, with its default options (as `dfchaos certify covering --a A --b B --q Q`)
+/// except CoveringOptions::max_branches = max_branches / kDenseCostFactor (the budget of the
+/// covering column's Dense fallback): its candidates come from a Dense search in a window above
+/// \f$t_2\f$ that grows up to that many branches of \f$T_1\f$ (beyond it the cell is not proved, step
+/// "covering: candidates"). Its work is bounded by counts only (branches, interval tests, balls,
+/// candidates), never by time, so the answer is deterministic.
+/// @throws std::logic_error when the verdict names a step without a code (a newer certified layer:
+/// the cell is then an error cell, not a wrong code).
 PlaneCertified plane_certified(const Parameters& p, long long max_branches = kDefaultMaxCoveringBranches);
 
 /// The status of a cell.
