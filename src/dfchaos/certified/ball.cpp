@@ -206,6 +206,7 @@ Ball cos(const Ball& x) { Ball r; arb_cos(r.get(), x.get(), g_prec); return r; }
 void sin_cos(const Ball& x, Ball& s, Ball& c) { arb_sin_cos(s.get(), c.get(), x.get(), g_prec); }
 Ball sqr(const Ball& x) { Ball r; arb_sqr(r.get(), x.get(), g_prec); return r; }
 Ball sqrt(const Ball& x) { Ball r; arb_sqrt(r.get(), x.get(), g_prec); return r; }
+Ball log(const Ball& x) { Ball r; arb_log(r.get(), x.get(), g_prec); return r; }
 Ball asin(const Ball& x) { Ball r; arb_asin(r.get(), x.get(), g_prec); return r; }
 Ball cot(const Ball& x) { Ball r; arb_cot(r.get(), x.get(), g_prec); return r; }
 Ball abs(const Ball& x) { Ball r; arb_abs(r.get(), x.get()); return r; }

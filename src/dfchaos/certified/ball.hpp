@@ -128,6 +128,7 @@ Ball cos(const Ball& x);   ///< \f$\cos x\f$
 void sin_cos(const Ball& x, Ball& s, Ball& c);  ///< both at once
 Ball sqr(const Ball& x);   ///< \f$x^2\f$ (tighter than x*x when x contains 0)
 Ball sqrt(const Ball& x);  ///< \f$\sqrt{x}\f$ (NaN-ball if x may be negative)
+Ball log(const Ball& x);   ///< \f$\ln x\f$ (NaN-ball if x may be non-positive)
 Ball asin(const Ball& x);  ///< \f$\arcsin x\f$
 Ball cot(const Ball& x);   ///< \f$\cot x\f$
 Ball abs(const Ball& x);   ///< \f$|x|\f$
