@@ -152,6 +152,9 @@ def bind(path, cert, claim, part):
             return "its J0, J1 are not the claim's"
         if len(dis) != int(rec.get("discontinuities_L2", -1)):
             return "its number of discontinuities on L2 is not the claim's"
+    if cert.get("statement") == "entropy":  # the claim's bound, from as many segments
+        if exact(w["rho_lower"]) != float(rec.get("rho_lower", "nan")) or len(w.get("segments", [])) != int(rec.get("segments", -1)):
+            return "its rho_lower or its number of segments is not the claim's"
     if cert.get("statement") == "window":
         got = [exact(w[k]) for k in ("left_out", "left_in", "right_in", "right_out")]
         if got != [float(x) for x in rec.get("left_edge", []) + rec.get("right_edge", [])]:

@@ -18,6 +18,7 @@
 #include "certify/certify.hpp"
 #include "dfchaos/certified/ball.hpp"
 #include "dfchaos/certified/covering.hpp"
+#include "dfchaos/certified/entropy.hpp"
 #include "dfchaos/certified/periodic.hpp"
 #include "dfchaos/certified/discontinuities.hpp"
 #include "dfchaos/certified/progression.hpp"
@@ -94,6 +95,13 @@ std::string certificate_coverings_text(double a, const Range& b, const Range& q,
 /// \f$T(X_j) \supseteq X_{j+1}\f$, periodic.hpp). Each orbit must be proved with PeriodicOptions::record.
 /// @throws std::logic_error otherwise (the reason named).
 kit::Json certificate_periodic(const certified::CoveringProof& c, const std::vector<certified::PeriodicProof>& orbits, const std::string& claim);
+
+/// Statement `entropy` (Section 7 beyond two symbols, entropy.hpp) at a point: the segments
+/// \f$I_j\f$ of the covering graph (exact double ends), each with the balls covering it (T
+/// continuous), the balls of T at its two ends, its proved successors and its weight \f$v_j\f$,
+/// and \f$\rho_{lower}\f$ with \f$\sum_{j \to k} v_k \ge \rho_{lower} v_j\f$ for every j.
+/// @throws std::logic_error unless proved with EntropyOptions::record.
+kit::Json certificate_entropy(const certified::EntropyProof& p, const std::string& claim);
 
 /// The certificate of Theorem 2's conclusion at (a, b, q) (statement superstable): T = t2 on
 /// [t2, theta_end] by closed balls from t2, the condition (21) or (22) from theta2(t2), and the

@@ -53,7 +53,7 @@ kit::Json lemma1_sub_boxes(const certified::Lemma1Proof& p) {
 
 bool has_certificate(const std::string& what) {
   return what == "vartheta0" || what == "lemma1" || what == "b0" || what == "discontinuities" || what == "covering" || what == "periodic" ||
-         what == "superstable";
+         what == "superstable" || what == "entropy";
 }
 
 std::string hex_double(double x) {
@@ -410,6 +410,30 @@ kit::Json certificate_periodic(const certified::CoveringProof& c, const std::vec
     all.push(o);
   }
   w.set("orbits", all);
+  j.set("witnesses", w);
+  return j;
+}
+
+kit::Json certificate_entropy(const certified::EntropyProof& p, const std::string& claim) {
+  if (!p.verdict.proved) throw std::logic_error("certificate_entropy: not proved");
+  kit::Json j = header("entropy", claim);
+  j.set("parameters", point_parameters(p.a, p.b, p.q));
+  kit::Json w = kit::Json::object();
+  if (p.used_lemma1) {
+    if (!p.lemma1.verdict.proved) throw std::logic_error("certificate_entropy: a ball needed Lemma 1, which is not proved (EntropyOptions::record)");
+    w.set("lemma1", lemma1_sub_boxes(p.lemma1));
+  }
+  kit::Json segs = kit::Json::array();
+  for (const certified::GraphSegment& g : p.segments) {
+    if (g.cover.empty()) throw std::logic_error("certificate_entropy: the proof was not recorded (EntropyOptions::record)");
+    kit::Json succ = kit::Json::array();
+    for (int k : g.successors) succ.push(static_cast<long long>(k));
+    kit::Json e = kit::Json::object();
+    e.set("I", hex_array({g.lo, g.hi})).set("weight", hex_double(g.weight)).set("successors", succ);
+    e.set("cover", balls(g.cover)).set("at_lo", ball(g.at_lo)).set("at_hi", ball(g.at_hi));
+    segs.push(e);
+  }
+  w.set("segments", segs).set("rho_lower", hex_double(p.rho_lower));
   j.set("witnesses", w);
   return j;
 }
