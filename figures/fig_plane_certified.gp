@@ -35,10 +35,10 @@ set mxtics 2
 set ytics ('$10^{-4}$' -4, '$10^{-3}$' -3, '$10^{-2}$' -2, '$10^{-1}$' -1)
 set mytics 10
 cell(cond) = (cond ? log10(column("b_over_a")) : NaN)
-plot f using "q_over_a":(cell(ok(0) && column("certified") == 1)):(dq/2):(db/2) w boxxyerror fs solid 1.0 noborder fc rgb c_proved notitle, \
-     f using "q_over_a":(cell(ok(0) && column("certified") != 1 && column("covering") == 1)):(dq/2):(db/2) w boxxyerror fs solid 1.0 noborder fc rgb c_sampled notitle, \
-     f using "q_over_a":(cell(ok(0) && column("certified") != 1 && column("covering") != 1)):(dq/2):(db/2) w boxxyerror fs solid 1.0 noborder fc rgb c_neither notitle, \
-     f using "q_over_a":(cell(!ok(0))):(dq/2):(db/2) w boxxyerror fs solid 1.0 noborder fc rgb "black" notitle
+plot f using "q_over_a":(cell(ok(0) && column("certified") == 1)):(0.52*dq):(0.56*db) w boxxyerror fs solid 1.0 noborder fc rgb c_proved notitle, \
+     f using "q_over_a":(cell(ok(0) && column("certified") != 1 && column("covering") == 1)):(0.52*dq):(0.56*db) w boxxyerror fs solid 1.0 noborder fc rgb c_sampled notitle, \
+     f using "q_over_a":(cell(ok(0) && column("certified") != 1 && column("covering") != 1)):(0.52*dq):(0.56*db) w boxxyerror fs solid 1.0 noborder fc rgb c_neither notitle, \
+     f using "q_over_a":(cell(!ok(0))):(0.52*dq):(0.56*db) w boxxyerror fs solid 1.0 noborder fc rgb "black" notitle
 
 # ---- the key, drawn by hand under the plot
 unset border; unset tics; unset xlabel; unset ylabel
@@ -46,9 +46,9 @@ set lmargin at screen 0; set rmargin at screen 1; set bmargin at screen 0; set t
 set xrange [0:1]; set yrange [0:1]
 ky = 0.1; ky2 = 0.035
 set object 11 rect center screen 0.06, screen ky size screen 0.018, screen 0.03 fc rgb c_proved fs solid noborder front
-set label 11 sprintf('\small proved (ball arithmetic, at the cell''s point): %d', int(NP_sum)) at screen 0.075, screen ky left front
+set label 11 sprintf('\small proved at the cell''s point: %d', int(NP_sum)) at screen 0.075, screen ky left front
 set object 12 rect center screen 0.56, screen ky size screen 0.018, screen 0.03 fc rgb c_sampled fs solid noborder front
-set label 12 sprintf('\small found by the floating search only: %d', int(NS_sum)) at screen 0.575, screen ky left front
+set label 12 sprintf('\small floating search only: %d', int(NS_sum)) at screen 0.575, screen ky left front
 set object 13 rect center screen 0.06, screen ky2 size screen 0.018, screen 0.03 fc rgb c_neither fs solid border lc rgb "#808080" front
 set label 13 sprintf('\small neither (no covering found): %d', int(NN_sum)) at screen 0.075, screen ky2 left front
 set object 14 rect center screen 0.56, screen ky2 size screen 0.018, screen 0.03 fc rgb "black" fs solid noborder front

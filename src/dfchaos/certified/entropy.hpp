@@ -54,7 +54,9 @@ struct GraphSegment {
 /// The bound at a parameter point.
 struct EntropyProof {
   Outcome verdict;                      ///< proved: rho_lower > 1 is a lower bound of rho(A)
-  double a = 1, b = 0, q = 0;           ///< the parameter point
+  double a = 1;                         ///< the parameter point: a
+  double b = 0;                         ///< b
+  double q = 0;                         ///< q
   std::vector<GraphSegment> segments;   ///< ascending, disjoint, each with its proved successors
   double rho_lower = 0;                 ///< a double r with sum_{k in succ(j)} v_k >= r v_j for every j, proved exactly
   Ball log_rho_lower;                   ///< enclosure of ln(rho_lower): h_top(T) is at least its lower end
