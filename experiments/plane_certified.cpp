@@ -31,12 +31,7 @@ const Experiment experiment{
                          "(0 proved; the sweep's certified_step legend); status ok, inadmissible or error")},
     .body = [](Run& run) {
       const long long n = run.count_int("n");
-      sweep::Spec spec;
-      spec.a = 1;
-      spec.q_over_a = sweep::Range::parse("q-range", format_double(sin_vartheta0()) + ":1:" + std::to_string(n) + ":mid");
-      spec.b_over_a = sweep::Range::parse("b-range", "1e-4:0.1:" + std::to_string(n) + ":log");
-      spec.observables = sweep::ObservableSet::parse("observables", "covering,certified");
-      spec.validate();
+      const sweep::Spec spec = sweep::report_plane(n, "covering,certified");
       std::vector<long long> cells(static_cast<std::size_t>(spec.cells()));
       for (long long k = 0; k < spec.cells(); ++k) cells[static_cast<std::size_t>(k)] = k;
       const auto values = sweep_list<sweep::CellValues, long long>(

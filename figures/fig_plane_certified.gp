@@ -50,7 +50,7 @@ set label 11 sprintf('\small proved at the cell''s point: %d', int(NP_sum)) at s
 set object 12 rect center screen 0.56, screen ky size screen 0.018, screen 0.03 fc rgb c_sampled fs solid noborder front
 set label 12 sprintf('\small floating search only: %d', int(NS_sum)) at screen 0.575, screen ky left front
 set object 13 rect center screen 0.06, screen ky2 size screen 0.018, screen 0.03 fc rgb c_neither fs solid border lc rgb "#808080" front
-set label 13 sprintf('\small neither (no covering found): %d', int(NN_sum)) at screen 0.075, screen ky2 left front
+set label 13 sprintf('\small neither proved nor found: %d', int(NN_sum)) at screen 0.075, screen ky2 left front
 set object 14 rect center screen 0.56, screen ky2 size screen 0.018, screen 0.03 fc rgb "black" fs solid noborder front
 set label 14 sprintf('\small failed or inadmissible: %d', int(NF_sum)) at screen 0.575, screen ky2 left front
 plot NaN notitle

@@ -23,7 +23,9 @@ import concurrent.futures
 import glob
 import hashlib
 import json
+import math
 import os
+import re
 import subprocess
 import sys
 
@@ -82,6 +84,31 @@ def bind_region(path, cert, claim, part):
     return None
 
 
+# The statement a certificate of each claim family must prove (first match wins): the checker verifies
+# a file's own statement, so without this a valid proof of another statement could stand for a claim.
+REQUIRED_STATEMENT = [
+    (r"cert\.thm1\.region$", "coverings"),
+    (r"cert\.sec6\.periodic\.", "periodic"),
+    (r"cert\.sec7\.entropy_graph\.", "entropy"),
+    (r"cert\.thm2\.window\d+$", "window"),
+    (r"cert\.thm2\.outside$", "not_superstable"),
+    (r"cert\.thm2\.erratum$", "theorem2_counterexample"),
+    (r"cert\.lemma1\.b0_grid$", "b0"),
+    (r"cert\.lemma1\.", "lemma1"),
+    (r"cert\.lemma2\.", "discontinuities"),
+    (r"cert\.lemma4\.paper_construction$", "paper_construction"),
+    (r"cert\.lemma4\.", "covering"),
+    (r"cert\.eq1\.", "vartheta0"),
+]
+
+
+def required_statement(claim_id):
+    for pattern, statement in REQUIRED_STATEMENT:
+        if re.match(pattern, claim_id):
+            return statement
+    return None
+
+
 def bind(path, cert, claim, part):
     """Checks that the certificate (already accepted by the checker) proves what the claim states:
     the claim holds, and the certificate's claim text, statement parameters and decisive values (b_low,
@@ -91,6 +118,11 @@ def bind(path, cert, claim, part):
     Returns None, or what differs."""
     if claim["verdict"] != "holds":
         return f"its claim {claim['id']} does not hold (verdict {claim['verdict']})"
+    want = required_statement(claim["id"])
+    if want is None:
+        return f"no certificate statement is declared for claim {claim['id']} (REQUIRED_STATEMENT)"
+    if cert.get("statement") != want:
+        return f"its statement is {cert.get('statement')!r}, claim {claim['id']} needs {want!r}"
     if cert.get("statement") == "coverings":
         return bind_region(path, cert, claim, part)
     ev = claim["evidence"]
@@ -155,6 +187,9 @@ def bind(path, cert, claim, part):
     if cert.get("statement") == "entropy":  # the claim's bound, from as many segments
         if exact(w["rho_lower"]) != float(rec.get("rho_lower", "nan")) or len(w.get("segments", [])) != int(rec.get("segments", -1)):
             return "its rho_lower or its number of segments is not the claim's"
+        # the claim states h_top > ln 2 and prints h_lower: both must follow from rho_lower
+        if not exact(w["rho_lower"]) > 2 or not float(rec.get("h_lower", "nan")) <= math.log(exact(w["rho_lower"])) * (1 + 1e-15):
+            return "its rho_lower does not give the claim's h_lower > ln 2"
     if cert.get("statement") == "window":
         got = [exact(w[k]) for k in ("left_out", "left_in", "right_in", "right_out")]
         if got != [float(x) for x in rec.get("left_edge", []) + rec.get("right_edge", [])]:

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The entropy bound from a covering graph (claims cert.sec7.entropy_graph.* of certified_claims):
-# the certificate at point C is accepted; each of these mutations is rejected by dfchaos-recheck:
+# the certificate at point A is accepted; each of these mutations is rejected by dfchaos-recheck:
 # a raised rho_lower, an edge to a segment T(I_j) does not cover, a gap in a segment's cover, two
 # segments overlapping, a weight that is not positive.
 # usage: recheck_entropy.sh CERTIFIED_CLAIMS DFCHAOS_RECHECK PYTHON

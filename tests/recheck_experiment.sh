@@ -71,5 +71,18 @@ for p in glob.glob(sys.argv[1] + "/*.json"):
 PY
 check "a Lemma 2 certificate whose count is not the claim's fails the script" \
       '! "$py" "$script" "$tmp/count" "$checker" >"$tmp/out4" 2>&1 && grep -q "cert.lemma2.C: its number of discontinuities is not the claim" "$tmp/out4"'
+# The entropy claim of point A with a valid Lemma 1 certificate (its claim text made the entropy
+# claim's) in place of its own: the checker accepts the file, the script must not bind it.
+rm -rf "$tmp/ent" && cp -r "$tmp/swap" "$tmp/ent" && rm -f "$tmp/ent/certificates/cert.lemma1.B.json"
+cp "$tmp/certificates/cert.lemma1.B.json" "$tmp/ent/certificates/" 2>/dev/null
+"$py" - "$tmp/ent/certificates/cert.lemma1.A.json" "$tmp/ent/certificates/cert.sec7.entropy_graph.A.json" <<'PY'
+import json, sys
+lemma1, target = json.load(open(sys.argv[1])), json.load(open(sys.argv[2]))
+lemma1["claim"] = target["claim"]
+json.dump(lemma1, open(sys.argv[2], "w"), indent=1)
+PY
+check "the checker alone accepts the Lemma 1 file under the entropy claim" '"$checker" "$tmp/ent/certificates/cert.sec7.entropy_graph.A.json" >/dev/null'
+check "a certificate of another statement under the entropy claim fails the script" \
+      '! "$py" "$script" "$tmp/ent" "$checker" >"$tmp/out5" 2>&1 && grep -q "its statement is .lemma1., claim cert.sec7.entropy_graph.A needs .entropy." "$tmp/out5"'
 echo "recheck_experiment: $fails failures"
 exit $((fails > 0))

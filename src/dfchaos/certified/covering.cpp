@@ -4,6 +4,8 @@
 #include <new>
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <algorithm>
 #include <exception>
 
 #include "dfchaos/bisect.hpp"
@@ -199,42 +201,56 @@ namespace {
 template <class Take>
 std::string for_each_candidate(double a, double b, double q, const CoveringOptions& opt, Take&& take) {
   std::string searched;
-  try {
-    const Parameters p(a, b, q);
-    p.require_return_map();
-    const double lo = std::isnan(opt.lo) ? *p.t2() : std::max(opt.lo, *p.t2());
-    const double hi = std::isnan(opt.hi) ? kThreeHalvesPi : std::min(opt.hi, kThreeHalvesPi);
-    if (!(lo < hi)) return searched;
+  std::optional<Parameters> p;
+  double lo = 0, hi = 0;
+  std::vector<dfchaos::CoveringSegment> segs;
+  // The floating layer may refuse (parameters outside its domain, or it gave up): then no (more)
+  // candidates. Only its exceptions are caught here; the proofs' (`take`) pass.
+  const auto floating = [](auto&& f) {
+    try {
+      f();
+      return true;
+    } catch (const std::bad_alloc&) {
+      throw;  // memory ran out: not an answer of the search
+    } catch (const std::exception&) {
+      return false;
+    }
+  };
+  const bool searched_ok = floating([&] {
+    p.emplace(a, b, q);
+    p->require_return_map();
+    lo = std::isnan(opt.lo) ? *p->t2() : std::max(opt.lo, *p->t2());
+    hi = std::isnan(opt.hi) ? kThreeHalvesPi : std::min(opt.hi, kThreeHalvesPi);
+    if (!(lo < hi)) return;
     CoveringSearch search;
     search.max_segments = opt.candidates;
     search.recheck = 32;
-    std::vector<dfchaos::CoveringSegment> segs;
-    for (long long branches = std::min(opt.first_branches, opt.max_branches);; branches = std::min(4 * branches, opt.max_branches)) {
-      const double w = branch_window(p, lo, hi, branches);
+    const long long cap = std::max(1LL, opt.max_branches);
+    for (long long branches = std::clamp(opt.first_branches, 1LL, cap);; branches = std::min(4 * branches, cap)) {
+      const double w = branch_window(*p, lo, hi, branches);
       search.max_branches = branches + 1;
-      segs = covering_segments(p, lo, w, kThreeHalvesPi, search);
-      if (w < hi) searched = " in [" + format_double(lo) + ", " + format_double(w) + "] (" + std::to_string(branches) + " branches of T1, max_branches)";
-      else searched.clear();
-      if (static_cast<int>(segs.size()) >= opt.candidates || w == hi || branches >= opt.max_branches) break;
+      segs = covering_segments(*p, lo, w, kThreeHalvesPi, search);
+      searched = w < hi ? " (candidates sought in [" + format_double(lo) + ", " + format_double(w) + "]: " + std::to_string(branches) +
+                              " branches of T1, CoveringOptions::max_branches " + std::to_string(cap) + ")"
+                        : std::string();
+      if (static_cast<int>(segs.size()) >= opt.candidates || w == hi || branches >= cap) break;
     }
-    double last_hi = -std::numeric_limits<double>::infinity();  // keep them disjoint
-    for (const auto& s : segs) {
-      Candidate c;
-      c.theta_top = move_top(p, s, kThreeHalvesPi + opt.margin_top);
-      c.theta_t2 = move_t2(p, s);
-      {
-        double w = 0;
-        const double mid = plateau_middle(p, c.theta_t2, std::fabs(c.theta_t2 - c.theta_top), w);
-        if (!std::isnan(mid)) c.plateau = w;
-      }
-      if (c.lo() < lo || c.hi() > hi || !(last_hi < c.lo())) continue;
-      last_hi = c.hi();
-      if (take(c)) return searched;
-    }
-  } catch (const std::bad_alloc&) {
-    throw;  // memory ran out: not an answer of the search
-  } catch (const std::exception&) {
-    // The floating layer refused (parameters outside its domain, or it gave up): no more candidates.
+  });
+  if (!searched_ok) return searched;
+  double last_hi = -std::numeric_limits<double>::infinity();  // keep them disjoint
+  for (const auto& s : segs) {
+    Candidate c;
+    if (!floating([&] {
+          c.theta_top = move_top(*p, s, kThreeHalvesPi + opt.margin_top);
+          c.theta_t2 = move_t2(*p, s);
+          double w = 0;
+          const double mid = plateau_middle(*p, c.theta_t2, std::fabs(c.theta_t2 - c.theta_top), w);
+          if (!std::isnan(mid)) c.plateau = w;
+        }))
+      return searched;
+    if (c.lo() < lo || c.hi() > hi || !(last_hi < c.lo())) continue;
+    last_hi = c.hi();
+    if (take(c)) return searched;
   }
   return searched;
 }

@@ -236,6 +236,7 @@ EntropyProof prove_entropy_bound(double a, double b, double q, const EntropyOpti
     double least = 1e300;
     for (std::size_t j = 0; j < n; ++j)
       if (in[j] && ratio(j) < least) least = ratio(j), worst = j;
+    if (worst == n) break;  // no ratio (NaN weights): nothing more to drop
     if (least > rho) rho = least, best_set = in;
     in[worst] = false;
   }

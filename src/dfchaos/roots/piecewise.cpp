@@ -100,10 +100,12 @@ SearchBounds search_bounds(const QuadraticPlusHarmonic& f, long double R, long d
   SearchBounds b;
   b.limit = horizon;
   auto shrink = [](long double lo, long double hi, long double& a, long double& e) {
-    // The roots are accurate to a few long-double ulps (relative 1e-18): the margin covers them a
-    // billionfold, but is capped at 10 (3 pieces of the harmonic part), reached only by flights
-    // beyond 1e10 (b/a below 1e-10), whose relative 1e-9 would leave thousands of pieces of the
-    // middle of a flight to scan (a 1e-12 flight: a margin of 1000, 320 pieces).
+    // Well separated roots are accurate to a few long-double ulps (relative 1e-18): the margin covers
+    // them a billionfold, but is capped at 10 (3 pieces of the harmonic part), reached only by flights
+    // beyond 1e10 (b/a below 1e-10), whose relative 1e-9 would leave hundreds of pieces of the middle
+    // of a flight to scan (a 1e12 flight: a margin of 1000, 320 pieces). Nearly double roots are
+    // ill-conditioned (error about eps r^2 / w for a window of half-width w), but for G1 such a
+    // window needs alpha r^2 of order gamma + R <= 2a, so r <= sqrt(2a/b), where the cap is not reached.
     const long double margin = std::min(1e-9L * (1 + std::fabs(hi)), 10.0L);
     a = lo + margin;
     e = hi - margin;

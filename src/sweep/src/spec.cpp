@@ -97,4 +97,14 @@ std::vector<std::string> Spec::columns() const {
   return c;
 }
 
+Spec report_plane(long long n, const std::string& observables) {
+  Spec spec;
+  spec.a = 1;
+  spec.q_over_a = Range::parse("q-range", format_double(sin_vartheta0()) + ":1:" + std::to_string(n) + ":mid");
+  spec.b_over_a = Range::parse("b-range", "1e-4:0.1:" + std::to_string(n) + ":log");
+  spec.observables = ObservableSet::parse("observables", observables);
+  spec.validate();
+  return spec;
+}
+
 }  // namespace dfchaos::sweep

@@ -87,4 +87,9 @@ struct Spec {
   std::vector<std::string> columns() const;
 };
 
+/// The report's plane at n x n cells (thm1_parameter_plane's axes): q/a the cell centres of
+/// \f$(\sin\vartheta_0, 1)\f$, b/a log-spaced in [1e-4, 0.1], a = 1, with `observables`
+/// (ObservableSet::parse), validated. Used by the experiments plane_lyapunov and plane_certified.
+Spec report_plane(long long n, const std::string& observables);
+
 }  // namespace dfchaos::sweep
