@@ -9,6 +9,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -466,24 +467,37 @@ TEST(Cell, CertifiedFailuresAreRecordedNotThrown) {
   EXPECT_EQ(at.certified, 1);
 }
 
+/// The rows of every cell of `s`: on 1 thread, on 3 threads in reverse order (put back in cell
+/// order), and on 3 threads again in order.
+struct RowsOnThreads {
+  std::vector<std::string> one, three, again;
+};
+RowsOnThreads rows_on_threads(const Spec& s) {
+  std::vector<long long> cells;
+  for (long long i = 0; i < s.cells(); ++i) cells.push_back(i);
+  const int before = omp_get_max_threads();
+  RowsOnThreads r;
+  omp_set_num_threads(1);
+  r.one = compute_rows(s, cells, nullptr);
+  omp_set_num_threads(3);
+  const std::vector<long long> reversed(cells.rbegin(), cells.rend());
+  r.three = compute_rows(s, reversed, nullptr);
+  std::reverse(r.three.begin(), r.three.end());
+  r.again = compute_rows(s, cells, nullptr);
+  omp_set_num_threads(before);
+  return r;
+}
+
 TEST(Cell, CertifiedRowsDoNotDependOnTheThreadCount) {
   // prove_covering's work is bounded by counts, not time: the same rows on 1 and 3 threads, in
   // either order, and again on a second run.
   const Spec s = spec_of("0.8:1.1:3", "1e-3:0.2:4:log", "covering,certified");
-  std::vector<long long> cells;
-  for (long long i = 0; i < s.cells(); ++i) cells.push_back(i);
-  const int before = omp_get_max_threads();
-  omp_set_num_threads(1);
-  const auto one = compute_rows(s, cells, nullptr);
-  omp_set_num_threads(3);
-  std::vector<long long> reversed(cells.rbegin(), cells.rend());
-  const auto three = compute_rows(s, reversed, nullptr);
-  const auto again = compute_rows(s, cells, nullptr);
-  omp_set_num_threads(before);
+  const RowsOnThreads r = rows_on_threads(s);
   int proved = 0, not_proved = 0;
-  for (std::size_t k = 0; k < cells.size(); ++k) {
-    EXPECT_EQ(one[k], three[cells.size() - 1 - k]);
-    EXPECT_EQ(one[k], again[k]);
+  for (std::size_t k = 0; k < r.one.size(); ++k) {
+    EXPECT_EQ(r.one[k], r.three[k]);
+    EXPECT_EQ(r.one[k], r.again[k]);
+    const std::vector<std::string>& one = r.one;
     const std::string tail = one[k].substr(one[k].rfind('\t', one[k].rfind('\t', one[k].rfind('\t') - 1) - 1));
     if (tail == "\t1\t0\t-\n") ++proved;
     if (tail.rfind("\t0\t", 0) == 0) ++not_proved;
@@ -493,17 +507,8 @@ TEST(Cell, CertifiedRowsDoNotDependOnTheThreadCount) {
 }
 
 TEST(Cell, RowsDoNotDependOnTheThreadCount) {
-  const Spec s = spec_of("0.7:0.95:4", "0.01:0.2:3:log", "superstable,lyapunov,period");
-  std::vector<long long> cells;
-  for (long long i = 0; i < s.cells(); ++i) cells.push_back(i);
-  const int before = omp_get_max_threads();
-  omp_set_num_threads(1);
-  const auto one = compute_rows(s, cells, nullptr);
-  omp_set_num_threads(3);
-  std::vector<long long> reversed(cells.rbegin(), cells.rend());
-  const auto three = compute_rows(s, reversed, nullptr);
-  omp_set_num_threads(before);
-  for (std::size_t k = 0; k < cells.size(); ++k) EXPECT_EQ(one[k], three[cells.size() - 1 - k]);
+  const RowsOnThreads r = rows_on_threads(spec_of("0.7:0.95:4", "0.01:0.2:3:log", "superstable,lyapunov,period"));
+  for (std::size_t k = 0; k < r.one.size(); ++k) EXPECT_EQ(r.one[k], r.three[k]);
 }
 
 // ---- runs and the checkpoint of --resume -----------------------------------------------------------
