@@ -90,6 +90,7 @@ const Experiment experiment{
       long long n_resolved = 0, n_unresolved_return = 0, n_resolved_nudged_same = 0, n_unresolved_nudged_same = 0;
       long long n_not_t2 = 0, n_cycle_failed = 0;
       long long n_unresolved_lost = 0;  // not resolved because the error was lost (StopCycle::lost), not for a narrow arc
+      long long n_no_return_lost = 0;   // no stop image repeated, and the error was lost on the way
       for (const auto& c : cycles) {
         if (c.failed) {
           ++n_cycle_failed;
@@ -103,9 +104,12 @@ const Experiment experiment{
           ++n_unresolved_return;
           n_unresolved_nudged_same += c.value.nudged_same;
           n_unresolved_lost += c.value.cycle.lost;
+        } else {
+          n_no_return_lost += c.value.cycle.lost;
         }
       }
       const long long n_cells = spec.cells();
+      const long long n_no_return = n_stop - n_cycle_failed - n_resolved - n_unresolved_return;
       run.out.claim("plane.lyapunov_both_regimes", "Theorems 1 and 2", EvidenceKind::Sampled,
                     "Over the plane, orbits with a positive Lyapunov exponent (the expanding regime of Theorem 1) and orbits "
                     "that meet a stop arc, where T' = 0 and lambda is minus infinity, both occur.")
@@ -119,13 +123,20 @@ const Experiment experiment{
       run.out.claim("plane.stop_cells_superstable", "Section 8, Theorem 2 (beyond)", EvidenceKind::Sampled,
                     "In every cell whose orbit meets a stop, the orbit of the last stop's image closes, within " +
                         std::to_string(kCycleMaxPeriod) +
-                        " steps, on a superstable cycle resolved in double precision (superstable.hpp, stop_cycle): there lambda = "
-                        "minus infinity marks an attracting cycle.")
+                        " steps, on a superstable cycle (followed by stop_cycle, superstable.hpp): there lambda = minus infinity marks "
+                        "an attracting cycle. A cell decides against it when its orbit keeps its propagated error small and does not close "
+                        "(or the search gives up); a cell whose error was lost, or whose stop arc is narrower than the safety margin, is "
+                        "undecided in double precision.")
           .ours().not_expected()
           .parameter("max_steps", kCycleMaxPeriod).parameter("safety", kStopCycleSafety).parameter("step_error", kStopCycleStepError)
           .evidence("stop", n_stop).evidence("image_not_t2", n_not_t2).evidence("resolved_cycle", n_resolved)
           .evidence("return_not_resolved", n_unresolved_return).evidence("return_not_resolved_error_lost", n_unresolved_lost)
-          .evidence("no_return", n_stop - n_cycle_failed - n_resolved - n_unresolved_return).evidence("failed", n_cycle_failed)
+          .evidence("no_return", n_no_return).evidence("no_return_error_lost", n_no_return_lost).evidence("failed", n_cycle_failed)
+          // A cell decides against the claim only where its orbit kept its error small and still did not
+          // close (no return within the bound, error not lost), or where the search gave up; a cycle seen
+          // after the error was lost, or on an arc narrower than the safety margin, is one double
+          // precision cannot decide.
+          .cases(n_stop, n_no_return - n_no_return_lost + n_cycle_failed, n_stop - n_resolved - (n_no_return - n_no_return_lost) - n_cycle_failed)
           .holds(n_stop > 0 && n_resolved == n_stop);
       Claim& nudged = run.out.claim("plane.stop_cycles_nudged", "Section 8 (beyond)", EvidenceKind::Sampled,
                     "Second check of stop_cycle's verdicts: in every cell where it resolves the cycle, the orbit moved by " +
@@ -152,6 +163,9 @@ const Experiment experiment{
       run.out.macro("LyapStopNotTTwo", std::to_string(n_not_t2));
       run.out.macro("LyapUnresolvedLost", std::to_string(n_unresolved_lost));
       run.out.macro("LyapUnresolvedNarrow", std::to_string(n_unresolved_return - n_unresolved_lost));
+      run.out.macro("LyapNoReturn", std::to_string(n_no_return));
+      run.out.macro("LyapNoReturnLost", std::to_string(n_no_return_lost));
+      run.out.macro("LyapStopCounterexamples", std::to_string(n_no_return - n_no_return_lost + n_cycle_failed));
       run.out.macro("LyapNudge", kNudge, 1);
       run.out.macro("LyapNonpositive", std::to_string(n_neg));
       run.out.macro("LyapMax", lmax, 3);

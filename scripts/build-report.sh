@@ -46,6 +46,11 @@ if grep -q 'Overfull \\vbox' "$out/report.log"; then
   echo "build-report: content ran off a page (Overfull \\vbox in $out/report.log): it is not in the PDF" >&2
   exit 1
 fi
+# A line wider than the text by more than 1 pt runs into the margin (a table or a formula too wide).
+if awk '/^Overfull \\hbox \(/ { w = $3; sub(/^\(/, "", w); sub(/pt$/, "", w); if (w + 0 > 1) { print; bad = 1 } } END { exit !bad }' "$out/report.log" >&2; then
+  echo "build-report: lines wider than the text by more than 1 pt (Overfull \\hbox in $out/report.log)" >&2
+  exit 1
+fi
 # Every claim is in the PDF; no nan, inf or unresolved reference (??) reached it; the main text
 # (before the appendices) stays within 30 pages.
 pdftotext -layout "$out/report.pdf" "$out/report.txt"
@@ -59,6 +64,17 @@ missing = [i for i in ids if i not in flat]
 problems = []
 if missing:
     problems.append("claims not in the PDF: " + ", ".join(missing))
+# No verdict misread: an erratum that holds is a refutation (never "holds"), and a claim whose
+# evidence is precision-limited, or that recorded cases double precision could not decide without a
+# counterexample, is never "fails".
+for f in sorted(glob.glob(build + "/claims/*.json")):
+    for c in json.load(open(f))["claims"]:
+        if c["origin"] == "erratum" and c["report_verdict"] == "holds":
+            problems.append(f"erratum {c['id']} shown as holds")
+        undecided = c["evidence"].get("precision_undecided", 0) if isinstance(c["evidence"], dict) else 0
+        if c["verdict"] == "fails" and (c["evidence_kind"] == "precision-limited" or
+                                        (undecided and not c["evidence"].get("counterexamples", 0))):
+            problems.append(f"claim {c['id']} fails on precision-limited evidence")
 for pattern, what in ((r"\?\?", "an unresolved reference (??)"), (r"(?<![A-Za-z])-?nan(?![A-Za-z])", "nan"),
                       (r"(?<![A-Za-z])-?inf(?![A-Za-z])", "inf")):
     m = re.search(pattern, text, flags=re.IGNORECASE)

@@ -226,4 +226,11 @@ TEST(StopCycle, NoRepeatWithinTheBoundIsNotACycle) {
   EXPECT_FALSE(c.resolved);
   EXPECT_EQ(c.margin, 0);
   EXPECT_EQ(first_visit(p, *p.t2(), *p.t2(), 5), 0);
+  EXPECT_FALSE(c.lost);  // five steps: the error is still far below every arc
+  // Two hundred steps of a chaotic orbit: no return, and the error has long passed 1e-3, so that the
+  // computed orbit's not closing says nothing about the true one (plane.stop_cells_superstable
+  // counts such a cell as undecided, not against the claim).
+  const StopCycle far = t2_cycle(p, 200);
+  EXPECT_EQ(far.period, 0);
+  EXPECT_TRUE(far.lost);
 }

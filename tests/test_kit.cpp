@@ -127,6 +127,26 @@ TEST(Claims, PrecisionLimitedIsInconclusiveNeverFails) {
   EXPECT_NE(c.to_json().dump().find("\"evidence_kind\": \"precision-limited\""), std::string::npos);
 }
 
+TEST(Claims, CasesLostToPrecisionMakeAClaimInconclusiveNeverFailing) {
+  Claim lost("x.lost", "Section 6", EvidenceKind::Sampled, "every case");
+  lost.cases(20, 0, 11).holds(false);  // a later holds(false) cannot turn it into a failure
+  EXPECT_EQ(lost.verdict(), Verdict::Inconclusive);
+  EXPECT_EQ(lost.kind(), EvidenceKind::PrecisionLimited);
+  const std::string j = lost.to_json().dump();
+  EXPECT_NE(j.find("\"precision_undecided\": 11"), std::string::npos);
+  EXPECT_NE(j.find("\"checked\": 20"), std::string::npos);
+  Claim counter("x.counter", "Section 6", EvidenceKind::Sampled, "every case");
+  counter.cases(20, 1, 11);  // one decided counterexample refutes it whatever the rest
+  EXPECT_EQ(counter.verdict(), Verdict::Fails);
+  EXPECT_EQ(counter.kind(), EvidenceKind::Sampled);
+  Claim all("x.all", "Section 6", EvidenceKind::Sampled, "every case");
+  all.cases(20, 0, 0);
+  EXPECT_EQ(all.verdict(), Verdict::Holds);
+  Claim bad("x.bad", "Section 6", EvidenceKind::Sampled, "every case");
+  EXPECT_THROW(bad.cases(5, 3, 3), std::logic_error);
+  EXPECT_THROW(bad.cases(5, -1, 0), std::logic_error);
+}
+
 TEST(Claims, AnErratumThatHoldsIsShownAsARefutationNeverAsHolds) {
   Claim c("x.err", "Theorem 2", EvidenceKind::Certified, "the paper's statement fails here");
   c.erratum().holds(true);

@@ -252,6 +252,9 @@ StopCycle stop_cycle(const Parameters& p, double image, long long max_steps, dou
       error = std::isfinite(d.dT) && error < kLostAt ? std::fabs(d.dT) * error + step_error : inf;
     }
   }
+  // No stop image repeated, and the orbit's error ended beyond every arc: that the computed orbit did
+  // not close says nothing about the true one.
+  if (c.period == 0 && !(error < kLostAt)) c.lost = true;
   c.margin = c.period > 0 ? margin : 0.0;
   c.resolved = c.period > 0 && c.margin >= kStopCycleSafety;
   return c;

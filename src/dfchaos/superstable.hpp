@@ -69,7 +69,8 @@ struct StopCycle {
   double margin = 0;
   bool resolved = false;      ///< period > 0 and margin >= kStopCycleSafety: a superstable cycle (sampled)
   /// The error reached \f$10^{-3}\f$ before a stop (or overflowed, or a step grazed), or a step without
-  /// a stop changed branch within its reach: margin 0 for that reason, not for a narrow arc.
+  /// a stop changed branch within its reach: margin 0 for that reason, not for a narrow arc. Also set
+  /// when no stop image repeated (period 0) and the error at the last step was beyond \f$10^{-3}\f$.
   bool lost = false;
 };
 

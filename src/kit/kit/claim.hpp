@@ -78,6 +78,14 @@ class Claim {
   /// Double precision cannot decide this claim here: verdict inconclusive, kind
   /// precision-limited, with the reason recorded as evidence.
   Claim& inconclusive(const std::string& reason);
+  /// Records the cases a claim about "every case" rests on (evidence `checked`, `counterexamples`,
+  /// `precision_undecided`) and sets the verdict from them: fails when some case is a counterexample
+  /// decided in double precision; otherwise inconclusive (kind precision-limited) when some case could
+  /// not be decided because its propagated error was lost; otherwise holds. From then on a claim with
+  /// undecided cases and no counterexample can never be "fails" (a later holds(false) leaves it
+  /// inconclusive): double precision losing a case is not a failure of the claim.
+  /// @throws std::logic_error unless 0 <= counterexamples, undecided and their sum <= checked.
+  Claim& cases(long long checked, long long counterexamples, long long undecided);
 
   const std::string& id() const { return id_; }                ///< the identifier
   const std::string& reference() const { return reference_; }  ///< where in the paper
@@ -102,6 +110,7 @@ class Claim {
   bool expected_ = true;
   bool has_tolerance_ = false;
   double tolerance_ = 0;
+  bool precision_undecided_ = false;  // cases(): some case undecided and none a counterexample
 };
 
 }  // namespace dfchaos::kit
