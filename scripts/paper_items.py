@@ -28,7 +28,7 @@ STRENGTH = ["certified", "analytic", "sampled", "precision-limited"]
 # treats it; `match`: a regular expression on a claim's reference; `says`: the item in a few of our
 # words (LaTeX); `threshold`: claims that make its "b/a sufficiently small" explicit.
 ITEMS = [
-    dict(key="eq1", home="sec:model", item="Eq.~(1)", match=r"Eq\. \(1\)",
+    dict(key="eq1", home="sec:model", item="Eq.~(1)", match=r"^Eq\. \(1\)",
          says=r"$\pi-\vartheta_0=\cot(\vartheta_0/2)$ has one root in $[0,\pi/2]$, $\vartheta_0\approx0.81047$"),
     dict(key="sec2", home="sec:model", item="Sec.~2, Eqs.~(2)--(7)", match=r"Eqs?\. \((2|3)\)|Section 2",
          says=r"the model: forcing $a\sin t+2b$, friction $q$; phases $t_0<t_1$, $t_2<t_3$; free, progression, stop"),
@@ -40,6 +40,8 @@ ITEMS = [
          says=r"$T_1$: the first root of $G_1$ (11); bounds on the flight (12)--(13); where $T_1$ jumps (14)--(16)"),
     dict(key="lemma2", home="sec:lemma2", item="Lemma~2", match=r"Lemma 2",
          says=r"$T_1$ has finitely many discontinuities on $L_0$ and decreases across each (15)"),
+    dict(key="sec5", home="sec:lemma2", item="Sec.~5, after Lemma~2", match=r"Section 5",
+         says=r"$\theta\in[t_2,5\pi/4]$ gives $\theta_1\in[3\pi/2,t_3]$"),
     dict(key="lemma3", home="sec:lemma3", item="Lemma~3", match=r"Lemma 3",
          says=r"$T(\theta)=\theta_2 \bmod 2\pi$ when it lies in $[t_2,t_3)$, and $T(\theta)=t_2$ otherwise"),
     dict(key="lemma4", home="sec:lemma4", item="Lemma~4", match=r"Lemma 4(?!, Remark)", threshold=["cert.thm1.region", "thm1.plane_computed"],

@@ -190,3 +190,18 @@ TEST(Parameters, RegressionAssumption2NamesTheParameterThatBreaksIt) {
   EXPECT_NO_THROW(Parameters(1.0, 0.01, 0.85).require_eq2());
   EXPECT_NO_THROW(Parameters(2.0, 0.02, 1.7).require_eq2());
 }
+
+TEST(Format, ShortestReadsBackToTheSameDouble) {
+  EXPECT_EQ(dfchaos::format_shortest(0.85), "0.85");
+  EXPECT_EQ(dfchaos::format_double(0.85), "0.84999999999999998");
+  EXPECT_EQ(dfchaos::format_shortest(0.1 + 0.2), "0.30000000000000004");
+  EXPECT_EQ(dfchaos::format_shortest(5e-5), "5e-05");
+  // Every double of a spread of magnitudes reads back exactly, and no shorter decimal would.
+  double x = 1.2345678901234567e-12;
+  for (int k = 0; k < 200; ++k, x *= 1.3771) {
+    const std::string s = dfchaos::format_shortest(x);
+    EXPECT_EQ(std::strtod(s.c_str(), nullptr), x) << s;
+    EXPECT_LE(s.size(), dfchaos::format_double(x).size()) << s;
+  }
+  EXPECT_EQ(Parameters(1.0, 0.003, 0.85).describe(), "a=1 b=0.003 q=0.85");
+}

@@ -2,6 +2,7 @@
 /// @brief The two kinds of failure (errors.hpp) and the %.17g format of every output.
 #include "dfchaos/errors.hpp"
 
+#include <charconv>
 #include <cstdio>
 
 namespace dfchaos {
@@ -12,6 +13,12 @@ InvalidParameter::InvalidParameter(const std::string& parameter, const std::stri
 
 InvalidParameter::InvalidParameter(const std::string& parameter, const std::string& condition)
     : std::invalid_argument(parameter + ": " + condition), parameter_(parameter) {}
+
+std::string format_shortest(double x) {
+  char buf[40];
+  const auto r = std::to_chars(buf, buf + sizeof buf, x);
+  return std::string(buf, r.ptr);
+}
 
 std::string format_double(double x) {
   char buf[40];

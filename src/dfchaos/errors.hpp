@@ -37,4 +37,9 @@ class GaveUp : public std::runtime_error {
 /// Formats a double with 17 significant digits (round-trip exact), as used in every output.
 std::string format_double(double x);
 
+/// Formats a double for people: the shortest decimal that reads back to the same double ("0.85",
+/// not "0.84999999999999998"; std::to_chars), for statements, descriptions and messages. Data
+/// columns keep format_double().
+std::string format_shortest(double x);
+
 }  // namespace dfchaos

@@ -136,7 +136,7 @@ std::string Assumptions::describe() const {
 }
 
 std::string Parameters::describe() const {
-  return "a=" + format_double(a_) + " b=" + format_double(b_) + " q=" + format_double(q_);
+  return "a=" + format_shortest(a_) + " b=" + format_shortest(b_) + " q=" + format_shortest(q_);
 }
 
 }  // namespace dfchaos

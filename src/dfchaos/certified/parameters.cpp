@@ -8,8 +8,8 @@
 namespace dfchaos::certified {
 
 std::string ParameterBox::describe() const {
-  auto range = [](double lo, double hi) { return lo == hi ? format_double(lo) : "[" + format_double(lo) + ", " + format_double(hi) + "]"; };
-  return "a=" + format_double(a) + " b=" + range(b_lo, b_hi) + " q=" + range(q_lo, q_hi);
+  auto range = [](double lo, double hi) { return lo == hi ? format_shortest(lo) : "[" + format_shortest(lo) + ", " + format_shortest(hi) + "]"; };
+  return "a=" + format_shortest(a) + " b=" + range(b_lo, b_hi) + " q=" + range(q_lo, q_hi);
 }
 
 ParameterBalls::ParameterBalls(const ParameterBox& box) : box_(box) {
