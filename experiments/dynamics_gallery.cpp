@@ -265,7 +265,7 @@ const Experiment experiment{
         }
         run.out.macro("GallerySecFivePhases", std::to_string(grid));
         run.out.macro("GallerySecFiveDiscontinuities", std::to_string(z_checked));
-        run.out.claim("gallery.sec5_every_theta", "Section 5 (after Lemma 2)", EvidenceKind::Sampled,
+        run.out.claim("gallery.sec5_every_theta", "Section 5 (theta in [t2, 5pi/4])", EvidenceKind::Sampled,
                       "Read for every theta in [t2, 5pi/4], the sentence after Lemma 2 (theta1 = T1(theta) mod 2pi lies in "
                       "[3pi/2, t3] once b/a is small) is false: at b/a = b and at b/a = b-proof some phases of a grid of "
                       "[t2, 5pi/4] land outside [3pi/2, t3].")
@@ -275,7 +275,7 @@ const Experiment experiment{
               .evidence("phases_per_b", static_cast<long long>(grid)).evidence("landing_per_b_at_b_and_b_proof", landed_per_b)
               .evidence("landing_tolerance", kLandingTol)
               .holds(phases_checked > 0 && every_b_has_outside);
-        run.out.claim("gallery.sec5_at_discontinuities", "Section 5 (after Lemma 2), Lemma 4 (proof)", EvidenceKind::Sampled,
+        run.out.claim("gallery.sec5_at_discontinuities", "Section 5 (theta in [t2, 5pi/4]), Lemma 4 (proof)", EvidenceKind::Sampled,
                       "Read at the discontinuities z of T1 in [t2, 5pi/4] (where the proof of Lemma 4 uses it), the sentence "
                       "after Lemma 2 holds at b/a = b and b-proof: every T1(z) mod 2pi lies in [3pi/2, t3], in fact in "
                       "[7pi/4, t3], since T1(z) + z = pi mod 2pi at a tangency.")
