@@ -28,6 +28,7 @@ namespace {
 constexpr double kStepTol = 1e-9;        // simulator's switch phase against T of the previous one
 constexpr double kPenetrationTol = 1e-9; // simulator's advance of the delimiter per step against T's fiber (relative)
 constexpr double kMassTol = 1e-12;       // the invariant density and the atom at t2 sum to one
+constexpr double kLandingTol = 1e-12;    // a hit phase counts as <= t3 up to rounding of the phase
 
 long long regime_number(Regime r) { return r == Regime::Free ? 0 : (r == Regime::Progression ? 1 : 2); }
 
@@ -50,7 +51,7 @@ Table samples_table(const Simulation& s, double t_origin) {
 
 const Experiment experiment{
     .title = "gallery of the dynamics: time history checked against T, impact map, T1 mod 2pi with L0, L1, L2, invariant density",
-    .paper = {"Section 2", "Section 3", "Lemma 2", "Lemma 3", "Lemma 4", "Introduction (invariant measure)"},
+    .paper = {"Section 2", "Section 3", "Section 5", "Lemma 2", "Lemma 3", "Lemma 4", "Introduction (invariant measure)"},
     .tests = {"test_reduction", "test_next_hit", "test_invariant_density"},
     .options = {real("b", 0.01, "b/a of the gallery (history, impacts, density, T1 on the whole arc)").range(1e-4, 0.2).recorded_as("b_over_a"),
                 real("q", 0.85, "q/a of the gallery").range(0.5, 0.999).recorded_as("q_over_a"),
@@ -232,6 +233,57 @@ const Experiment experiment{
           .holds(in_L2 >= 3 && landing_in_L1 == in_L2);
       run.out.macro("GalleryProofB", b_proof, 2);
       run.out.macro("GalleryLTwoCount", std::to_string(in_L2));
+
+      // ---- Section 5, after Lemma 2: "theta in [t2, 5pi/4] gives theta1 in [3pi/2, t3]". Read for
+      // every theta (theta1 = T1(theta) mod 2pi), and read only at the discontinuities z of T1, the
+      // only phases at which the proof of Lemma 4 uses it (T1(z_i) > 3pi/2, via Eq. 16).
+      {
+        const double hi = 5 * pi / 4;
+        long long phases_checked = 0, all_landed = 0, z_checked = 0, z_landed = 0;
+        bool every_b_has_outside = true;
+        double z_min_phase = two_pi;
+        Json landed_per_b = Json::array();
+        for (const double bb : {ba, b_proof}) {
+          const Parameters ps(1.0, bb, qa);
+          const double s_t2 = *ps.t2(), s_t3 = *ps.t3();
+          const auto lands = [&](double phase) { return phase >= 1.5 * pi && phase <= s_t3 + kLandingTol; };
+          const Axis arc = Axis::linear(s_t2, hi, grid);
+          long long landed = 0;
+          for (int i = 0; i < grid; ++i)
+            if (lands(next_hit(ps, arc[i]).t1.phase)) ++landed;
+          phases_checked += grid;
+          all_landed += landed;
+          landed_per_b.push(landed);
+          if (landed == grid) every_b_has_outside = false;
+          const std::string tag = bb == ba ? "Gallery" : "GalleryProof";
+          run.out.macro(tag + "SecFiveLandPercent", 100.0 * static_cast<double>(landed) / grid, 2);
+          for (const GrazingPoint& g : grazing_points(ps, s_t2, hi, 4000)) {
+            ++z_checked;
+            if (lands(g.tangency.phase)) ++z_landed;
+            z_min_phase = std::min(z_min_phase, g.tangency.phase);
+          }
+        }
+        run.out.macro("GallerySecFivePhases", std::to_string(grid));
+        run.out.macro("GallerySecFiveDiscontinuities", std::to_string(z_checked));
+        run.out.claim("gallery.sec5_every_theta", "Section 5 (theta in [t2, 5pi/4])", EvidenceKind::Sampled,
+                      "Read for every theta in [t2, 5pi/4], the sentence after Lemma 2 (theta1 = T1(theta) mod 2pi lies in "
+                      "[3pi/2, t3] once b/a is small) is false: at b/a = b and at b/a = b-proof some phases of a grid of "
+                      "[t2, 5pi/4] land outside [3pi/2, t3].")
+              .erratum()
+              .parameter("b_over_a", ba).parameter("b_proof", b_proof).parameter("q_over_a", qa)
+              .evidence("phases_checked", phases_checked).evidence("phases_landing_in_3pi2_t3", all_landed)
+              .evidence("phases_per_b", static_cast<long long>(grid)).evidence("landing_per_b_at_b_and_b_proof", landed_per_b)
+              .evidence("landing_tolerance", kLandingTol)
+              .holds(phases_checked > 0 && every_b_has_outside);
+        run.out.claim("gallery.sec5_at_discontinuities", "Section 5 (theta in [t2, 5pi/4]), Lemma 4 (proof)", EvidenceKind::Sampled,
+                      "Read at the discontinuities z of T1 in [t2, 5pi/4] (where the proof of Lemma 4 uses it), the sentence "
+                      "after Lemma 2 holds at b/a = b and b-proof: every T1(z) mod 2pi lies in [3pi/2, t3], in fact in "
+                      "[7pi/4, t3], since T1(z) + z = pi mod 2pi at a tangency.")
+            .parameter("b_over_a", ba).parameter("b_proof", b_proof).parameter("q_over_a", qa)
+            .evidence("discontinuities_checked", z_checked).evidence("landing_in_3pi2_t3", z_landed)
+            .evidence("smallest_landing_phase", z_min_phase).evidence("landing_tolerance", kLandingTol)
+            .holds(z_checked > 0 && z_landed == z_checked);
+      }
 
       // ---- the invariant density: two long orbits from two starts, and pooled
       const double start1 = t2 + 0.3 * (t3 - t2), start2 = t2 + 0.7 * (t3 - t2);

@@ -5,6 +5,7 @@
 #include <map>
 #include <tuple>
 
+#include "dfchaos/parameters.hpp"
 #include "dfchaos/progression_stop.hpp"
 #include "dfchaos/return_map.hpp"
 #include "dfchaos/simulator.hpp"
@@ -15,6 +16,8 @@ using namespace dfchaos;
 using namespace dfchaos::kit;
 
 namespace {
+constexpr double kTieTol = 1e-12;  // grid points with |q - 4b| below this are skipped (the order of the cosines is a tie)
+
 long long regime_number(Regime r) { return r == Regime::Free ? 0 : (r == Regime::Progression ? 1 : 2); }
 
 /// Time history of a simulation from rest at the delimiter at t_start, sampled n times.
@@ -30,7 +33,7 @@ Table history(const Parameters& p, double t_start, double duration, int n) {
 
 const Experiment experiment{
     .title = "Section 3: scenarios of the motion between two free flights",
-    .paper = {"Section 3", "Lemma 1"},
+    .paper = {"Section 3", "Eq. (7)", "Lemma 1"},
     .tests = {"test_reduction", "test_return_map"},
     .options = {count("n", 4000, "grid points of theta in [t2, t3) per parameter set").range(10, 10'000'000).fast_value(200)},
     .outputs = {data("phases", "the switching phases t0, t1 (zeros of F - q) and t2, t3 (zeros of F) per parameter set"),
@@ -126,6 +129,48 @@ const Experiment experiment{
           .evidence("D_steps_where_lemma1_holds", d_with_lemma1)
           .holds(d_with_lemma1 == 0);
       run.out.macro("SecThreeScenariosMet", met);
+
+      // Section 3, after Eq. (7): "cos t3 > cos t0, so (7) is negative at t3", said because b << q.
+      // Both cosines are >= 0 (t0 in [-pi/2, pi/2], t3 = 2pi - asin(2b/a)), and
+      // cos^2 t3 - cos^2 t0 = ((q - 2b)^2 - (2b)^2)/a^2 = q (q - 4b)/a^2: cos t3 > cos t0 exactly when
+      // q > 4b. Then both terms of (7) at t3, -a (cos t3 - cos t0) and 2c (t3 - t0) with c < 0, are
+      // negative. The grid checks the library's t0, t3 against this, over the whole of (2).
+      {
+        const int nq = run.fast() ? 40 : 400, nb = run.fast() ? 40 : 400;
+        const double q_lo = sin_vartheta0();
+        long long points = 0, ties = 0, order_mismatch = 0, q_gt_4b = 0, eq7_not_negative = 0, q_le_4b_eq7_negative = 0;
+        for (int i = 1; i <= nq; ++i)
+          for (int j = 1; j <= nb; ++j) {
+            const double qa = q_lo + (1.0 - q_lo) * i / (nq + 1), ba = 0.5 * j / (nb + 1);
+            if (std::fabs(qa - 4 * ba) < kTieTol) {
+              ++ties;
+              continue;
+            }
+            const Parameters p(1.0, ba, qa);
+            const double t0 = *p.t0(), t3 = *p.t3();
+            const double eq7_at_t3 = -(std::cos(t3) - std::cos(t0)) + 2 * p.c() * (t3 - t0);
+            ++points;
+            const bool predicted = qa > 4 * ba;
+            if ((std::cos(t3) > std::cos(t0)) != predicted) ++order_mismatch;
+            if (predicted) {
+              ++q_gt_4b;
+              if (!(eq7_at_t3 < 0)) ++eq7_not_negative;
+            } else if (eq7_at_t3 < 0) {
+              ++q_le_4b_eq7_negative;
+            }
+          }
+        run.out.claim("sec3.eq7_negative_at_t3", "Section 3, Eq. (7)", EvidenceKind::Analytic,
+                      "Under (2), cos t3 > cos t0 holds exactly when q > 4b (cos^2 t3 - cos^2 t0 = q(q - 4b)/a^2, both "
+                      "cosines non-negative), and then (7) is negative at t3: the paper's 'b << q' here means b < q/4. "
+                      "Checked against the library's t0, t3 on a grid of (q/a, b/a) over (2).")
+            .evidence("grid_points", points).evidence("points_within_tie_tolerance_skipped", ties)
+            .evidence("cos_order_mismatches", order_mismatch).evidence("points_with_q_gt_4b", q_gt_4b)
+            .evidence("q_gt_4b_with_eq7_not_negative", eq7_not_negative)
+            .evidence("q_le_4b_with_eq7_still_negative", q_le_4b_eq7_negative)
+            .evidence("tie_tolerance", kTieTol)
+            .holds(points > 0 && q_gt_4b > 0 && order_mismatch == 0 && eq7_not_negative == 0);
+        run.out.macro("SecThreeEqSevenPoints", std::to_string(points));
+      }
     }};
 
 DFCHAOS_EXPERIMENT_MAIN(experiment)

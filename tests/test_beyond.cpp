@@ -133,6 +133,41 @@ TEST(EventualRegime, CasesOfTheRemarkOfSection9) {
   }
 }
 
+TEST(EventualRegime, OverlapOfTheRemarkRangesProgressesForEver) {
+  constexpr double kInstantStopShare = 1e-8;  // share of time stopped that counts as instantaneous stops
+  // The Remark of Section 9 gives q <= 2b an everlasting progression and (2b - a, a + 2b) "everlasting
+  // progression or periodic stick-slip": the two ranges overlap on (2b - a, 2b]. The experiment reads the
+  // second as 2b < q < a + 2b; this checks that on the overlap the motion does what both cases allow.
+  // Independent prediction: with c = b - q/2 >= 0, a progression from rest at t0 has the velocity
+  // -a (cos t - cos t0) + 2c (t - t0), positive on (t0, t0 + 2 pi) (checked by a plain scan), so it
+  // never stops for a whole period and never does later (the term 2c (t - t0) only grows).
+  for (const double b : {0.5, 0.75, 2.0})
+    for (const double s : {0.05, 0.5, 0.95, 1.0}) {  // q = 2b - a + s a; s = 1 is q = 2b
+      const double q = 2 * b - 1.0 + s;
+      const Parameters p(1.0, b, q);
+      ASSERT_GE(p.c(), -1e-15) << "b=" << b << " q=" << q;
+      const double t0 = *p.t0();
+      for (int i = 1; i < 100'000; ++i) {
+        const double t = t0 + two_pi * i / 100'000;
+        ASSERT_GT(-(std::cos(t) - std::cos(t0)) + 2 * p.c() * (t - t0), 0.0) << "b=" << b << " q=" << q << " t=" << t;
+      }
+      for (auto [v0, start] : {std::pair{0.0, 0.0}, std::pair{0.5, 1.7}, std::pair{2.0, 4.0}}) {
+        const EventualRegime r = eventual_regime(p, v0, start, 40, 10);
+        EXPECT_EQ(r.fraction_free, 0.0) << "b=" << b << " q=" << q;
+        if (s < 1.0) {
+          EXPECT_EQ(r.behaviour, EventualBehaviour::EternalProgression)
+              << "b=" << b << " q=" << q << " v0=" << v0 << " t0=" << start << ": " << eventual_behaviour_name(r.behaviour);
+        } else {
+          // q = 2b: the velocity a (1 - cos t) touches zero once per period, an instantaneous stop that
+          // the simulator may record as a stop of rounding length; no stop of positive length.
+          EXPECT_TRUE(r.behaviour == EventualBehaviour::EternalProgression || r.behaviour == EventualBehaviour::PeriodicStickSlip)
+              << "b=" << b << " v0=" << v0 << " t0=" << start << ": " << eventual_behaviour_name(r.behaviour);
+          EXPECT_LE(r.fraction_stop, kInstantStopShare) << "b=" << b << " v0=" << v0 << " t0=" << start;
+        }
+      }
+    }
+}
+
 TEST(EventualRegime, RejectsBadCounts) {
   EXPECT_THROW(eventual_regime(Parameters(1.0, 0.6, 1.0), 0.0, 0.0, 10, 20), InvalidParameter);
   EXPECT_THROW(orbit_statistics(Parameters(1.0, 0.01, 0.85), 4.0, -1, 10), InvalidParameter);
