@@ -108,6 +108,7 @@ const Experiment experiment{
       run.out.claim("lemma2.jumps_bounded_below", "Lemma 2", EvidenceKind::Sampled,
                     "The jumps T1(z-0) - T1(z) on L0 are bounded below uniformly in small b/a: at every b/a each jump is at least "
                     "2 (sin(pi/100) - 2b/a), two thirds of the cubic Taylor estimate, which is positive for b/a < sin(pi/100)/2.")
+          .evidence("b_over_a_values", static_cast<long long>(bas.size())).evidence("discontinuities", discontinuities_compared)
           .evidence("min_jump_over_all_b_over_a", min_jump_all).evidence("violations_of_2_sin_pi_100_bound", bound_violations)
           .evidence("cubic_estimate_3_sin_pi_over_100", cubic_estimate)
           .holds(bound_violations == 0);
