@@ -148,7 +148,7 @@ const Experiment experiment{
           .evidence("pieces_checked", pieces_checked).evidence("not_superstable", not_super).evidence("smallest_epsilon", smallest_eps)
           .holds(pieces_checked > 0 && not_super == 0 && eq2_without_hypotheses == 0);
       run.out.claim("thm2.grid_agrees", "Theorem 2 (numerics)", EvidenceKind::Sampled,
-                    "Every point of an independent grid where (21) or (22) holds lies inside a window found, with the same condition.")
+                    "Every point of an independent grid where (21) or (22) holds lies inside a piece found, of the same condition.")
           .ours()
           .evidence("grid_points", static_cast<long long>(grid_points) * static_cast<long long>(run.reals("q").size()))
           .evidence("grid_points_in_conditions", grid_in_conditions).evidence("grid_points_outside_windows", mismatch_grid)
