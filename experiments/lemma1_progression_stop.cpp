@@ -13,6 +13,10 @@
 using namespace dfchaos;
 using namespace dfchaos::kit;
 
+namespace {
+constexpr double kBoundFormulaTolerance = 1e-12;  // |bisected threshold of (9) - (q/a - sin vartheta0)/2|
+}  // namespace
+
 const Experiment experiment{
     .title = "Lemma 1: where the progression from rest at t0 stops",
     .paper = {"Lemma 1", "Eq. (7)", "Eq. (8)", "Eq. (9)"},
@@ -32,7 +36,8 @@ const Experiment experiment{
       Table curve({"q_over_a", "b0_lemma1", "b0_proof_bound", "holds_at_smallest_b", "outcome_at_smallest_b"});
       Table grid({"q_over_a", "b_over_a", "lemma1_holds", "eq8_velocity_at_t2", "proof_bound", "t4", "next"});
       int mismatch_eq8 = 0, bound_without_lemma = 0, above_threshold_fail = 0, below_threshold_hold = 0, non_interval = 0;
-      int n_above = 0;
+      int n_above = 0, n_below = 0;
+      long long grid_cases = 0, bound_cases = 0, held_after_failure_checked = 0;
       for (int i = 0; i < nq; ++i) {
         const double qa = q_axis[i];
         double b0 = 0, b0_bound = 0;
@@ -44,6 +49,9 @@ const Experiment experiment{
           if (!(qa > 2 * ba) || !(std::fabs(qa - 2 * ba) < 1)) { still = still_bound = false; continue; }
           const Parameters p(1.0, ba, qa);
           const ProgressionFromT0 r = progression_from_t0(p);
+          ++grid_cases;
+          if (r.proof_bound) ++bound_cases;
+          if (seen_fail) ++held_after_failure_checked;
           // Second method: the sign of Eq. (8) must agree with the root search.
           if ((r.eq8_velocity_at_t2 <= 0) != r.stops_in_t1_t2) ++mismatch_eq8;
           if (r.proof_bound && !r.stops_in_t1_t2) ++bound_without_lemma;
@@ -62,8 +70,9 @@ const Experiment experiment{
         if (qa > s0) {
           ++n_above;
           if (!holds_small) ++above_threshold_fail;
-        } else if (holds_small) {
-          ++below_threshold_hold;
+        } else {
+          ++n_below;
+          if (holds_small) ++below_threshold_hold;
         }
         // Refine both thresholds by bisection between the last grid point that holds and the next.
         const double grid_ratio = std::pow(0.49 / ba_min, 1.0 / (nb - 1));
@@ -77,11 +86,11 @@ const Experiment experiment{
       run.out.claim("lemma1.eq8_agrees", "Lemma 1, Eq. (8)", EvidenceKind::Sampled,
                     "The sign of the velocity at t2 (Eq. 8) and the root search agree on whether the progression stops by t2.")
           .ours()
-          .evidence("mismatches", mismatch_eq8)
+          .evidence("checked", grid_cases).evidence("mismatches", mismatch_eq8)
           .holds(mismatch_eq8 == 0);
       run.out.claim("lemma1.proof_bound_sufficient", "Lemma 1, proof", EvidenceKind::Sampled,
                     "Wherever the proof's bound a + a cos t0 - (q-2b)(pi - t0) < 0 holds, the progression does stop in [t1, t2].")
-          .evidence("violations", bound_without_lemma)
+          .evidence("checked_where_bound_holds", bound_cases).evidence("violations", bound_without_lemma)
           .holds(bound_without_lemma == 0);
       run.out.claim("lemma1.small_b", "Lemma 1", EvidenceKind::Sampled,
                     "For every grid q/a above sin(vartheta0), the progression from rest at t0 stops in [t1, t2] at the smallest b/a of the grid.")
@@ -91,30 +100,47 @@ const Experiment experiment{
       run.out.claim("lemma1.threshold_sharp", "Lemma 1, Eq. (9)", EvidenceKind::Sampled,
                     "Below q/a = sin(vartheta0) Lemma 1 fails even for the smallest b/a: the threshold of (2) is sharp for this step of the proof.")
           .ours().not_expected()
-          .evidence("q_points_below_threshold_where_it_holds", below_threshold_hold)
+          .evidence("q_points_below_threshold", n_below).evidence("q_points_below_threshold_where_it_holds", below_threshold_hold)
           .holds(below_threshold_hold == 0);
       run.out.claim("lemma1.b0_interval", "Lemma 1", EvidenceKind::Sampled,
                     "At each q/a the b/a where Lemma 1 holds form an initial interval (0, b0): it never holds again above a failure.")
           .ours().not_expected()
-          .evidence("reentries", non_interval)
+          .evidence("q_points", nq).evidence("grid_points_above_a_failure", held_after_failure_checked).evidence("reentries", non_interval)
           .holds(non_interval == 0);
 
       // b0 at selected q/a, for the report.
-      LatexTable tex("rrrr", {"$q/a$", "$b_0/a$ (Lemma 1)", "$b_0/a$ (proof's bound)", "ratio"});
+      // The proof's bound in closed form: the second inequality of (9) is cot(t0/2) < pi - t0, i.e.
+      // t0 > vartheta0 (Eq. 1), i.e. (q - 2b)/a > sin(vartheta0): b/a < (q/a - sin(vartheta0))/2.
+      // The bisected threshold of the bound must reproduce it (a check of both).
+      LatexTable tex("rrrrr", {"$q/a$", "$b_0/a$ (Lemma 1)", "$b_0/a$ (proof's bound)", "$(q/a-\\sin\\vartheta_0)/2$", "ratio"});
       double ratio_min = INFINITY, ratio_max = 0;  // b0 over the proof's bound, over the rows
+      double worst_formula = 0;                     // |bisected bound - (q/a - sin vartheta0)/2| over the rows
+      int formula_rows = 0;
       for (double qa : {0.73, 0.75, 0.8, 0.85, 0.9, 0.95, 0.99}) {
         const double hi = std::min(0.49, qa / 2);
         const double b0 = lemma1_threshold(qa, ba_min, hi, Lemma1Criterion::StopsInT1T2);
         const double bb = lemma1_threshold(qa, ba_min, hi, Lemma1Criterion::ProofBound);
-        tex.row({format_significant(qa, 3), format_significant(b0, 4), format_significant(bb, 4),
+        const double formula = (qa - s0) / 2;
+        tex.row({format_significant(qa, 3), format_significant(b0, 4), format_significant(bb, 4), format_significant(formula, 4),
                  bb > 0 ? format_significant(b0 / bb, 3) : std::string("---")});
+        worst_formula = std::max(worst_formula, std::fabs(bb - formula));
+        ++formula_rows;
         if (bb > 0) {
           ratio_min = std::min(ratio_min, b0 / bb);
           ratio_max = std::max(ratio_max, b0 / bb);
         }
-        if (qa == 0.85) { run.out.macro("LemmaOneBzeroAtEightyFive", b0, 4); run.out.macro("LemmaOneBoundAtEightyFive", bb, 4); }
+        if (qa == 0.85) { run.out.macro("LemmaOneBzeroAtEightyFive", b0, 4); run.out.macro("LemmaOneBoundAtEightyFive", bb, 4);
+          run.out.macro("LemmaOneBoundFormulaAtEightyFive", formula, 4);
+        }
       }
       run.latex("lemma1_b0", tex.render());
+      run.out.claim("lemma1.proof_bound_closed_form", "Lemma 1, Eq. (9), Eq. (1)", EvidenceKind::Sampled,
+                    "The largest b/a at which the proof's inequality (9) holds is exactly (q/a - sin(vartheta0))/2: (9) is "
+                    "cot(t0/2) < pi - t0, i.e. t0 > vartheta0, i.e. q - 2b > a sin(vartheta0). The bisected threshold agrees to {tol} "
+                    "at every q/a of the table.")
+          .ours()
+          .evidence("q_points", formula_rows)
+          .at_most("worst_difference", worst_formula, kBoundFormulaTolerance);
       run.out.macro("LemmaOneRatioMin", ratio_min, 3);
       run.out.macro("LemmaOneRatioMax", ratio_max, 3);
       run.out.macro("LemmaOneBaMin", ba_min, 3);

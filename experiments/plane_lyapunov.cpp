@@ -149,7 +149,7 @@ const Experiment experiment{
       run.out.claim("plane.lyapunov_computed", "Theorem 1", EvidenceKind::Sampled,
                     "Every cell's orbit was followed without error.")
           .ours()
-          .evidence("errors", n_err)
+          .evidence("cells", n_cells).evidence("errors", n_err)
           .holds(n_err == 0);
       run.out.macro("LyapN", std::to_string(n));
       run.out.macro("LyapCells", std::to_string(n_cells));

@@ -36,7 +36,8 @@ const Experiment experiment{
                 count("global", 600, "grid points of [t2, 3pi/2) for the search of the perturbed covering anywhere").range(20, 100000).fast_value(150),
                 count("n", 400, "grid points per widened segment").range(20, 100000).fast_value(60),
                 count("n-check", 200, "phases of the eps = 0 validation").range(2, 100000).fast_value(20)},
-    .outputs = {data("", "covering by the perturbed map near J0, J1, per eps: u where T_eps = t2_eps, w where T_eps >= 3pi/2, continuity between"),
+    .outputs = {data("", "covering by the perturbed map near J0, J1, per eps: u where T_eps = t2_eps, w where T_eps >= 3pi/2, continuity "
+                         "between; near_J_search says whether that search finished (otherwise u, w, covers are not known)"),
                 data("graph", "T_eps on the widened segments"),
                 data("validation", "eps = 0: the integrated perturbed map against the exact T"),
                 data("global", "per eps: the perturbed covering searched on all of [t2, 3pi/2): segments found, integrations that gave up"),
@@ -67,28 +68,49 @@ const Experiment experiment{
                                                       : std::vector<double>{0, 1e-4, 3e-4, 1e-3, 3e-3, 1e-2, 3e-2, 1e-1, 3e-1};
       PerturbedCoveringSearch search;
       search.grid = run.count_int("n");
-      Table table({"eps", "t2_eps", "J0_covers", "J0_u", "J0_w", "J1_covers", "J1_u", "J1_w"});
+      Table table({"eps", "t2_eps", "near_J_search", "J0_covers", "J0_u", "J0_w", "J1_covers", "J1_u", "J1_w"});
       Table graph({"eps", "segment", "theta", "T_eps"});
-      LatexTable tex("rrccl", {"$\\varepsilon$", "$t_2^\\varepsilon$", "near $J_0$", "near $J_1$", "covering (segments found near $J_i$ or anywhere)"});
+      LatexTable tex("rrcrcrl", {"$\\varepsilon$", "$t_2^\\varepsilon$", "near $J_0$", "$u_0$", "near $J_1$", "$u_1$",
+                                  "covering (near $J_i$ or anywhere)"});
       Table global({"eps", "t2_eps", "samples", "gave_up", "segments", "first_lo", "first_hi", "second_lo", "second_hi", "outcome"});
       double persists_up_to = -1, persists_near_up_to = -1, first_failure = NAN;
       std::string first_failure_outcome = "none";
       bool unbroken = true, unbroken_near = true;
       const int n_global = run.count_int("global");
+      // The stop arc next to J0 moves with eps: the first eps at which u0 is not found within the
+      // window, and the first at which u0 lies left of the u0 found at a smaller eps (then it is
+      // the edge of another arc than the one followed so far).
+      double first_u0_missing = NAN, first_u0_back = NAN, last_u0 = NAN;
       for (double eps : epsilons) {
+        // t2_eps once, for the data and the LaTeX table alike (NaN: the stop release left [pi - 1/2, 3pi/2]).
+        double t2e = NAN;
+        try {
+          t2e = perturbed_stop_release(p, eps);
+        } catch (const InvalidParameter&) {
+        }
         PerturbedCovering r;
+        std::string near_search = "done";
         std::vector<PerturbedSample> samples;  // kept when the search gives up half way
         try {
           r = perturbed_covering(p, c, eps, search, &samples);
         } catch (const InvalidParameter&) {
           r = PerturbedCovering{};  // the perturbation moved the stop release away from t2: no comparison
+          near_search = "stop release moved";
         } catch (const GaveUp&) {
-          r = PerturbedCovering{};
+          r = PerturbedCovering{};  // an integration gave up: the search did not finish, its u, w are unknown
+          near_search = "integration gave up";
+        }
+        const bool near_done = near_search == "done";
+        if (near_done && !std::isfinite(r.u[0]) && !std::isfinite(first_u0_missing)) first_u0_missing = eps;
+        if (near_done && std::isfinite(r.u[0])) {
+          if (std::isfinite(last_u0) && r.u[0] < last_u0 && !std::isfinite(first_u0_back)) first_u0_back = eps;
+          last_u0 = r.u[0];
         }
         for (const PerturbedSample& s : samples) graph.row({eps, static_cast<long long>(s.segment), s.theta, s.T});
         if (unbroken_near && r.both()) persists_near_up_to = eps;
         else unbroken_near = false;
-        table.row({eps, r.t2_eps, static_cast<long long>(r.covers[0]), r.u[0], r.w[0], static_cast<long long>(r.covers[1]), r.u[1], r.w[1]});
+        table.row({eps, t2e, near_search, static_cast<long long>(r.covers[0]), r.u[0], r.w[0], static_cast<long long>(r.covers[1]), r.u[1],
+                   r.w[1]});
         // The same question without the restriction to the neighbourhood of J0, J1.
         std::string outcome, cell;
         PerturbedGlobalCovering gc;
@@ -123,9 +145,12 @@ const Experiment experiment{
         auto seg = [&](std::size_t k, bool hi) { return k < gc.segments.size() ? (hi ? gc.segments[k].second : gc.segments[k].first) : NAN; };
         global.row({eps, gc.t2_eps, static_cast<long long>(gc.samples), static_cast<long long>(gc.gave_up),
                     static_cast<long long>(gc.segments.size()), seg(0, false), seg(0, true), seg(1, false), seg(1, true), outcome});
-        const double t2e = std::isfinite(r.t2_eps) ? r.t2_eps : gc.t2_eps;
-        tex.row({format_significant(eps, 2), std::isfinite(t2e) ? format_significant(t2e, 8) : std::string("---"),
-                 r.covers[0] ? "yes" : "no", r.covers[1] ? "yes" : "no", cell});
+        // The same values as in the data: a dash where the data have none (t2_eps undefined, or the
+        // search near J_i did not finish).
+        auto near_cell = [&](int i) { return near_done ? std::string(r.covers[i] ? "yes" : "no") : std::string("---"); };
+        auto u_cell = [&](int i) { return near_done && std::isfinite(r.u[i]) ? format_significant(r.u[i], 6) : std::string("---"); };
+        tex.row({format_significant(eps, 2), std::isfinite(t2e) ? format_significant(t2e, 8) : std::string("---"), near_cell(0), u_cell(0),
+                 near_cell(1), u_cell(1), cell});
       }
       run.table("", table);
       run.table("graph", graph);
@@ -137,6 +162,11 @@ const Experiment experiment{
       run.out.macro("SecTenFirstFailure", std::isfinite(first_failure) ? format_significant(first_failure, 2) : std::string("none"));
       run.out.macro("SecTenFirstFailureOutcome", first_failure_outcome);
       run.out.macro("SecTenB", b, 3);
+      // The window of the search for u near J_i: a quarter of |J_i| (search.margin) either side of its end.
+      run.out.macro("SecTenReachJZero", search.margin * (c.J0.hi - c.J0.lo), 2);
+      run.out.macro("SecTenUZeroAtZero", c.J0.theta_at_t2, 6);
+      run.out.macro("SecTenUZeroMissing", std::isfinite(first_u0_missing) ? format_significant(first_u0_missing, 2) : std::string("none"));
+      run.out.macro("SecTenUZeroBack", std::isfinite(first_u0_back) ? format_significant(first_u0_back, 2) : std::string("none"));
       run.out.macro("SecTenQ", q, 3);
 
       run.out.claim("sec10.validation", "Section 10 (numerics)", EvidenceKind::Sampled,

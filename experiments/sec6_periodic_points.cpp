@@ -166,13 +166,14 @@ const Experiment experiment{
                     "For every m up to m-max there is a periodic orbit with itinerary (0^(m-1)1)^infinity: every point lies in its "
                     "segment K_0 or K_1, and T sends each point to the next to within {tol}.")
           .parameter("b_over_a", b).parameter("q_over_a", q).parameter("m_max", m_max)
-          .evidence("failures", bad).evidence("max_step_residual", worst_res).evidence("gap_between_K0_and_K1", gap)
+          .evidence("periods_checked", m_max).evidence("failures", bad).evidence("max_step_residual", worst_res)
+          .evidence("gap_between_K0_and_K1", gap)
           .tolerance(kStepTol)
           .holds(bad == 0);
       run.out.claim("sec6.minimal_period", "Section 6", EvidenceKind::Sampled,
                     "Each of these orbits has minimal period m: K0 and K1 are disjoint (gap far above the residuals) and a shift of "
                     "the word 0^(m-1)1 by 0 < j < m differs from it, so T^j(p) != p.")
-          .evidence("gap_between_K0_and_K1", gap).evidence("max_step_residual", worst_res)
+          .evidence("periods_checked", m_max).evidence("gap_between_K0_and_K1", gap).evidence("max_step_residual", worst_res)
           .holds(bad == 0 && gap > 1e3 * worst_res);
       // Not expected: the expansion |T'|^m puts the points of a long 0-run closer than double precision.
       run.out.claim("sec6.numerically_distinct", "Section 6 (numerics)", EvidenceKind::Sampled,

@@ -102,7 +102,7 @@ const Experiment experiment{
       co.holds(n_both > 0);
       run.out.claim("thm1.plane_computed", "Theorem 1", EvidenceKind::Sampled, "Every cell of the plane was classified without error.")
           .ours()
-          .evidence("errors", n_err)
+          .evidence("cells", n_cells).evidence("errors", n_err)
           .holds(n_err == 0);
       auto& bw = run.out.claim("plane.branchwise_vs_dense", "Lemma 4", EvidenceKind::Sampled,
                                "On the cross-check sub-grid the branch-by-branch covering search gives the same verdict as the dense "

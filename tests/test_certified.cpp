@@ -193,7 +193,7 @@ TEST(CertifiedLemma2, CountAndEnclosuresMatchTheClosedForm) {
     for (std::size_t i = 0; i < f.size(); ++i) {
       EXPECT_TRUE(within(d.z[i].z, f[i].z, 1e-12)) << i;
       EXPECT_TRUE(d.z[i].jump.is_positive());
-      // T1 jumps up at z: the floating T1 just left of z is after the tangency.
+      // T1 jumps down at z as theta increases: the floating T1 just left of z is after the tangency.
       EXPECT_GT(next_hit(Parameters(1, b, 0.85), d.z[i].z.lower() - 1e-9).theta1, d.z[i].t_star.upper());
     }
   }

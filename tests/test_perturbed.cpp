@@ -177,4 +177,23 @@ TEST_F(PerturbedCoveringTest, PersistsForASmallPerturbationCheckedByAnIndependen
   EXPECT_NE(r.u[0], r0.u[0]);
 }
 
+// Regression (issue 32): at eps = 0.01 the stop arc next to J0 has grown over J0's end, and the
+// search returned that end itself as u (the unperturbed value to the last digit) instead of the
+// arc's edge. u must now be the edge on the side of w: on the arc at u, off it 1e-5 beyond.
+TEST_F(PerturbedCoveringTest, RegressionUIsTheEdgeOfTheStopArcNotTheEndOfJ) {
+  const double eps = 1e-2;
+  const PerturbedCovering r = perturbed_covering(p, c, eps, search);
+  OdeMapOptions o;
+  o.perturbation = [eps](double t, double, double v) { return G_here(eps, t, v); };
+  const CoveringSegment* J[2] = {&c.J0, &c.J1};
+  for (int i = 0; i < 2; ++i) {
+    if (!(std::isfinite(r.u[i]) && std::isfinite(r.w[i]))) continue;
+    const double towards_w = r.w[i] > r.u[i] ? 1.0 : -1.0;
+    EXPECT_NEAR(ode_return_map_step(p, r.u[i], o).T, r.t2_eps, 1e-9) << i;
+    EXPECT_GT(std::fabs(ode_return_map_step(p, r.u[i] + towards_w * 1e-5, o).T - r.t2_eps), 1e-9) << i;
+    EXPECT_NE(r.u[i], J[i]->theta_at_t2) << i;
+  }
+  ASSERT_TRUE(std::isfinite(r.u[0]));
+}
+
 }  // namespace

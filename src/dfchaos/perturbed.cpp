@@ -76,10 +76,32 @@ PerturbedCovering perturbed_covering(const Parameters& p, const Lemma4Covering& 
       }
     return PerturbedCovering::nan;
   };
+  // From a phase x on a stop arc (T_eps = t2_eps), the edge of that arc on the side of `target`:
+  // step towards target (ladder steps of the search) while T_eps = t2_eps holds, then bisect
+  // between the last such phase and the first where it does not. Without this, a stop arc that
+  // has grown over the end of J_i would give u = that end itself, not where the arc ends.
+  auto edge_towards = [&](double x, double target, double step, auto&& on_arc) {
+    if (!std::isfinite(x) || !std::isfinite(target) || x == target) return x;
+    const double dir = target > x ? 1.0 : -1.0;
+    double in = x, out = target;  // target = w: T_eps >= 3pi/2 there, not on the arc
+    for (int k = 1; k <= s.ladder; ++k) {
+      const double y = x + dir * step * k;
+      if ((target - y) * dir <= 0) break;
+      if (!on_arc(perturbed_T(p, eps, y))) {
+        out = y;
+        break;
+      }
+      in = y;
+    }
+    return bisect([&](double m) { return on_arc(perturbed_T(p, eps, m)); }, in, out,
+                  BisectStop{.max_iterations = s.jump_halvings, .abs_tol = s.jump_width})
+        .first;
+  };
   for (int i = 0; i < 2; ++i) {
     const double reach = s.margin * (J[i]->hi - J[i]->lo);
-    const double u = nearest(J[i]->theta_at_t2, reach, [&](double Tx) { return std::fabs(Tx - r.t2_eps) < s.release_match; });
+    auto on_arc = [&](double Tx) { return std::fabs(Tx - r.t2_eps) < s.release_match; };
     const double w = nearest(J[i]->theta_at_top, reach, [&](double Tx) { return Tx >= top; });
+    const double u = edge_towards(nearest(J[i]->theta_at_t2, reach, on_arc), w, reach / s.ladder, on_arc);
     r.u[i] = u;
     r.w[i] = w;
     r.covers[i] = std::isfinite(u) && std::isfinite(w) && perturbed_continuous_between(p, eps, std::min(u, w), std::max(u, w), s, graph, i);

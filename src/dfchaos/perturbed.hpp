@@ -92,7 +92,9 @@ struct PerturbedCovering {
   static constexpr double nan = std::numeric_limits<double>::quiet_NaN();  ///< "not computed"
   double t2_eps = nan;               ///< \f$t_2^\varepsilon\f$ (NaN when the search did not get that far)
   bool covers[2] = {false, false};   ///< \f$T_\varepsilon([u_i, w_i]) \supseteq [t_2^\varepsilon, 3\pi/2]\f$ (u, w found, continuous between)
-  double u[2] = {nan, nan};          ///< the phase with \f$T_\varepsilon = t_2^\varepsilon\f$ nearest the \f$T = t_2\f$ end of \f$J_i\f$ (NaN: none within the margin)
+  /// the edge, on the side of w, of the stop arc (\f$T_\varepsilon = t_2^\varepsilon\f$) met nearest the \f$T = t_2\f$ end of
+  /// \f$J_i\f$ (NaN: no such phase within the margin)
+  double u[2] = {nan, nan};
   double w[2] = {nan, nan};          ///< the phase with \f$T_\varepsilon \ge 3\pi/2\f$ nearest the other end (NaN: none)
   bool both() const { return covers[0] && covers[1]; }  ///< the covering persists
 };
@@ -100,7 +102,10 @@ struct PerturbedCovering {
 /// Searches the perturbed covering near the segments of an unperturbed Lemma 4 covering `c` of
 /// the same parameters: for each \f$J_i\f$, the nearest phases u, w to its ends (outwards on a ladder
 /// of `ladder` steps up to `margin` times its length, both sides, within \f$[t_2, 3\pi/2)\f$), and
-/// the continuity of \f$T_\varepsilon\f$ between them. The grid values of the continuity checks go to
+/// the continuity of \f$T_\varepsilon\f$ between them. u is then moved to the edge of its stop arc
+/// on the side of w (ladder steps towards w while \f$T_\varepsilon = t_2^\varepsilon\f$, then
+/// bisection to `jump_width`), so that it marks where the arc ends even when the arc has grown over
+/// the end of \f$J_i\f$. The grid values of the continuity checks go to
 /// `graph` (if given), as in perturbed_continuous_between.
 /// @throws InvalidParameter from perturbed_stop_release; GaveUp from perturbed_T.
 PerturbedCovering perturbed_covering(const Parameters& p, const Lemma4Covering& c, double eps, const PerturbedCoveringSearch& search = {},

@@ -64,8 +64,10 @@ std::string statement_b0(double a, double q, double b_low) {
 }
 std::string statement_discontinuities(const std::string& segment, std::size_t n) {
   return "Lemma 2 on " + segment + " at the double values of a, b: T1 has exactly " + std::to_string(n) +
-         " discontinuities there, the z_k with 2z - (a/b) cos z = (2k+1) pi (enclosed), each a first-contact tangency where "
-         "T1 jumps up by at least the printed amount; T1 is continuous and decreasing on each interval between them.";
+         " discontinuities there, the z_k with 2z - (a/b) cos z = (2k+1) pi (enclosed), each a first-contact tangency "
+         "T1(z_k) = z_k - (a/b) cos z_k at which T1 is continuous from the right and jumps down as theta increases: the left limit "
+         "T1(z_k - 0) exceeds T1(z_k) by at least the 'jump_at_least' recorded for that z_k; T1 is continuous and decreasing on "
+         "each interval between them.";
 }
 std::string statement_covering(const ParameterBox& box) {
   return "Lemma 4 (and the covering of Theorem 1) " + params_text(box) +
