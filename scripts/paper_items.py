@@ -9,24 +9,30 @@ the verdict. Our own hypotheses and findings never do (a failing hypothesis of o
 of the paper), except the claims an item names in `threshold`, which make an explicit threshold of
 a "b/a sufficiently small" in the paper.
 
-Verdict about the paper (paper_verdict):
+Verdict about the paper (paper_verdict), the first rule that applies:
   - refuted (erratum): an erratum of the item holds, or a claim of the paper fails;
-  - inconclusive (precision): no claim of the paper holds and some is inconclusive;
-  - confirmed with an explicit threshold: every claim of the paper holds and so do the threshold claims;
-  - confirmed: every claim of the paper holds (inconclusive ones aside);
-  - not checked: no claim of the paper or erratum bears on the item.
+  - inconclusive (precision): no claim of the paper holds and some is inconclusive (or an erratum,
+    its only evidence, is inconclusive);
+  - confirmed as corrected: the claims of the paper hold, and so do the claims an item names in
+    `corrections`, which check the statement as corrected in the report's errata list (a misprint,
+    or a hypothesis the statement leaves out);
+  - confirmed with an explicit threshold: the claims of the paper hold, and so do the claims an item
+    names in `threshold`, which bound "b/a sufficiently small" explicitly;
+  - confirmed: the claims of the paper hold (an inconclusive one aside, when another holds);
+  - not checked: no claim of the paper, and no erratum that holds or is inconclusive, bears on it.
+An erratum that fails refutes nothing and confirms nothing.
 """
 import re
 
 # The verdicts about the paper, in the order the report counts them.
-VERDICTS = ["confirmed", "threshold", "refuted", "inconclusive", "not checked"]
+VERDICTS = ["confirmed", "corrected", "threshold", "refuted", "inconclusive", "not checked"]
 
 # Evidence, strongest first (kit/claim.hpp).
 STRENGTH = ["certified", "analytic", "sampled", "precision-limited"]
 
 # One row per item of the paper, in reading order. `home`: the label of the report's section that
 # treats it; `match`: a regular expression on a claim's reference; `says`: the item in a few of our
-# words (LaTeX); `threshold`: claims that make its "b/a sufficiently small" explicit.
+# words (LaTeX); `threshold`, `corrections`: see the module's docstring.
 ITEMS = [
     dict(key="eq1", home="sec:model", item="Eq.~(1)", match=r"^Eq\. \(1\)",
          says=r"$\pi-\vartheta_0=\cot(\vartheta_0/2)$ has one root in $[0,\pi/2]$, $\vartheta_0\approx0.81047$"),
@@ -37,14 +43,15 @@ ITEMS = [
     dict(key="lemma1", home="sec:reduction", item="Lemma~1", match=r"Lemma 1", threshold=["cert.lemma1.b0_grid", "lemma1.b0_interval"],
          says=r"for $b<b_0(q)$ the progression from rest at $t_0$ stops in $[t_1,t_2]$"),
     dict(key="sec4", home="sec:nexthit", item="Sec.~4, Eqs.~(11)--(16)", match=r"Section 4|Eq\. \((11|12|13|14|16)\)",
+         corrections=["eq12.second_derivative", "eq13.bound"],
          says=r"$T_1$: the first root of $G_1$ (11); bounds on the flight (12)--(13); where $T_1$ jumps (14)--(16)"),
     dict(key="lemma2", home="sec:lemma2", item="Lemma~2", match=r"Lemma 2",
          says=r"$T_1$ has finitely many discontinuities on $L_0$ and decreases across each (15)"),
     dict(key="sec5", home="sec:lemma2", item="Sec.~5, after Lemma~2", match=r"Section 5",
          says=r"$\theta\in[t_2,5\pi/4]$ gives $\theta_1\in[3\pi/2,t_3]$"),
-    dict(key="lemma3", home="sec:lemma3", item="Lemma~3", match=r"Lemma 3",
+    dict(key="lemma3", home="sec:lemma3", item="Lemma~3", match=r"Lemma 3", corrections=["lemma3.needs_lemma1"],
          says=r"$T(\theta)=\theta_2 \bmod 2\pi$ when it lies in $[t_2,t_3)$, and $T(\theta)=t_2$ otherwise"),
-    dict(key="lemma4", home="sec:lemma4", item="Lemma~4", match=r"Lemma 4(?!, Remark)", threshold=["cert.thm1.region", "thm1.plane_computed"],
+    dict(key="lemma4", home="sec:lemma4", item="Lemma~4", match=r"Lemma 4(?!, Remark)",
          says=r"disjoint $J_0,J_1\subset[t_2,3\pi/2]$, $T$ continuous on each, $T(J_i)\supseteq[t_2,3\pi/2]$"),
     dict(key="lemma4remark", home="sec:periodic", item="Remark after Lemma~4", match=r"Lemma 4, Remark",
          says=r"the $J_i$ may be taken with $T(J_i)=[t_2,3\pi/2]$ exactly"),
@@ -52,15 +59,16 @@ ITEMS = [
          says=r"periodic points of every minimal period $m$ (itinerary $(0^{m-1}1)^\infty$)"),
     dict(key="sec7", home="sec:periodic", item="Sec.~7", match=r"Section 7",
          says=r"semi-conjugacy to the one-sided shift on two symbols, so $h_{\mathrm{top}}(T)\ge\ln2$"),
-    dict(key="thm1", home="sec:plane", item="Theorem~1", match=r"Theorems? 1", threshold=["cert.thm1.region", "thm1.plane_computed"],
+    dict(key="thm1", home="sec:plane", item="Theorem~1", match=r"Theorems? 1",
          says=r"for $b<b_0(a,q)$: covering segments, infinitely many periodic points, symbolic dynamics"),
     dict(key="thm2", home="sec:theorem2", item="Sec.~8, Theorem~2", match=r"Theorem 2|Section 8(?!, Remark)|Theorems 1 and 2",
+         corrections=["thm2.nondegenerate", "cert.thm2.erratum"],
          says=r"under (2) and (22), or (21) and (23), $t_2$ is a superstable fixed point of $T$"),
     dict(key="sec8remark", home="sec:errata", item="Remark in Sec.~8", match=r"Section 8, Remark",
          says=r"with (21), (2) relaxes to (23), and $b/a$ need not be small in either case"),
     dict(key="sec9remark", home="sec:remark9", item="Remark in Sec.~9", match=r"Section 9",
          says=r"for $b\ge a/2$ the eventual regime depends on the parameters only, not on the start"),
-    dict(key="sec10", home="sec:robustness", item="Sec.~10", match=r"Section 10(?! \(numerics\))", threshold=["sec10.covering_persists"],
+    dict(key="sec10", home="sec:robustness", item="Sec.~10", match=r"Section 10(?! \(numerics\))",
          says=r"the covering survives small $C^2$ perturbations; the $J_i$ move continuously with $(a,b,q)$"),
 ]
 
@@ -79,27 +87,29 @@ def items_of(claim):
     return [it["key"] for it in ITEMS if re.search(it["match"], claim["reference"])]
 
 
-def paper_verdict(deciding, thresholds):
+def paper_verdict(deciding, thresholds, corrections=()):
     """The verdict about the paper from the claims of the paper or errata that bear on an item
-    (`deciding`) and its threshold claims (`thresholds`), as the module docstring states."""
-    if not deciding:
-        return "not checked"
-    if any(c["origin"] == "erratum" and c["verdict"] == "holds" for c in deciding) or \
-            any(c["origin"] == "paper" and c["verdict"] == "fails" for c in deciding):
-        return "refuted"
+    (`deciding`), its threshold claims and its correction claims, as the module docstring states."""
     paper = [c for c in deciding if c["origin"] == "paper"]
-    if paper and not any(c["verdict"] == "holds" for c in paper):
+    errata = [c for c in deciding if c["origin"] == "erratum"]
+    if any(c["verdict"] == "holds" for c in errata) or any(c["verdict"] == "fails" for c in paper):
+        return "refuted"
+    if not paper:
+        return "inconclusive" if any(c["verdict"] == "inconclusive" for c in errata) else "not checked"
+    if not any(c["verdict"] == "holds" for c in paper):
         return "inconclusive"
+    if corrections and all(c["verdict"] == "holds" for c in corrections):
+        return "corrected"
     if thresholds and all(c["verdict"] == "holds" for c in thresholds):
         return "threshold"
     return "confirmed"
 
 
-def strongest(claims):
-    """The strongest kind of evidence among claims that hold (or, if none holds, among all)."""
-    pool = [c for c in claims if c["verdict"] in ("holds",)] or claims
-    kinds = [c["evidence_kind"] for c in pool]
-    return min(kinds, key=STRENGTH.index) if kinds else ""
+def evidence_summary(claims):
+    """The kinds of evidence behind a verdict, strongest first, with how many claims of each hold
+    ("certified 5, sampled 3"); the claims that do not hold are not counted."""
+    held = [c["evidence_kind"] for c in claims if c["verdict"] == "holds"] or [c["evidence_kind"] for c in claims]
+    return ", ".join(f"{k} {held.count(k)}" for k in STRENGTH if k in held)
 
 
 def fmt(x):
@@ -114,38 +124,45 @@ def fmt(x):
     return s
 
 
-def scope(claims, kind):
-    """Where the claims of evidence `kind` were checked: regions of the (q/a, b/a) plane, parameter
-    points, lines of fixed q/a (windows in b), and the grids of experiments whose claims name no point."""
-    chosen = [c for c in claims if c["evidence_kind"] == kind and c["verdict"] == "holds"] or \
-        [c for c in claims if c["evidence_kind"] == kind]
-    regions, points, lines, other = [], set(), set(), False
+def scope(claims):
+    """Where the claims that hold were checked: regions of the (q/a, b/a) plane (with the fraction
+    proved when a claim records it), parameter points, lines of fixed q/a (windows in b), and the
+    grids of experiments whose claims name no point."""
+    chosen = [c for c in claims if c["verdict"] == "holds"] or claims
+    regions, points, lines, other = [], set(), set(), set()
     number = lambda x: isinstance(x, (int, float)) and not isinstance(x, bool)
     for c in chosen:
         p = c["parameters"]
         b = p.get("b_over_a", p.get("b"))
         q = p.get("q_over_a", p.get("q"))
         if isinstance(b, list) and isinstance(q, list) and len(b) == 2 and len(q) == 2:
-            if (b, q) not in regions:
-                regions.append((b, q))
+            ev = c.get("evidence")
+            frac = ev.get("proved_fraction_of_band") if isinstance(ev, dict) else None
+            if (b, q, frac) not in regions:
+                regions.append((b, q, frac))
         elif number(b):
             points.add((b, q if number(q) else None))
         elif b is None and number(q):
             lines.add(q)
         else:
-            other = True
-    parts = [r"region $b/a\in[%s,%s]$, $q/a\in[%s,%s]$" % (fmt(b[0]), fmt(b[1]), fmt(q[0]), fmt(q[1])) for b, q in regions]
+            other.add(c["evidence_kind"])
+    parts = []
+    for b, q, frac in regions:
+        share = r"%d\,\%% of " % int(100 * frac) if number(frac) else ""  # rounded down
+        parts.append(share + r"$b/a\in[%s,%s]$, $q/a\in[%s,%s]$" % (fmt(b[0]), fmt(b[1]), fmt(q[0]), fmt(q[1])))
     if points:
         parts.append("%d point%s" % (len(points), "" if len(points) == 1 else "s"))
     for q in sorted(lines):
         parts.append(r"$b$-windows at $q/a=%s$" % fmt(q))
-    if other or not parts:
-        parts.append({"analytic": "closed forms", "certified": "constants"}.get(kind, "grids"))
+    if other - {"analytic"}:
+        parts.append("grids or constants" if "certified" in other else "grids")
+    if "analytic" in other:
+        parts.append("closed forms")
     return "; ".join(parts)
 
 
 def rows(claims):
-    """One row per item: (item dict, verdict, evidence kind, scope, the claims behind the verdict,
+    """One row per item: (item dict, verdict, evidence summary, scope, the claims behind the verdict,
     strongest evidence first)."""
     by_key = {it["key"]: [] for it in ITEMS}
     for c in claims:
@@ -157,17 +174,17 @@ def rows(claims):
         mine = by_key[it["key"]]
         deciding = [c for c in mine if c["origin"] in ("paper", "erratum")]
         thresholds = [ids[t] for t in it.get("threshold", []) if t in ids]
-        verdict = paper_verdict(deciding, thresholds)
+        corrections = [ids[t] for t in it.get("corrections", []) if t in ids]
+        verdict = paper_verdict(deciding, thresholds, corrections)
         if verdict == "refuted":
             basis = [c for c in deciding if (c["origin"] == "erratum" and c["verdict"] == "holds") or
                      (c["origin"] == "paper" and c["verdict"] == "fails")]
-        elif verdict == "threshold":
-            basis = deciding + [c for c in thresholds if c not in deciding]
         else:
-            basis = deciding
-        kind = strongest(basis)
+            extra = thresholds if verdict == "threshold" else corrections if verdict == "corrected" else []
+            # An erratum that does not hold is no evidence for the item.
+            basis = [c for c in deciding if c["origin"] == "paper"] + [c for c in extra if c not in deciding]
         where = [c["id"] for c in sorted(basis, key=lambda c: STRENGTH.index(c["evidence_kind"]))]
-        out.append((it, verdict, kind, scope(basis, kind) if basis else "", where))
+        out.append((it, verdict, evidence_summary(basis), scope(basis) if basis else "", where))
     return out
 
 

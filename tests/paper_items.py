@@ -12,7 +12,7 @@ import paper_items as P  # noqa: E402
 
 def claim(cid, ref, origin="paper", verdict="holds", kind="sampled", params=None):
     return {"id": cid, "reference": ref, "origin": origin, "verdict": verdict, "evidence_kind": kind,
-            "parameters": params or {}}
+            "parameters": params or {}, "evidence": {}}
 
 
 def row(claims, key):
@@ -22,12 +22,12 @@ def row(claims, key):
 class Verdicts(unittest.TestCase):
     def test_confirmed_needs_every_claim_of_the_paper(self):
         cs = [claim("a", "Lemma 2"), claim("b", "Lemma 2, (15)", kind="certified", params={"a": 1, "b": 1e-3})]
-        it, verdict, kind, scope, where = row(cs, "lemma2")
+        it, verdict, evidence, scope, where = row(cs, "lemma2")
         self.assertEqual(verdict, "confirmed")
-        self.assertEqual(kind, "certified")
-        self.assertEqual(scope, "1 point")
+        self.assertEqual(evidence, "certified 1, sampled 1")
+        self.assertEqual(scope, "1 point; grids")
         self.assertEqual(where[0], "b")  # the strongest evidence first
-        cs.append(claim("c", "Lemma 2", verdict="fails"))
+        cs.append(claim("c", "Lemma 2", verdict="fails"))  # one failing claim of the paper is enough
         self.assertEqual(row(cs, "lemma2")[1], "refuted")
 
     def test_an_erratum_that_holds_refutes(self):
@@ -36,8 +36,18 @@ class Verdicts(unittest.TestCase):
         cs = [claim("cert.thm2.erratum", "Theorem 2, Lemma 1", origin="erratum", kind="certified")]
         self.assertEqual(row(cs, "sec8remark")[1], "refuted")  # ... but the known erratum goes to its Remark only
         self.assertEqual(row(cs, "lemma1")[1], "not checked")
-        cs[0]["verdict"] = "fails"  # an erratum that fails refutes nothing
-        self.assertNotEqual(row(cs, "sec8remark")[1], "refuted")
+        for v, expected in (("fails", "not checked"), ("inconclusive", "inconclusive")):
+            cs[0]["verdict"] = v  # an erratum that does not hold refutes nothing and confirms nothing
+            self.assertEqual(row(cs, "sec8remark")[1], expected)
+            self.assertEqual(row(cs, "sec8remark")[2], "")  # and is no evidence for the item
+
+    def test_corrections_are_named_and_must_hold(self):
+        cs = [claim("thm2.superstable", "Theorem 2"), claim("thm2.nondegenerate", "Section 8"),
+              claim("cert.thm2.erratum", "Theorem 2, Lemma 1", origin="erratum", kind="certified")]
+        self.assertEqual(row(cs, "thm2")[1], "corrected")  # needs b < b0(q): the erratum, as a correction
+        self.assertEqual(row(cs, "sec8remark")[1], "refuted")  # and the Remark it refutes
+        cs[1]["verdict"] = "inconclusive"
+        self.assertEqual(row(cs, "thm2")[1], "confirmed")  # a correction that is not shown does not count
 
     def test_precision_limited_is_inconclusive_never_refuted(self):
         cs = [claim("p", "Section 7", verdict="inconclusive", kind="precision-limited")]
@@ -60,7 +70,8 @@ class Verdicts(unittest.TestCase):
     def test_region_scope_and_remarks(self):
         cs = [claim("r", "Theorem 1, Lemma 4", kind="certified",
                     params={"b_over_a": [0.00195, 0.002], "q_over_a": [0.76, 0.99]})]
-        self.assertIn(r"$b/a\in[0.00195,0.002]$", row(cs, "thm1")[3])
+        cs[0]["evidence"] = {"proved_fraction_of_band": 0.8839}
+        self.assertIn(r"88\,\% of $b/a\in[0.00195,0.002]$", row(cs, "thm1")[3])  # the share proved, rounded down
         self.assertEqual(P.items_of(claim("x", "Lemma 4, Remark")), ["lemma4remark"])
         self.assertEqual(P.items_of(claim("x", "Section 8, Remark (23)")), ["sec8remark"])
 

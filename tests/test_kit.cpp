@@ -142,6 +142,17 @@ TEST(Claims, CasesLostToPrecisionMakeAClaimInconclusiveNeverFailing) {
   Claim all("x.all", "Section 6", EvidenceKind::Sampled, "every case");
   all.cases(20, 0, 0);
   EXPECT_EQ(all.verdict(), Verdict::Holds);
+  // Order does not hide a failure: a counterexample survives a later holds(true), and an earlier
+  // failure survives cases() with undecided cases.
+  Claim later("x.later", "Section 6", EvidenceKind::Sampled, "every case");
+  later.cases(20, 2, 5).holds(true);
+  EXPECT_EQ(later.verdict(), Verdict::Fails);
+  Claim earlier("x.earlier", "Section 6", EvidenceKind::Sampled, "every case");
+  earlier.holds(false).cases(20, 0, 5);
+  EXPECT_EQ(earlier.verdict(), Verdict::Fails);
+  Claim added("x.added", "Section 6", EvidenceKind::Sampled, "every case");
+  added.cases(20, 0, 0).holds(false);  // a condition of its own that fails
+  EXPECT_EQ(added.verdict(), Verdict::Fails);
   Claim bad("x.bad", "Section 6", EvidenceKind::Sampled, "every case");
   EXPECT_THROW(bad.cases(5, 3, 3), std::logic_error);
   EXPECT_THROW(bad.cases(5, -1, 0), std::logic_error);

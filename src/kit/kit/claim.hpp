@@ -81,9 +81,9 @@ class Claim {
   /// Records the cases a claim about "every case" rests on (evidence `checked`, `counterexamples`,
   /// `precision_undecided`) and sets the verdict from them: fails when some case is a counterexample
   /// decided in double precision; otherwise inconclusive (kind precision-limited) when some case could
-  /// not be decided because its propagated error was lost; otherwise holds. From then on a claim with
-  /// undecided cases and no counterexample can never be "fails" (a later holds(false) leaves it
-  /// inconclusive): double precision losing a case is not a failure of the claim.
+  /// not be decided in double precision; otherwise holds. An earlier failure stands; a later holds()
+  /// can add a failure but never erase a counterexample, and leaves an inconclusive claim inconclusive
+  /// (double precision losing a case is not a failure of the claim).
   /// @throws std::logic_error unless 0 <= counterexamples, undecided and their sum <= checked.
   Claim& cases(long long checked, long long counterexamples, long long undecided);
 
@@ -110,7 +110,7 @@ class Claim {
   bool expected_ = true;
   bool has_tolerance_ = false;
   double tolerance_ = 0;
-  bool precision_undecided_ = false;  // cases(): some case undecided and none a counterexample
+  bool cases_recorded_ = false;  // cases() was called: holds() may add a failure, never erase one
 };
 
 }  // namespace dfchaos::kit

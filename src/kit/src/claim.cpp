@@ -83,7 +83,11 @@ Claim& Claim::tolerance(double tol) {
 }
 Claim& Claim::holds(bool verdict) {
   if (verdict_ == Verdict::Inconclusive) return *this;  // precision-limited stays inconclusive
-  if (!verdict && precision_undecided_) return inconclusive("some cases could not be decided in double precision and none is a counterexample");
+  if (cases_recorded_) {
+    // cases() decided; a later verdict may add a failure of its own, never erase a counterexample.
+    if (!verdict) verdict_ = Verdict::Fails;
+    return *this;
+  }
   verdict_ = verdict ? Verdict::Holds : Verdict::Fails;
   return *this;
 }
@@ -91,12 +95,13 @@ Claim& Claim::cases(long long checked, long long counterexamples, long long unde
   if (checked < 0 || counterexamples < 0 || undecided < 0 || counterexamples + undecided > checked)
     throw std::logic_error("claim " + id_ + ": cases need 0 <= counterexamples, undecided and counterexamples + undecided <= checked");
   evidence("checked", checked).evidence("counterexamples", counterexamples).evidence("precision_undecided", undecided);
+  cases_recorded_ = true;
+  if (verdict_ == Verdict::Fails) return *this;  // an earlier failure stands
   if (counterexamples > 0) {
     verdict_ = Verdict::Fails;
     return *this;
   }
   if (undecided > 0) {
-    precision_undecided_ = true;
     return inconclusive(std::to_string(undecided) + " of " + std::to_string(checked) +
                         " cases could not be decided in double precision; none is a counterexample");
   }
