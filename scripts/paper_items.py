@@ -162,8 +162,7 @@ def scope(claims):
 
 
 def rows(claims):
-    """One row per item: (item dict, verdict, evidence summary, scope, the claims behind the verdict,
-    strongest evidence first)."""
+    """One row per item: (item dict, verdict, evidence summary, scope)."""
     by_key = {it["key"]: [] for it in ITEMS}
     for c in claims:
         for k in items_of(c):
@@ -183,8 +182,7 @@ def rows(claims):
             extra = thresholds if verdict == "threshold" else corrections if verdict == "corrected" else []
             # An erratum that does not hold is no evidence for the item.
             basis = [c for c in deciding if c["origin"] == "paper"] + [c for c in extra if c not in deciding]
-        where = [c["id"] for c in sorted(basis, key=lambda c: STRENGTH.index(c["evidence_kind"]))]
-        out.append((it, verdict, evidence_summary(basis), scope(basis) if basis else "", where))
+        out.append((it, verdict, evidence_summary(basis), scope(basis) if basis else ""))
     return out
 
 
