@@ -3,10 +3,13 @@
 -> tables -> tests, from what the experiments declare (`--describe`), what they computed
 (build/claims/*.json), and which figure scripts read their data (figures/*.gp).
 
-Writes BUILD/claims-map.md (for readers of the repository) and BUILD/tables/claims-map.tex,
-BUILD/tables/claims-map-experiments.tex and
-BUILD/tables/dfchaos-experiments.tex (for the report). Fails when a declared test suite does not
-exist, or when an experiment binary has no claims file. Usage: claims_map.py BUILD [ROOT]
+Writes BUILD/claims-map.md (for readers of the repository) and, for the report,
+BUILD/tables/dfchaos-experiments.tex (every experiment's macros and verdicts),
+BUILD/tables/paper-items.tex and paper-items-totals.tex (the verdicts about the paper, item by item)
+and BUILD/tables/dfchaos-appendix-claims.tex (every claim, by experiment, with its figures and tests;
+claims that differ only in their parameter point in one row). Fails when a declared test suite does
+not exist, when an experiment binary has no claims file, when a claim is in no item of the map, and
+when a claim of the paper is in no item of scripts/paper_items.py. Usage: claims_map.py BUILD [ROOT]
 """
 import glob
 import json
@@ -30,6 +33,83 @@ def rank(item):
     return ORDER.index(item) if item in ORDER else len(ORDER)
 
 
+def tex_args(line, n):
+    """The n brace-delimited arguments of a macro call on one line (the kit's rows), braces nested
+    and escaped ones (backslash-brace) skipped."""
+    args, depth, cur, i = [], 0, [], line.index("{")
+    while i < len(line) and len(args) < n:
+        ch = line[i]
+        if ch == "\\" and i + 1 < len(line):
+            if depth:
+                cur.append(line[i:i + 2])
+            i += 2
+            continue
+        if ch == "{":
+            if depth:
+                cur.append(ch)
+            depth += 1
+        elif ch == "}":
+            depth -= 1
+            if depth:
+                cur.append(ch)
+            else:
+                args.append("".join(cur))
+                cur = []
+        elif depth:
+            cur.append(ch)
+        i += 1
+    if len(args) != n:
+        raise ValueError(f"expected {n} arguments in {line!r}")
+    return args
+
+
+NUMBER = re.compile(r"(?<![\w.])\d+(?:\.\d+)?(?:e[-+]?\d+)?(?!\w)")
+
+
+def variant(cid):
+    """A claim id split into its family and variant: cert.lemma4.A -> (cert.lemma4., A),
+    cert.thm2.window3 -> (cert.thm2.window, 3), else (id, None); as scripts/recheck_certificates.py."""
+    m = re.fullmatch(r"(.*\.)([A-Z])", cid) or re.fullmatch(r"(.*[a-z_])(\d+)", cid)
+    return (m.group(1), m.group(2)) if m else (cid, None)
+
+
+def grouped_claim_rows(rows):
+    """Claims of one family (same id but for the variant) whose statements differ only in numbers,
+    with the same reference, verdict, kind and origin, become one row: the first statement, each
+    number that differs followed by the others' values in brackets ([B: 0.003; D: 5e-05]). Rows are
+    (id, reference, statement, verdict, kind, origin); returns (label, first id, reference, statement,
+    verdict, kind, origin), order kept."""
+    out, used = [], set()
+    for i, r in enumerate(rows):
+        if i in used:
+            continue
+        fam, var = variant(r[0])
+        skeleton = NUMBER.split(r[2])
+        group = [i]
+        if var is not None:
+            for j in range(i + 1, len(rows)):
+                o = rows[j]
+                if j not in used and variant(o[0])[0] == fam and variant(o[0])[1] is not None and \
+                        NUMBER.split(o[2]) == skeleton and o[1] == r[1] and o[3:] == r[3:]:
+                    group.append(j)
+        if len(group) == 1:
+            out.append((r[0],) + r)
+            continue
+        used.update(group)
+        nums = [NUMBER.findall(rows[j][2]) for j in group]
+        pieces = []
+        for k, part in enumerate(skeleton):
+            pieces.append(part)
+            if k < len(nums[0]):
+                others = [f"{variant(rows[j][0])[1]}: {nums[g][k]}" for g, j in enumerate(group) if g and nums[g][k] != nums[0][k]]
+                pieces.append(nums[0][k] + (" [" + "; ".join(others) + "]" if others else ""))
+        label = fam + "{" + ",".join(variant(rows[j][0])[1] for j in group) + "}"
+        first = variant(r[0])[1]
+        out.append((label, r[0], r[1], f"[{first}; " + ", ".join(variant(rows[j][0])[1] for j in group[1:]) +
+                    " in brackets] " + "".join(pieces), r[3], r[4], r[5]))
+    return out
+
+
 def main():
     build = os.path.abspath(sys.argv[1])
     root = os.path.abspath(sys.argv[2] if len(sys.argv) > 2 else os.path.join(os.path.dirname(__file__), ".."))
@@ -51,16 +131,13 @@ def main():
         experiments[name] = desc
 
     items = {}
-    item_tex = {}  # the kit escapes for LaTeX (kit/format.hpp latex_escape); this script never does
     for name, d in experiments.items():
-        for item, tex_item in zip(d["paper"], d["paper_tex"]):
+        for item in d["paper"]:
             items.setdefault(item, []).append(name)
-            item_tex[item] = tex_item
     rows = sorted(items.items(), key=lambda kv: (rank(kv[0]), kv[0]))
 
     md = ["# Claims map (generated by scripts/claims_map.py; do not edit)", "",
           "| paper item | experiment | claims: verdict [evidence] | figures | LaTeX tables | tests |", "|---|---|---|---|---|---|"]
-    tex = ["% generated by scripts/claims_map.py; do not edit"]
     # A claim whose reference names none of its experiment's items (e.g. "Eqs. (3)-(7)") is listed
     # under the experiment's first item, so that every claim is in the map.
     shown = set()
@@ -74,10 +151,6 @@ def main():
             tables = [o["name"] for o in d["outputs"] if o["kind"] == "latex"]
             md.append(f"| {item} | `experiments/{name}.cpp` | {claims_md} | {', '.join(d['figures']) or '-'} | "
                       f"{', '.join(tables) or '-'} | {', '.join(d['tests']) or '-'} |")
-            claims_tex = ", ".join(f"\\claimref{{{c['id']}}}" for c in refs) or "---"
-            paths = lambda xs: ", ".join(f"\\path{{{x}}}" for x in xs) or "---"
-            tex.append(f"\\dfcmaprow{{{item_tex[item]}}}{{\\path{{{name}}}}}{{{claims_tex}}}"
-                       f"{{{paths(d['figures'])}}}{{{paths(d['tests'])}}}")
     missing = [c["id"] for d in experiments.values() for c in d["claims"] if c["id"] not in shown]
     if missing:
         sys.exit("claims_map: claims not in the map: " + ", ".join(missing))
@@ -86,30 +159,10 @@ def main():
     with open(os.path.join(build, "claims-map.md"), "w") as f:
         f.write("\n".join(md) + "\n")
     os.makedirs(os.path.join(build, "tables"), exist_ok=True)
-    with open(os.path.join(build, "tables", "claims-map.tex"), "w") as f:
-        f.write("\n".join(tex) + "\n")
-    # Figures and tests belong to an experiment: the report lists them once per experiment.
-    with open(os.path.join(build, "tables", "claims-map-experiments.tex"), "w") as f:
-        f.write("% generated by scripts/claims_map.py; do not edit\n")
-        paths = lambda xs: ", ".join(f"\\path{{{x}}}" for x in xs) or "---"
-        for name in sorted(experiments):
-            d = experiments[name]
-            f.write(f"\\dfcmapexperiment{{\\path{{{name}}}}}{{{paths(d['figures'])}}}{{{paths(d['tests'])}}}\n")
     with open(os.path.join(build, "tables", "dfchaos-experiments.tex"), "w") as f:
         f.write("% generated by scripts/claims_map.py: every experiment's macros and verdicts\n")
         for name in experiments:
             f.write(f"\\dfcload{{{name}}}\n")
-    # The verdict table of the report's opening: every claim, the paper's apart from ours.
-    # An erratum stands with the paper's claims, its verdict worded by the kit ("refutes" when it holds).
-    for origins, fname in ((("paper", "erratum"), "verdicts-paper.tex"), (("ours",), "verdicts-ours.tex")):
-        origin = "' or '".join(origins)
-        with open(os.path.join(build, "tables", fname), "w") as f:
-            f.write("% generated by scripts/claims_map.py: claims whose origin is '" + origin + "'\n")
-            for name, d in experiments.items():
-                for c in d["claims"]:
-                    if c["origin"] in origins:
-                        f.write(f"\\dfcverdictrow{{{c['id']}}}{{{c['reference_tex']}}}{{{c['report_verdict']}}}"
-                                f"{{{c['evidence_kind']}}}{{{name}}}\n")
     # The report's opening: one row per item of the paper with the verdict about the paper.
     claims = [c for d in experiments.values() for c in d["claims"]]
     lost = paper_items.unassigned(claims)
@@ -127,14 +180,21 @@ def main():
         f.write("\\def\\dfcItemsTotal{%d}\n" % sum(totals.values()))
         for v in paper_items.VERDICTS:
             f.write("\\def\\dfcItems%s{%d}\n" % (v.title().replace(" ", ""), totals.get(v, 0)))
+    # Every claim, by experiment (the report's appendix): the kit's rows, families of claims that
+    # differ only in their parameter point merged into one row, with the experiment's figures and tests.
     with open(os.path.join(build, "tables", "dfchaos-appendix-claims.tex"), "w") as f:
         f.write("% generated by scripts/claims_map.py: every experiment's claims\n")
         for name in experiments:
-            f.write(f"\\dfcclaims{{{name}}}\n")
-    with open(os.path.join(build, "tables", "dfchaos-appendix-params.tex"), "w") as f:
-        f.write("% generated by scripts/claims_map.py: every experiment's run parameters\n")
-        for name in experiments:
-            f.write(f"\\dfcparams{{{name}}}\n")
+            d = experiments[name]
+            with open(os.path.join(build, "tables", name + "-claims.tex")) as g:
+                kit_rows = [tuple(tex_args(line, 6)) for line in g if line.startswith("\\dfcclaimrow{")]
+            if len(kit_rows) != len(d["claims"]):
+                sys.exit(f"claims_map: {name}-claims.tex has {len(kit_rows)} rows for {len(d['claims'])} claims")
+            paths = lambda xs: ", ".join(f"\\path{{{x}}}" for x in xs) or "---"
+            f.write(f"\\dfcclaims{{{name}}}{{{paths(d['figures'])}}}{{{paths(d['tests'])}}}{{%\n")
+            for row in grouped_claim_rows(kit_rows):
+                f.write("\\dfcclaimentry" + "".join("{" + x + "}" for x in row) + "\n")
+            f.write("}\n")
     print(f"claims map: {len(rows)} paper items, {len(experiments)} experiments -> {build}/claims-map.md")
 
 

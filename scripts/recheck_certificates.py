@@ -12,7 +12,9 @@ row with the claim id as file stem, "---" for hash and size, and status "none" p
 that has no certificate yet; a certified claim whose evidence names the claim it follows from
 ("rests_on", e.g. the entropy bound of Section 7 from the certified covering) is listed with that
 claim's accepted certificates (status "premise"). Also BUILD/tables/certificates-macros.tex with \\dfcCertificatesAccepted,
-\\dfcCertifiedClaims and \\dfcCertifiedClaimsWithout. Exits 1, writing nothing, when the checker
+\\dfcCertifiedClaims and \\dfcCertifiedClaimsWithout, BUILD/tables/certificates-grouped.tex (the same
+rows, one per family of claims that differ only in their parameter point: the report's table) and
+BUILD/certificates/SHA256SUMS (every accepted file, for `sha256sum -c`). Exits 1, writing nothing, when the checker
 rejects a certificate, when a certificate names no certified claim, and when an accepted certificate
 does not prove what its claim states (bind(): the claim holds, and the certificate's claim text,
 parameters and decisive values, b_low, the rounded doubles of vartheta0, the segments J0 and J1 or
@@ -213,6 +215,44 @@ def write(path, text):
     os.replace(tmp, path)
 
 
+def family(cid):
+    """The claim id without its variant: cert.lemma4.A -> (cert.lemma4., A), cert.thm2.window3 ->
+    (cert.thm2.window, 3); an id without a variant is its own family."""
+    m = re.fullmatch(r"(.*\.)([A-Z])", cid) or re.fullmatch(r"(.*[a-z_])(\d+)", cid)
+    return (m.group(1), m.group(2)) if m else (cid, None)
+
+
+def grouped(listed):
+    """One \\dfccertgroup{claims}{files}{bytes}{status} (files and bytes of its own accepted
+    certificates) per family of claims that differ only in
+    their variant (the parameter point A-D, the window number): the report's table. Families keep
+    the order of their first claim; the status says how many files are accepted, premises or none."""
+    order, members = [], {}
+    for cid, stem, sha, size, status in listed:
+        key = family(cid)[0]
+        if key not in members:
+            order.append(key)
+            members[key] = []
+        members[key].append((cid, size, status))
+    out = []
+    for key in order:
+        rows = members[key]
+        variants = []
+        for cid, _, _ in rows:
+            v = family(cid)[1]
+            if v is not None and v not in variants:
+                variants.append(v)
+        ids = {cid for cid, _, _ in rows}
+        label = key + "{" + ",".join(variants) + "}" if len(ids) > 1 else rows[0][0]
+        counts = {}
+        for _, _, status in rows:
+            counts[status] = counts.get(status, 0) + 1
+        status = ", ".join(f"{n} {s}" for s, n in counts.items())
+        own = [size for _, size, st in rows if st == "accepted"]  # a premise's file is counted in its own row
+        out.append(f"\\dfccertgroup{{{label}}}{{{len(own)}}}{{{sum(own)}}}{{{status}}}")
+    return out
+
+
 def main():
     if len(sys.argv) != 3:
         fail("usage: recheck_certificates.py BUILD RECHECK")
@@ -242,6 +282,7 @@ def main():
         checked = dict(zip(paths, pool.map(lambda p: subprocess.run([recheck, p], capture_output=True, text=True, timeout=600), paths)))
 
     rows, accepted, rejected, without = [], 0, [], 0
+    listed = []  # (claim id, file stem, sha256, bytes, status) of every row, for the grouped table
     accepted_of = {}  # claim id -> [(file stem, sha256, bytes)] of its accepted certificates
     for cid in claims:
         rests_on = record[cid]["evidence"].get("rests_on")
@@ -250,10 +291,12 @@ def main():
             # entropy bound from the certified covering, Section 7): that claim's certificate
             for stem, sha, size in accepted_of[rests_on]:
                 rows.append(f"\\dfccertrow{{{cid}}}{{{cid}}}{{{sha}}}{{{size}}}{{premise}}")
+                listed.append((cid, cid, sha, size, "premise"))
             continue
         if not by_claim[cid]:
             without += 1
             rows.append(f"\\dfccertrow{{{cid}}}{{{cid}}}{{---}}{{---}}{{none}}")
+            listed.append((cid, cid, None, 0, "none"))
             continue
         for path in by_claim[cid]:
             data = open(path, "rb").read()
@@ -272,6 +315,7 @@ def main():
             accepted_of.setdefault(cid, []).append((stem, hashlib.sha256(data).hexdigest(), len(data)))
             rows.append(f"\\dfccertrow{{{cid}}}{{{os.path.basename(path)[: -len('.json')]}}}{{{hashlib.sha256(data).hexdigest()}}}"
                         f"{{{len(data)}}}{{accepted}}")
+            listed.append((cid, stem, hashlib.sha256(data).hexdigest(), len(data), "accepted"))
     for cid, n in REGION_BOXES.items():  # a region's certificates hold all of its proved boxes
         if n != record[cid]["evidence"].get("boxes_proved"):
             rejected.append(f"claim {cid}: its certificates hold {n} boxes, the claim {record[cid]['evidence'].get('boxes_proved')} proved")
@@ -286,6 +330,10 @@ def main():
           head + f"\\newcommand{{\\dfcCertificatesAccepted}}{{{accepted}}}\n"
                  f"\\newcommand{{\\dfcCertifiedClaims}}{{{len(claims)}}}\n"
                  f"\\newcommand{{\\dfcCertifiedClaimsWithout}}{{{without}}}\n")
+    write(os.path.join(tables, "certificates-grouped.tex"), head + "\n".join(grouped(listed)) + "\n")
+    # Every file's digest, in the format of sha256sum, so that `sha256sum -c` checks them.
+    write(os.path.join(build, "certificates", "SHA256SUMS"),
+          "".join(f"{sha}  {stem}.json\n" for _, stem, sha, _, status in listed if status == "accepted"))
     write(os.path.join(tables, "certificates.tex"), head + "\n".join(rows) + "\n")
     print(f"recheck_certificates: {accepted} certificate(s) accepted by {os.path.basename(recheck)}; "
           f"{without} of {len(claims)} certified claims have no certificate yet")

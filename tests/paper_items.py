@@ -8,6 +8,7 @@ import unittest
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "scripts"))
 import paper_items as P  # noqa: E402
+import claims_map as M  # noqa: E402
 
 
 def claim(cid, ref, origin="paper", verdict="holds", kind="sampled", params=None):
@@ -81,6 +82,39 @@ class Verdicts(unittest.TestCase):
         self.assertEqual(P.fmt(0.85), "0.85")
         self.assertEqual(P.fmt(1e-5), "10^{-5}")
         self.assertEqual(P.fmt(2.5e-7), r"2.5\cdot10^{-7}")
+
+
+class OneRowPerFamily(unittest.TestCase):
+    """The appendix merges claims that differ only in their parameter point (claims_map.py)."""
+
+    def r(self, cid, stmt, verdict="holds", ref="Lemma 4"):
+        return (cid, ref, stmt, verdict, "certified", "paper")
+
+    def test_numbers_that_differ_are_listed_in_brackets(self):
+        rows = [self.r("c.l4.A", "at b=0.001 q=0.85: J0 in [t2, 3pi/2]"), self.r("c.l4.B", "at b=0.003 q=0.85: J0 in [t2, 3pi/2]"),
+                self.r("c.l4.C", "at b=0.01 q=0.95: J0 in [t2, 3pi/2]")]
+        out = M.grouped_claim_rows(rows)
+        self.assertEqual(len(out), 1)
+        label, first, ref, stmt = out[0][:4]
+        self.assertEqual((label, first, ref), ("c.l4.{A,B,C}", "c.l4.A", "Lemma 4"))
+        self.assertEqual(stmt, "[A; B, C in brackets] at b=0.001 [B: 0.003; C: 0.01] q=0.85 [C: 0.95]: J0 in [t2, 3pi/2]")
+
+    def test_a_different_word_verdict_or_reference_keeps_its_own_row(self):
+        base = self.r("c.l2.A", "L0 has 158 jumps")
+        for other in (self.r("c.l2.B", "L2 has 5 jumps"), self.r("c.l2.B", "L0 has 52 jumps", verdict="fails"),
+                      self.r("c.l2.B", "L0 has 52 jumps", ref="Lemma 3"), self.r("c.other.B", "L0 has 52 jumps")):
+            out = M.grouped_claim_rows([base, other])
+            self.assertEqual([o[0] for o in out], [base[0], other[0]], other)
+
+    def test_ids_without_a_variant_are_never_merged(self):
+        rows = [self.r("c.negative", "x 1"), self.r("c.negative", "x 2")]
+        self.assertEqual(len(M.grouped_claim_rows(rows)), 2)
+
+    def test_tex_args_reads_nested_and_escaped_braces(self):
+        line = "\\dfcclaimrow{a.b}{Eq. (1)}{set \\{x\\} with {nested {deep}} text}{holds}{sampled}{paper}\n"
+        self.assertEqual(M.tex_args(line, 6), ["a.b", "Eq. (1)", "set \\{x\\} with {nested {deep}} text", "holds", "sampled", "paper"])
+        with self.assertRaises(ValueError):
+            M.tex_args("\\dfcclaimrow{a}{b}", 6)
 
 
 if __name__ == "__main__":
