@@ -18,6 +18,7 @@
 
 #include "certify/certificate.hpp"
 #include "certify/json.hpp"
+#include "dfchaos/errors.hpp"
 #include "dfchaos/superstable.hpp"
 #include "kit/experiment.hpp"
 #include "kit/format.hpp"
@@ -102,6 +103,7 @@ const Experiment experiment{
     .body = [](Run& run) {
         Output& out = run.out;
         const int max_period = run.count_int("max-period");
+        out.macro("CertMaxPeriod", std::to_string(max_period));
         const bool fast = run.fast();
         out.parameter("precision_bits", std::to_string(precision()));
         const auto t_all = Clock::now();
@@ -154,6 +156,8 @@ const Experiment experiment{
         Table tl1({"point", "q_over_a", "b_over_a", "proved", "u_t2_mid", "t4_mid", "t4_rad"});
         std::vector<std::pair<const Point*, CoveringProof>> coverings;
         for (const Point& pt : points) {
+          out.macro(std::string("CertPointQ") + pt.tag, dfchaos::format_shortest(pt.q));
+          out.macro(std::string("CertPointB") + pt.tag, latex_number(dfchaos::format_shortest(pt.b)));
           const ParameterBox box = ParameterBox::point(1.0, pt.b, pt.q);
           const std::string ptxt = "(" + num(pt.q) + ", " + num(pt.b) + ")";
           Json params = Json::object();
@@ -282,16 +286,18 @@ const Experiment experiment{
 
         // The negative control: no covering is proved at (0.85, 0.02).
         {
-          const ParameterBox box = ParameterBox::point(1.0, 0.02, 0.85);
+          const double qc = 0.85, bc = 0.02;
+          const std::string pc = "(" + dfchaos::format_shortest(qc) + ", " + dfchaos::format_shortest(bc) + ")";
+          const ParameterBox box = ParameterBox::point(1.0, bc, qc);
           const CoveringProof cov = prove_covering(box);
           // Not a certified statement: the absence of a covering is not proved, only that none is found
           // (by the floating search) and none is proved (by this layer).
           auto& c = certified_claim(out, "cert.lemma4.negative", "Lemma 4",
-                                    "Control: at (q/a, b/a) = (0.85, 0.02) the floating search proposes no covering segment and none is proved "
+                                    "Control: at (q/a, b/a) = " + pc + " the floating search proposes no covering segment and none is proved "
                                     "(the absence of a covering is a sampled finding, not a proof).",
                                     to_json(cov), !cov.verdict.proved, nullptr, EvidenceKind::Sampled);
           c.ours();
-          tex_row("Lemma 4 (control)", "(0.85, 0.02)", "not proved (" + latex_escape(cov.verdict.step) + ")", "---");
+          tex_row("Lemma 4 (control)", pc, "not proved (" + latex_escape(cov.verdict.step) + ")", "---");
         }
 
         // ---- Lemma 2 -----------------------------------------------------------------------------
@@ -354,14 +360,15 @@ const Experiment experiment{
           e.set("J0_between_z", b0 >= 0 ? Json(Json::array().push(b0 + 1).push(b0 + 2)) : Json("no"));
           e.set("J1_between_z", b1 >= 0 ? Json(Json::array().push(b1 + 1).push(b1 + 2)) : Json("no"));
           const std::string statement =
-              "The paper's construction at (q/a, b/a) = (0.85, 5e-5), double values: T1 has n >= 3 certified discontinuities "
+              "The paper's construction at (q/a, b/a) = (" + dfchaos::format_shortest(q) + ", " + dfchaos::format_shortest(b) +
+              "), double values: T1 has n >= 3 certified discontinuities "
               "z_1 < ... < z_n in L2 = [101pi/100, 51pi/50], and two certified covering segments lie in branches (z_i, z_(i+1)) "
               "of L2, as in the proof of Lemma 4 (T1(z_i) mod 2pi = pi - z_i mod 2pi lies in L1 = [197pi/100, t3]).";
           if (ok) run.certificate("cert.lemma4.paper_construction", certificate_text(certificate_paper_construction(cov, d, statement)));
           auto& c = certified_claim(out, "cert.lemma4.paper_construction", "Lemma 4 (proof)", statement, e, ok,
                                     cov.verdict.proved ? &d.verdict : &cov.verdict);
           c.parameter_object(Json::object().set("a", 1.0).set("b", b).set("q", q));
-          tex_row("Lemma 4 (paper's L1, L2)", "(0.85, " + num(b) + ")",
+          tex_row("Lemma 4 (paper's L1, L2)", "(" + dfchaos::format_shortest(q) + ", " + num(b) + ")",
                   ok ? "$n=" + std::to_string(d.z.size()) + "$ on $L_2$; $J_0=[" + fmt(cov.J0.lo, 8) + ", " + fmt(cov.J0.hi, 8) + "]$, $J_1=[" +
                            fmt(cov.J1.lo, 8) + ", " + fmt(cov.J1.hi, 8) + "]$ in branches of $L_2$"
                      : "not proved",
@@ -404,6 +411,7 @@ const Experiment experiment{
         // ---- Theorem 2: superstability windows at q/a = 0.85 ----------------------------------------
         {
           const double q = 0.85;
+          out.macro("CertWindowQ", dfchaos::format_shortest(q));
           auto windows = merged_windows(q, 0.0019, 0.08, fast ? 200 : 2000);
           // The window near b/a = 0.0641 and the next ones below it, and one at small b/a.
           std::vector<std::pair<double, double>> chosen;
@@ -425,7 +433,7 @@ const Experiment experiment{
             c.parameter_object(Json::object().set("a", 1.0).set("q", q));
             t.row({static_cast<long long>(i), lo, hi, static_cast<long long>(w.verdict.proved), w.left_out, w.left_in, w.right_in, w.right_out,
                    static_cast<long long>(w.inside.condition), w.inside.eps, static_cast<long long>(w.boxes)});
-            tex_row("Theorem 2", "(0.85, ---)",
+            tex_row("Theorem 2", "(" + dfchaos::format_shortest(q) + ", ---)",
                     w.verdict.proved ? "$T(t_2)=t_2$ on $b/a\\in[" + fmt(w.left_in, 10) + ", " + fmt(w.right_in, 10) + "]$, edges within " +
                                            num(w.left_in - w.left_out, 2) + "; middle: (" + std::to_string(w.inside.condition) + "), $\\varepsilon=" +
                                            fmt(w.inside.eps, 3) + "$"
@@ -448,12 +456,15 @@ const Experiment experiment{
           out.table("windows", t, "superstability windows at q/a = 0.85: the certified brackets of both edges");
           // Erratum: (2) and (22) do not suffice when b exceeds b0(q) (Lemma 1 fails).
           const double bx = 0.10854;
+          out.macro("CertErratumB", dfchaos::format_shortest(bx));
+          out.macro("CertErratumQ", dfchaos::format_shortest(q));
           const Theorem2Counterexample x = prove_theorem2_counterexample(1.0, bx, q, true);
           Json e = Json::object();
           e.set("theta2_phase", ball_json(x.theta2_phase, 15)).set("u_at_t2", ball_json(x.u_at_t2, 10)).set("u_at_t3", ball_json(x.u_at_t3, 10));
           e.set("T_at_t2", ball_json(x.T, 15));
           const std::string erratum =
-              "Theorem 2 needs b < b0(q) besides (2) and (22): at (q/a, b/a) = (0.85, 0.10854) (doubles), (2) and (22) hold "
+              "Theorem 2 needs b < b0(q) besides (2) and (22): at (q/a, b/a) = (" + dfchaos::format_shortest(q) + ", " +
+              dfchaos::format_shortest(bx) + ") (doubles), (2) and (22) hold "
               "(certified), but the progression from rest at t0 does not stop before t2 (u(t2) > 0 > u(t3), Eq. 8 reversed): "
               "it stops at t4 in (t2, t3) where the mass flies (scenario D), so T(t2) = t4 != t2 and t2 is not superstable.";
           auto& ce = certified_claim(out, "cert.thm2.erratum", "Theorem 2, Lemma 1", erratum, e, x.verdict.proved, &x.verdict);
@@ -461,7 +472,7 @@ const Experiment experiment{
             run.certificate("cert.thm2.erratum", certificate_text(certificate_theorem2_counterexample(1.0, bx, q, x, erratum)));
           ce.erratum().parameter_object(Json::object().set("a", 1.0).set("b", bx).set("q", q));
           const Ball::Printed t4 = x.T.printed(10);  // a ball that encloses t4 = T(t2)
-          tex_row("Theorem 2 (erratum)", "(0.85, " + num(bx) + ")",
+          tex_row("Theorem 2 (erratum)", "(" + dfchaos::format_shortest(q) + ", " + num(bx) + ")",
                   x.verdict.proved ? "(2), (22) hold; $T(t_2)=t_4\\in[" + t4.mid + "\\pm" + latex_number(t4.rad) +
                                              "]$, $t_4\\ne t_2$ (scenario D)"
                                        : "not proved",
