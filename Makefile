@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # dfchaos — thin front door over CMake. `make help` lists the targets.
 # On a fresh Debian 12 machine `make test` and `make reproduce` each do the whole set-up:
 # they first install the missing Debian packages (scripts/install-deps.sh).
@@ -136,7 +137,8 @@ bench: deps configure
 # The report's Performance section shows build/bench/bench.tex when `make bench` ran in this build,
 # else the last committed measurement, paper/bench-snapshot.tex (with its date); this refreshes it.
 bench-snapshot: bench
-	@{ echo "% written by make bench-snapshot from $(BUILD)/bench; do not edit"; \
+	@{ echo "% SPDX-License-Identifier: GPL-3.0-or-later"; \
+	   echo "% written by make bench-snapshot from $(BUILD)/bench; do not edit"; \
 	   sed 's/dfcBenchWhen/dfcBenchSnapshotWhen/' $(BUILD)/bench/bench-when.tex; \
 	   grep -v '^%' $(BUILD)/bench/bench.tex; } > paper/bench-snapshot.tex.tmp && mv paper/bench-snapshot.tex.tmp paper/bench-snapshot.tex
 	@echo "bench-snapshot: paper/bench-snapshot.tex (commit it)"

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Typesets build/paper/report.pdf from paper/report.tex with latexmk, and fails loudly when the
 # report is incomplete:
 #   - a figure, table or macro file that is missing stops LaTeX (\input of a missing file,

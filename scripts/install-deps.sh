@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Install the Debian 12 packages dfchaos needs, and only those that are missing.
 #
 #   scripts/install-deps.sh build    compiler, CMake, Eigen, GSL, GoogleTest, CLI11, nlohmann-json, OpenSSL, Arb, MPFI, OpenMPI (for `make test`;
