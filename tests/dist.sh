@@ -22,6 +22,8 @@ if ! command -v git >/dev/null || ! git -C "$src" rev-parse --verify -q HEAD >/d
   echo "dist: SKIP: $src is not the top of a git checkout (or git is missing): make dist needs one"
   exit 77
 fi
+# The make of `make test` (jobserver, -s) is not this test's business.
+unset MAKEFLAGS MFLAGS MAKELEVEL
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 fail=0
@@ -33,7 +35,7 @@ git -C "$clone" checkout -q --detach "$(git -C "$src" rev-parse HEAD)"
 cp "$src/Makefile" "$clone/Makefile"
 cp "$src/scripts/dist.sh" "$clone/scripts/dist.sh"
 if ! git -C "$clone" diff --quiet; then
-  git -C "$clone" -c user.name=dist-test -c user.email=dist-test@localhost commit -q -am "the working tree's make dist"
+  git -C "$clone" -c user.name=dist-test -c user.email=dist-test@localhost -c commit.gpgsign=false commit -q -am "the working tree's make dist"
 fi
 name=dfchaos-$version
 tar=$build/dist/$name.tar.gz pdf=$build/dist/$name-report.pdf
