@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # dfchaos — thin front door over CMake. `make help` lists the targets.
 # On a fresh Debian 12 machine `make test` and `make reproduce` each do the whole set-up:
 # they first install the missing Debian packages (scripts/install-deps.sh).
@@ -24,7 +25,7 @@ STAMPS      := $(EXPERIMENTS:%=$(BUILD)/stamps/%.ok)
 FIGS        := $(FIGURES:%=$(BUILD)/figures/%.tex)
 
 .PHONY: help deps deps-report configure build build-tools test reproduce experiments figures report manifest claims-map \
-        docs bench bench-snapshot plane-hires clean test-sanitize test-clang check-determinism certify-region
+        docs bench bench-snapshot plane-hires clean test-sanitize test-clang check-determinism certify-region dist
 
 help:
 	@echo "dfchaos make targets:"
@@ -48,6 +49,9 @@ help:
 	@echo "  make test-clang  build warning-free with clang++ in $(BUILD)-clang and run every test"
 	@echo "  make check-determinism  rerun every experiment on 1 thread (and on 2 unless make reproduce ran on 2+):"
 	@echo "                   manifests must match each other and the last make reproduce"
+	@echo "  make dist        $(BUILD)/dist/dfchaos-<version>.tar.gz, a git archive of HEAD (refused while tracked files"
+	@echo "                   have uncommitted changes), and dfchaos-<version>-report.pdf if make reproduce built the"
+	@echo "                   report from HEAD (dist does not run it: run make reproduce first)"
 	@echo "  make deps        install the packages needed to build and test"
 	@echo "  make clean       remove $(BUILD)/"
 	@echo "Variables: BUILD=$(BUILD) JOBS=$(JOBS) BTYPE=$(BTYPE) PLANE_N=$(PLANE_N) PLANE_RANKS=$(PLANE_RANKS)"
@@ -136,7 +140,8 @@ bench: deps configure
 # The report's Performance section shows build/bench/bench.tex when `make bench` ran in this build,
 # else the last committed measurement, paper/bench-snapshot.tex (with its date); this refreshes it.
 bench-snapshot: bench
-	@{ echo "% written by make bench-snapshot from $(BUILD)/bench; do not edit"; \
+	@{ echo "% SPDX-License-Identifier: GPL-3.0-or-later"; \
+	   echo "% written by make bench-snapshot from $(BUILD)/bench; do not edit"; \
 	   sed 's/dfcBenchWhen/dfcBenchSnapshotWhen/' $(BUILD)/bench/bench-when.tex; \
 	   grep -v '^%' $(BUILD)/bench/bench.tex; } > paper/bench-snapshot.tex.tmp && mv paper/bench-snapshot.tex.tmp paper/bench-snapshot.tex
 	@echo "bench-snapshot: paper/bench-snapshot.tex (commit it)"
@@ -177,6 +182,13 @@ test-clang:
 
 check-determinism: build-tools
 	@bash scripts/check-determinism.sh $(BUILD)
+
+# ---- release ----------------------------------------------------------------------------------
+
+# A source archive of HEAD named with the version of CMakeLists.txt's project(), and the report when it
+# was built from HEAD (scripts/dist.sh). Cheap: it builds nothing and does not run make reproduce.
+dist:
+	@bash scripts/dist.sh $(BUILD)
 
 clean:
 	rm -rf $(BUILD) $(BUILD)-sanitize $(BUILD)-clang

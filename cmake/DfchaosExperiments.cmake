@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # dfchaos_add_experiments(DIR [OUTPUT_DIR dir] [SMOKE_OUT dir])
 #
 # One executable per DIR/*.cpp, named after the file: an experiment is its .cpp and nothing else

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # FindArb.cmake — Arb (ball arithmetic) as packaged by Debian 12: libflint-arb-dev installs
 # /usr/include/arb.h and libflint-arb.so, with no pkg-config file or CMake config.
 #

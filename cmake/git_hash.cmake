@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Writes OUT (a C++ source defining dfchaos::kit::git_hash()) from `git describe` of SRC, touching
 # the file only when the hash changed. Run at every build (see src/kit/CMakeLists.txt), so that the
 # provenance recorded in every output names the tree that was actually built.

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Explore the return map T of the dry-friction oscillator from Python (the dfchaos module).
 
 Draws two panels into one PNG:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file bifurcation_diagram.cpp
 /// @brief Beyond the paper: orbit diagrams of T (phases after a transient) against b/a at fixed q/a
 /// and against q/a at fixed b/a, with the Lyapunov exponent of T (the mean of ln|T'| along the

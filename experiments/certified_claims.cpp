@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file certified_claims.cpp
 /// @brief The paper's statements *proved* in ball arithmetic (Arb) at concrete parameters,
 /// as claims with evidence_kind "certified": Eq. (1), Lemma 1 (and a certified lower bound of

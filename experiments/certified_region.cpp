@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file certified_region.cpp
 /// @brief Theorem 1's covering (Lemma 4) proved over parameter *boxes*:
 /// every box of the output is a set of (b/a, q/a) on which, for every parameter, two disjoint

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file dynamics_gallery.cpp
 /// @brief The pictures of the dynamics that a reader of the paper looks for, with the checks that
 /// make them trustworthy: a long time history of the full system on the chaotic regime (Section 2),

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file eq1_vartheta0.cpp
 /// @brief Eq. (1): \f$\vartheta_0\f$ with \f$\pi - \vartheta_0 = \cot(\vartheta_0/2)\f$, its
 /// uniqueness on \f$(0, \pi/2]\f$, and the digits the paper prints.

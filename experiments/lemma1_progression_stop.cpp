@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file lemma1_progression_stop.cpp
 /// @brief Lemma 1: a progression from rest at \f$t_0\f$ stops in \f$[t_1, t_2]\f$ when \f$b < b_0(q)\f$.
 /// Measures \f$b_0(q)\f$ on a grid, beside the proof's sufficient condition and the threshold

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file lemma2_monotonicity.cpp
 /// @brief Lemma 2: T1 decreases on L0 = [101 pi/100, 3 pi/2] and has finitely many
 /// discontinuities there, with jumps bounded below; how their number grows as b/a shrinks.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file lemma3_return_map.cpp
 /// @brief Lemma 3: T(theta) = theta2 mod 2pi when that phase lies in [t2, t3), and T = t2
 /// otherwise; the graph of T with its scenarios and stop arcs; cross-checks against the full

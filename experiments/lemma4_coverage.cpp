@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file lemma4_coverage.cpp
 /// @brief Lemma 4 (Eq. 18): two disjoint segments of [t2, 3pi/2] on which T is continuous and whose
 /// images cover [t2, 3pi/2]. (a) The paper's construction, step by step, and the largest b/a at

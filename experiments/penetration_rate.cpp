@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file penetration_rate.cpp
 /// @brief Beyond the paper: the drilling rate, i.e. the mean advance of the delimiter per unit time,
 /// from long orbits of T carrying the fiber of the skew product (the penetration of every step and

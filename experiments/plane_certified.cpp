@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file plane_certified.cpp
 /// @brief Beyond the paper: a certified chaos map. Over the (q/a, b/a) plane of thm1_parameter_plane
 /// (q/a the cell centres of (sin vartheta0, 1), b/a log-spaced in [1e-4, 0.1]) each cell carries the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file plane_lyapunov.cpp
 /// @brief Beyond the paper: the Lyapunov exponent \f$\lambda = \frac1N\sum_n \ln|T'(\theta_n)|\f$ of
 /// an orbit of T over the (q/a, b/a) plane of thm1_parameter_plane (q/a the cell centres of

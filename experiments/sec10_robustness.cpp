@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file sec10_robustness.cpp
 /// @brief Section 10: robustness of the chaotic covering under a small smooth perturbation
 /// G(t, x, xdot) of the force, in free flight and in progression, with

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file sec2_model.cpp
 /// @brief Section 2: the assumptions (2), the closed-form solutions of the regimes (Eqs. 3–7)
 /// against numerical integration, the stop regime (Eq. 5), and Section 3's reduction to starts at

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file sec3_scenarios.cpp
 /// @brief Section 3: which scenarios (A, B, C, C', D, D') occur, on which arcs of [t2, t3); one
 /// simulated example of each; and the claim that a progression never stops inside (t0, t1).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file sec4_next_hit.cpp
 /// @brief Section 4: the next-hit map T1 (Eq. 11); the sign claims made about Eq. (12); the flight
 /// time asymptotics behind Eq. (13); and Eq. (16) at the computed discontinuities.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file sec6_periodic_points.cpp
 /// @brief Section 6: for m = 1..20 a point of minimal period m with itinerary (0...01)^infinity, at a
 /// parameter set where the covering of Lemma 4 holds; built by the backward (inverse-branch) form of

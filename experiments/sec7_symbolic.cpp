@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file sec7_symbolic.cpp
 /// @brief Section 7: every binary word of length n <= 12 is realised by an orbit through K0, K1
 /// (so 2^n words), the coding H satisfies H o T = S o H along them, the entropy bound ln 2, and a

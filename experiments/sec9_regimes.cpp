@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file sec9_regimes.cpp
 /// @brief The Remark of Section 9, by the full event-driven simulator: outside b < a/2 free flights
 /// die out; then q >= a + 2b leads to a permanent stop, q <= 2b to an everlasting progression, and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file thm1_parameter_plane.cpp
 /// @brief Theorems 1 and 2 over the parameter plane: for q/a in (sin vartheta0, 1) and b/a
 /// log-spaced in [1e-4, 0.1], whether the covering of Lemma 4 holds (the chaos witness of

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file thm2_superstable.cpp
 /// @brief Theorem 2 (Section 8): where conditions (21) or (22) hold, t2 is a superstable fixed point
 /// of T. All superstable windows of b/a in [1e-3, 0.1] at fixed q/a, each with its width epsilon,

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Figure: the return map T of Lemma 3 on [t2, t3), each point coloured by its scenario; from
 # lemma3_return_map. Left: Lemma 1 holds (b/a = 0.01, q/a = 0.85); right: it fails (q/a = 0.7).
 # Grey: theta2, where the first progression ends (Eq. 17), wherever it is not T itself, unwrapped

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Figure: the next-hit map T1 (Eq. 11) on [t2, t3) for two values of b/a, from sec4_next_hit.
 load figdir."/style.gp"
 set terminal cairolatex pdf input size 14cm,6.5cm

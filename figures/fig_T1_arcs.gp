@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Figure: the next-hit map T1 modulo 2pi (Eq. 11) with the arcs of Lemma 2 and of the proof of
 # Lemma 4 (dynamics_gallery). L0 = [101pi/100, 3pi/2] (Lemma 2: T1 decreasing, finitely many jumps),
 # L2 = [101pi/100, 51pi/50] (the proof looks there for three discontinuities z_i),

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Figure: where the drilling rate depends on the start (penetration_rate, output basins): at the
 # three values of b/a on the line q/a = 0.85 with the largest spread over initial phases, the rate
 # of the orbit from each of 200 initial phases theta0 in [t2, t3) (transient discarded, the same

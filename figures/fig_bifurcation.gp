@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Figure: orbit diagrams of T with the Lyapunov exponent (bifurcation_diagram). Top: phases after
 # the transient against b/a (q/a = 0.85) and against q/a (b/a = 0.01). Bottom: the Lyapunov
 # exponent lambda (mean of ln|T'|) where it is finite; parameter values whose orbit meets a stop

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Figure: where Theorem 1's covering is *proved* for every parameter of a box
 # (certified_region: green boxes proved, red boxes not proved), over the plane sampled in floating
 # point by thm1_parameter_plane (left: the whole plane, the certified band drawn on it; right: the

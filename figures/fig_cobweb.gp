@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Figure: the covering of Lemma 4 and a periodic orbit of Section 6, from sec6_periodic_points.
 # (a) T on [t2, t3) with J0, J1 (bands on the theta axis) and the target [t2, 3pi/2] they cover
 #     (band on the T axis).

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Figure: the invariant density of T on [t2, t3) estimated from two long orbits (dynamics_gallery):
 # the histogram of the pooled orbit points (filled), the histograms of the two orbits separately
 # (lines), and the atom at t2 (every step with a stop sends its whole arc to t2) drawn as a spike

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Figure: Lemma 2 and Eq. (13), one quantity per panel, each with its own labelled axis.
 # Left and middle (lemma2_monotonicity): the number N of discontinuities of T1 on L0 times b/a,
 # beside the closed-form growth rate cos(pi/100)/(2 pi); the smallest jump T1(z-0) - T1(z) beside

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Figure: a long time history of the full system on the chaotic attractor (dynamics_gallery), from
 # rest at the delimiter at a phase reached after the transient of T.
 # (a) x(t) coloured by regime and y(t) dashed, over several steps of T; impacts (fp) marked by

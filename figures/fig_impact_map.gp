@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Figure: the impact map along an orbit of T (dynamics_gallery): for every step, the phase at which
 # the mass hits the delimiter (T1 mod 2pi, Eq. 11) and its velocity then (dG1/dt at T1, positive:
 # a progression follows), coloured by the duration of the flight before it. The switching phases

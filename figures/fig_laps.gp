@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Figure: the lap-count estimate of topological entropy (sec7_symbolic): ln(laps of T^n)/n on a
 # grid, against n, beside the lower bound ln 2 from the symbolic dynamics of Section 7.
 load figdir."/style.gp"

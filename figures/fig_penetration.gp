@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Figure: the drilling rate (penetration_rate): mean advance of the delimiter per unit time.
 # (a) the rate against b/a at q/a = 0.85 (mean over initial phases, bars from min to max);
 # (b) the rate divided by b/a on the same line: the rate is nearly proportional to b, and this

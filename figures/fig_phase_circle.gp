@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Figure: the phase circle with t0 < t1 (zeros of F - q) and t2 < t3 (zeros of F), and what each
 # regime may do on each arc (our version of the paper's Fig. 2). Phases from sec3_scenarios
 # (table sec3_scenarios-phases.tsv, row b/a = 0.05, q/a = 0.85).

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Figure: the (q/a, b/a) parameter plane of thm1_parameter_plane: covering of Lemma 4 found
 # (Theorem 1's chaos certificate), t2 superstable (Theorem 2), both, neither, or a cell whose
 # computation failed. Categories, so a discrete colour per class and a key with the number of

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Figure: a certified chaos map. Over the (q/a, b/a) plane, per cell, whether the covering of
 # Lemma 4 (Theorem 1) is proved in ball arithmetic at the cell's parameters, only found by the
 # floating-point search, or neither; from the experiment plane_certified (the cells of

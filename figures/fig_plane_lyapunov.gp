@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Figure: the Lyapunov exponent of T over the (q/a, b/a) plane, from the parameter sweep
 #   experiment plane_lyapunov (the cells of `dfchaos sweep --observables lyapunov`)
 #   ->   build/data/plane_lyapunov.tsv

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Figure: Section 10 (sec10_robustness): the perturbed return map T_eps near J0 and J1 for several
 # eps, computed by integrating the perturbed equations of motion. The covering asks each branch to
 # run from the perturbed stop release t2^eps (dashed, one per eps, from sec10_robustness.tsv) up

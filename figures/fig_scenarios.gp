@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Figure: time histories x(t) (mass) and y(t) (delimiter) of one simulated motion per scenario
 # of Section 3, from rest at the delimiter at the phase theta; from sec3_scenarios (full
 # event-driven simulator, sampled on a regular grid of 3000 steps per history).

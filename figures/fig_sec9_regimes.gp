@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Figure: the Remark of Section 9 by the full simulator (sec9_regimes): one time history per case,
 # position of the mass x (coloured by regime: blue free, red progression, green stop) and of the
 # delimiter y (dashed black). Each panel names its case and its parameters (read from the table

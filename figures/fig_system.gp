@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Figure: the mechanical system (our drawing of the paper's Fig. 1): a unit mass driven by
 # F(t) = a sin t + 2b, and a delimiter at y that resists with dry friction of at most q and
 # never moves back. Pure geometry: reads no data.

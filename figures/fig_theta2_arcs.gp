@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Figure: how Theorem 2 works (thm2_superstable). The first progression after the flight from t2
 # ends at theta2(t2) (Eqs. 11, 17); against b/a, its phase (points) crosses the target arcs of
 # condition (21), (t1, t2) (green band), and of condition (22), (t3, 2pi) u [0, t0) (orange bands);

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Figure: numerical thresholds b0(q) of Lemma 1 and Lemma 4 against q/a.
 # Left (lemma1_progression_stop): the largest b/a below which progression from rest at t0 stops in
 # [t1, t2], and the same for the proof's sufficient bound (Eq. 9); both bisected between grid

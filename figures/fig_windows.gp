@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Figure: superstable windows of Theorem 2 at q/a = 0.85 (thm2_superstable): each window of b/a
 # where (21) or (22) holds, drawn at its epsilon (the width of [t2, t2 + epsilon) sent to t2).
 load figdir."/style.gp"

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Shared style of every dfchaos figure. Each figure script is run by `make figures` inside
 # build/figures with two variables set on the command line:
 #   data    the folder of the experiments' tables (build/data)

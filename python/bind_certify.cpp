@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file bind_certify.cpp
 /// @brief dfchaos.certify: the certified statements (certify/certify.hpp) from Python, with the same
 /// checks and the same records as `dfchaos certify`, returned as a dict.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file bind_covering.cpp
 /// @brief dfchaos.covering_segments and dfchaos.lemma4_covering: the covering segments of Lemma 4
 /// (Eq. 18), closed segments on which T is continuous and whose image contains [t2, top].

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file bind_map.cpp
 /// @brief The return map: dfchaos.T (Lemma 3), dfchaos.T1 (Eq. 11), dfchaos.step (with theta2 of
 /// Eq. 17, the scenario of Section 3, elapsed time and penetration) and dfchaos.orbit, vectorized

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file bind_parameters.cpp
 /// @brief dfchaos.Parameters, the exceptions (InvalidParameter is a ValueError, GaveUp a
 /// RuntimeError) and the constants of the accuracy contract.

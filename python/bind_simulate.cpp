@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file bind_simulate.cpp
 /// @brief dfchaos.simulate: the event-driven simulation of the full system (Section 2), its event
 /// log and regular samples as numpy arrays with the columns of `dfchaos simulate`.

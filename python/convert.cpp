@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file convert.cpp
 /// @brief Array-likes to contiguous float64 with the checks of convert.hpp, and string columns.
 #include "convert.hpp"

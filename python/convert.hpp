@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file convert.hpp
 /// @brief What every binding of the Python module shares: array-likes in, numpy arrays out, the
 /// CLI's messages for non-finite input, a GIL-free loop that still notices Ctrl-C, and the

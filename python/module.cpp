@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file module.cpp
 /// @brief The Python module `dfchaos`: a thin layer over the C++ library (src/dfchaos). Each group
 /// of functions is bound by its own bind_X() (convert.hpp); the module only converts, checks and

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Doxygen HTML of the dfchaos library, CLI and experiments in BUILD/docs/html, with MathJax for the
 # formulas in the comments, and one page per experiment linking its source, its data tables, its
 # LaTeX outputs and the figures drawn from it. Fails when Doxygen warns about the public API.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Typesets build/paper/report.pdf from paper/report.tex with latexmk, and fails loudly when the
 # report is incomplete:
 #   - a figure, table or macro file that is missing stops LaTeX (\input of a missing file,
@@ -97,6 +98,12 @@ if not m:
     problems.append("no label app:start at the appendices")
 elif int(m.group(1)) - 1 > 30:
     problems.append(f"the main text runs to page {int(m.group(1)) - 1} (at most 30)")
+# The title page names the version and the git hash of the build (tables/build-info.tex).
+info = dict(re.findall(r"\\dfcbuildrow\{([^}]*)\}\{([^}]*)\}", open(build + "/tables/build-info.tex").read()))
+title_page = re.sub(r"\s+", "", text.split("\f")[0])
+for key in ("dfchaos", "git"):
+    if not info.get(key) or re.sub(r"\s+", "", info[key]) not in title_page:
+        problems.append(f"the title page does not show {key} {info.get(key)!r} of tables/build-info.tex")
 if problems:
     for p in problems:
         print("build-report: " + p, file=sys.stderr)

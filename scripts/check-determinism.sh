@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Determinism: every experiment must write the same bytes whatever the number of OpenMP threads.
 # When the manifest of the last `make reproduce` exists and this machine has at least 2 cores
 # (reproduce ran each experiment on all of them, OMP_NUM_THREADS unset), every experiment is run

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The claims map, generated: paper item -> experiments -> claims (verdict, evidence kind) -> figures
 -> tables -> tests, from what the experiments declare (`--describe`), what they computed
 (build/claims/*.json), and which figure scripts read their data (figures/*.gp).

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Compare T between two builds of the library, judged against the 40-digit reference.
 #
 #   scripts/compare-builds.sh [--time] BASE [NEW]

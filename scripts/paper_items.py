@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The paper, item by item: what each numbered item of Begun & Kryzhevich says (in a few of our
 words), which claims bear on it, and the verdict about the paper that those claims support.
 

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # `make plane-hires`: the (q/a, b/a) plane of thm1_parameter_plane at high resolution, every
 # observable, into BUILD/plane/plane-NxN.tsv.
 #

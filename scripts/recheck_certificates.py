@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Re-checks every certificate that the experiments wrote, with the independent checker, and
 writes the report's table of certified claims and their certificates.
 

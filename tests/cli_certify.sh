@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # `dfchaos certify`: exit 0 when proved, 1 when not proved (with JSON naming the failed
 # step), 2 for bad input (one line on stderr naming the parameter, nothing on stdout).
 set -u

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Failure tier for the dfchaos CLI: every bad input gives exit status 2, exactly one line on
 # stderr naming the parameter, and nothing on stdout. Also a few well-formed calls.
 set -u

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Test of scripts/compare/judge.py, the verdict of scripts/compare-builds.sh.
 
   compare_judge.py T_TABLE      (T_TABLE: the driver scripts/compare/t_table.cpp, built against this library)

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Bad-input battery for every experiment, generated from the experiments' own declarations.
 
 For each experiment of BIN_DIR, `--describe` lists its options with their type and admissible

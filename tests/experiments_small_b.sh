@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # What double precision cannot decide is "inconclusive", never a failure of the
 # paper. sec6_periodic_points and sec7_symbolic, at their full settings, down to their b/a floor:
 # every claim the paper makes holds or is inconclusive (exit status 0, no "expected to hold but

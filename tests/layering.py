@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The layers only point down: core <- kit <- certify, sweep <- cli, python, experiments.
 
 Three checks, each able to fail:

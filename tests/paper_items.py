@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The rules of the report's opening table (scripts/paper_items.py) on claims with known answers:
 a refutation is never shown as confirmed, a precision-limited item never as refuted, our own
 hypotheses never decide, thresholds are required in full, every claim of the paper finds an item."""

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The Lyapunov plane of the report (experiment plane_lyapunov) equals `dfchaos sweep --observables
 # lyapunov` on the same grid, cell by cell and to the last bit: the experiment is the sweep tool's
 # computation, not a second implementation that could drift from it.

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Independent 40-digit reference for T1 (Eq. 11) and T (Eq. 17, Lemma 3), and the precision test.
 
 Written from the paper's formulas alone, in mpmath (mp.dps = 40), with absolute times t as

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Every ball that `dfchaos certify` prints must contain the quantity it names.
 
     printed_enclosures.py DFCHAOS

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Certificates of `dfchaos certify ... --certificate FILE`, re-verified by dfchaos-recheck (MPFI).
 
 One CTest test per CASE: the tool writes a certificate, the checker accepts it (exit 0), or a

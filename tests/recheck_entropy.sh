@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The entropy bound from a covering graph (claims cert.sec7.entropy_graph.* of certified_claims):
 # the certificate at point A is accepted; each of these mutations is rejected by dfchaos-recheck:
 # a raised rho_lower, an edge to a segment T(I_j) does not cover, a gap in a segment's cover, two

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The certificates that certified_claims writes (as in make reproduce, here in --fast mode) are all
 # accepted by dfchaos-recheck through scripts/recheck_certificates.py, which lists them with their
 # SHA-256; a certificate changed after the fact makes the script fail and write no table.

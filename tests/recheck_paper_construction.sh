@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The paper's construction in the proof of Lemma 4 (claim cert.lemma4.paper_construction of
 # certified_claims): its certificate is accepted; with the covering replaced by the tool's own covering
 # at the same point (a valid covering whose J0 is not inside a branch of L2) it is rejected, and so it

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The certified region's certificates (one `coverings` file per column with a proved box) are accepted
 # by dfchaos-recheck and bound to the region's claim and data file by scripts/recheck_certificates.py;
 # a column certificate with one box deleted is still a valid proof of less, and the script refuses it

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Every box that certified_region proves can be re-proved alone from its row of the data file:
 # `dfchaos certify covering --b LO:HI --q LO:HI --J0 TOP:T2 --J1 TOP:T2` with the segments the row
 # records, no candidate search. Also: the J's must come together, J0 left of J1, inside [t2, 3pi/2].

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Reliability of the tool's files, signals and budgets (docs/reliability.md), CTest `reliability` (label failure).
 
     reliability.py DFCHAOS [--sanitized] [--experiment EXPERIMENT]

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Randomised robustness harness: seeded draws over the dfchaos tool's argument parsing,
 // driven in-process through dfchaos::cli::run, and over (a, b, q, theta) with edge values (t2, t3
 // and their neighbouring doubles, subnormals, huge values, b/a near its floor) through the library.

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The `certified` observable of `dfchaos sweep` (tests/CMakeLists.txt: sweep_certified).
 
 usage: sweep_certified.py DFCHAOS SOURCE_DIR

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Byte identity of the sweep's outputs (tests/CMakeLists.txt: sweep_identity, sweep_mpi):
 #
 #   sweep_identity.sh serial DFCHAOS

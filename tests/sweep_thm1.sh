@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The sweep reproduces the classification of experiments/thm1_parameter_plane on the same cells:
 #   sweep_thm1.sh DFCHAOS THM1-PARAMETER-PLANE
 # The experiment's 2 x 100 grid (q/a: 2 cell centres of (sin vartheta0, 1); b/a: 100 log-spaced

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The contract of the return map T (Section 3, Lemma 3), one property suite instantiated over every
 // implementation of the map in the library (typed tests, as Sophus's LieGroupTests<G> and odeint's
 // typed test cases):

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file test_beyond.cpp
 /// @brief Cross-validation of the results beyond the paper: the perturbed integrator of Section 10
 /// at eps = 0 against the exact T; T' by the implicit function theorem against finite differences;

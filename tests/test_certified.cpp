@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The certified layer, in tiers:
 //  - unit: the Ball wrapper, vartheta0's digits and correctly rounded doubles;
 //  - cross-validation: certified enclosures of T1, theta2 and T contain the floating layer's values

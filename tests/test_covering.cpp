@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Lemma 4: covering segments found by covering.hpp, re-checked independently: T on a dense grid of
 // each segment (no jump), its end values (t2 and >= 3pi/2) also by numerical integration, and the
 // images filling [t2, 3pi/2] by intermediate values on the dense grid.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Section 7: the lap-count entropy estimate (entropy.hpp). Unit tests of the run count, and
 // cross-checks of lap_counts against maps whose lap numbers are known in closed form: the tent map
 // (2^n laps), the Chebyshev map x -> 4x^3 - 3x (3^n laps), a map with a flat arc (one lap). Then

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Cross-validation: the certain first-root isolation (roots.hpp) against a dense brute-force scan.
 // An independent, plain-double evaluation of G1 (Eq. 11) on a fine grid, with every local maximum
 // located by bisection on dG1/dt, must show no contact before the computed T1.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file test_invariant_density.cpp
 /// @brief The histogram estimate of the invariant density of T (invariant_density.hpp): it is a
 /// probability (mass one, nothing outside [t2, t3)); it counts exactly the points of the orbit that

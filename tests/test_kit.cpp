@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Unit tests of the experiment kit (src/kit): option parsing and ranges, claims and their
 // tolerances, the all-or-nothing output writer, grids, and dfchaos::bisect.
 #include <gtest/gtest.h>

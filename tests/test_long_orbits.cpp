@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file test_long_orbits.cpp
 /// @brief Reliability: orbits of 10^7 iterations of T at several parameter sets (small and large
 /// b/a, Lemma 1 holding and failing) stay finite and inside [t2, t3), throw nothing, and every

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The model's formulas (dfchaos/model.hpp) in their three arithmetics:
 //  - the core's accurate forms (the gap G1 as a QuadraticPlusHarmonic re-centred in double-double,
 //    the motions of HarmonicMotion with long-double elapsed times) agree with the plain templates

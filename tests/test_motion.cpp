@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Cross-validation: the closed-form solutions of the regimes (Eqs. 3-7) against a direct
 // numerical integration of the equations of motion with GSL odeiv2 (rk8pd).
 #include <gsl/gsl_errno.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Properties of T1 (Eq. 11): monotonicity, derivative formula of the proof of Lemma 2, and the
 // discontinuities (grazing points, Eq. 14) against an independent dense scan for jumps.
 #include <gtest/gtest.h>

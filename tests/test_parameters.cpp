@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Unit tests: vartheta0 of Eq. (1), the switching phases, parameter validation.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Section 10: the perturbation G, the stop-release phase t2^eps, the integrated perturbed map and
 // the persistence search of the covering (perturbed.hpp). Cross-checks: G's bounds by finite
 // differences; t2^eps against the closed form at eps = 0 and a dense scan of the force otherwise;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Regression tier for wrong answers at the edges of precision, one test per bug, each
 // failing on the code before the fix. The accuracy of T against a 40-digit reference is checked
 // by tests/precision_reference.py (CTest: precision_reference).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Section 3, the reduction to dimension one: the full event-driven simulator, run from rest at the
 // delimiter, switches to free flight exactly at the iterates of T, with the elapsed times and
 // delimiter advances that T reports.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The return map T (Section 3, Lemma 3): against numerical integration (GSL odeiv2), against a
 // long-double Newton refinement of its two roots, and the scenario bookkeeping.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `dfchaos simulate` once held every event (72 B) and sample (40 B) in memory before printing
 // them, so `--t-end 1e12 --max-events 1e8` needed about 8 GB and died of std::bad_alloc under
 // `ulimit -v 1500000`, and `--sample 1 --t-end 4.9e6` the same under 300 MB. The library now has a

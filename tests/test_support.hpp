@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file test_support.hpp
 /// @brief Shared helpers of the test suites: seeded random draws over the parameter plane, and the
 /// b/a candidates of the tests that need a cycle of the rounding.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Unit tests of the sweep engine (src/sweep): range, observable and shard parsing with their
 // bounds; the cell's observables against direct calls of the library (as thm1_parameter_plane
 // makes them) and the period against its definition; chunk planning; the header read back; the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Sections 6-8: periodic orbits re-checked by numerical integration; every short word realised;
 // the superstable windows against a plain grid and the width epsilon against a direct scan.
 #include <gtest/gtest.h>

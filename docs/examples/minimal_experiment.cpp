@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file minimal_experiment.cpp
 /// @brief The worked example of docs/adding-an-experiment.md: a complete experiment in one file.
 /// It checks a fact the paper uses without comment (Section 2): dividing x by a leaves the motion

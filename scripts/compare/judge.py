@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Judge two tables of T (from t_table.cpp) against the 40-digit reference.
 
   judge.py OLD NEW        (both: lines `b/a q/a theta T scenario`, the same phases in the same order)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file t_table.cpp
 /// @brief The table that scripts/compare-builds.sh compares between two builds of the library: T
 /// at a fixed set of phases, one line each, `b/a q/a theta T scenario` (a = 1; 17 digits).

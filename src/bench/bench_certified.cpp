@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file bench_certified.cpp
 /// @brief `make bench`: time per certified proof, one core. A covering proof (Lemma 4)
 /// at each of the parameter points, with and without the floating candidate search; one

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file bench_plane.cpp
 /// @brief The cost of the report's parameter plane, run by `make bench` (bench_return_map): the
 /// region of experiments/thm1_parameter_plane at 100 x 100 (q/a: cell centres of (sin vartheta0, 1);

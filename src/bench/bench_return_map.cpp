@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file bench_return_map.cpp
 /// @brief `make bench`: evaluations of the return map T per second, dfchaos's closed-form root
 /// isolation against the way one would do it without dfchaos (integrating the equations of motion

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file t_evaluations.hpp
 /// @brief A count of the evaluations of the return map T, for measurements (`make bench`) and
 /// their tests; the library itself is not touched.

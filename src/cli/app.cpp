@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file app.cpp
 /// @brief The `dfchaos` command-line tool as a function (dfchaos::cli::run), so that tests can drive
 /// it in-process: thin subcommands over the library (cmd_*.cpp).

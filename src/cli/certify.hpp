@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file certify.hpp
 /// @brief `dfchaos certify`: the options of the certified statements (certify/certify.hpp runs them).
 ///

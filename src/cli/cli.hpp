@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file cli.hpp
 /// @brief What the subcommands of the `dfchaos` tool share: the model options (a, b, q), strict
 /// number parsing (one line naming the option, exit 2), a buffered writer that streams rows to

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file cmd_sweep.cpp
 /// @brief `dfchaos sweep` (observables over the (q/a, b/a) plane, OpenMP threads, shards, resume)
 /// and `dfchaos sweep-merge` (shard files joined into the unsharded output), over the sweep engine

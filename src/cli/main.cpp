@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file main.cpp
 /// @brief The `dfchaos` command-line tool (see app.cpp and `dfchaos --help`).
 #include "cli.hpp"

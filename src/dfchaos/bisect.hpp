@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file bisect.hpp
 /// @brief The boundary of a predicate on an interval, by bisection: the one loop every threshold
 /// search of dfchaos uses (b0 of Lemma 1, window edges of Theorem 2, edges of covering segments,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file covering.hpp
 /// @brief Continuity branches of \f$T\f$ and covering segments: Lemma 4 (Eq. 18).
 ///

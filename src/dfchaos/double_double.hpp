@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file double_double.hpp
 /// @brief Internal: double-double numbers (an unevaluated sum hi + lo, about 107 bits) built from
 /// error-free transformations, and \f$\cos\f$ of a double to that precision.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file entropy.cpp
 /// @brief Lap counts and the entropy estimate of Section 7 (entropy.hpp).
 #include "dfchaos/entropy.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file entropy.hpp
 /// @brief Section 7: a lap-count estimate of the topological entropy of \f$T\f$, to set beside the
 /// lower bound \f$h_{top}(T) \ge \ln 2\f$ that the semi-conjugacy \f$H\circ T = S\circ H\f$ with the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file errors.cpp
 /// @brief The two kinds of failure (errors.hpp) and the %.17g format of every output.
 #include "dfchaos/errors.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file errors.hpp
 /// @brief The two kinds of failure dfchaos reports: bad input, and a bounded search that gave up.
 #pragma once

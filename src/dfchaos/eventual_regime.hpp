@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file eventual_regime.hpp
 /// @brief The eventual behaviour of the full system (Remark of Section 9): which regimes a motion
 /// still visits after a long time. Outside \f$b < a/2\f$ free flights die out; then the motion

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file invariant_density.cpp
 /// @brief The histogram estimate of the invariant density of T (invariant_density.hpp).
 #include "dfchaos/invariant_density.hpp"

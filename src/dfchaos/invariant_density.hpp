@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file invariant_density.hpp
 /// @brief The invariant density of the return map \f$T\f$ on \f$[t_2, t_3)\f$, estimated from one
 /// long orbit (the empirical measure \f$\frac1N\sum_{n<N}\delta_{\theta_n}\f$, Birkhoff), as a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file lemma4_construction.hpp
 /// @brief The proof of Lemma 4 as the paper writes it, step by step, at concrete parameters.
 ///

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file limits.hpp
 /// @brief Bounds on counts accepted by both front ends of the library, the `dfchaos` tool and the
 /// Python module, defined once so that both refuse the same values with the same message.

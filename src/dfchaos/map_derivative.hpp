@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file map_derivative.hpp
 /// @brief The derivative \f$T'(\theta)\f$ of the return map by the implicit function theorem on
 /// Eqs. (11) and (17), and the Lyapunov exponent of an orbit, \f$\lambda = \frac1N\sum\ln|T'(\theta_n)|\f$.

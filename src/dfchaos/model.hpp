@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file model.hpp
 /// @brief The formulas of the model, written once as templates on the scalar type: the force
 /// \f$F\f$, the switching phases \f$t_0, \dots, t_3\f$, the flight gap \f$G_1\f$ and its

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file motion.hpp
 /// @brief The three regimes of Section 2 and their closed-form solutions (Eqs. 3–7).
 ///

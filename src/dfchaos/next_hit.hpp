@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file next_hit.hpp
 /// @brief The next-hit map \f$T_1\f$ (Section 4, Eq. 11) and its discontinuities (grazing points, Eq. 14).
 ///

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file ode_map.hpp
 /// @brief The return map computed by numerical integration (GSL odeiv2, rk8pd), independently of
 /// the closed forms: a cross-check for \f$T\f$, the baseline a user without dfchaos would write,

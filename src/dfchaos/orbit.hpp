@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file orbit.hpp
 /// @brief The orbit \f$\theta_{n+1} = T(\theta_n)\f$ of the return map, as a range of its steps:
 /// the one loop over \f$T\f$ that every orbit of the library, the tool and the Python module walks.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file parameters.hpp
 /// @brief The parameters \f$(a, b, q)\f$ of the oscillator, their admissibility, the switching
 /// phases \f$t_0, \dots, t_3\f$ and the constant \f$\vartheta_0\f$ of Eq. (1).

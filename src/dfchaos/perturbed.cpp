@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file perturbed.cpp
 /// @brief Section 10's perturbed return map and the persistence of the covering (perturbed.hpp).
 #include "dfchaos/perturbed.hpp"

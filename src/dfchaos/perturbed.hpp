@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file perturbed.hpp
 /// @brief Section 10: the return map under a small smooth perturbation of the force, and whether
 /// the covering of Lemma 4 (Eq. 18) survives it.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file phase.cpp
 /// @brief Instants as whole periods plus a phase (phase.hpp).
 #include "dfchaos/phase.hpp"

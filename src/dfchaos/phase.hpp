@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file phase.hpp
 /// @brief Instants split into whole forcing periods and a phase, so that long flights keep an exact phase.
 ///

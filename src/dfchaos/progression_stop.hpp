@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file progression_stop.hpp
 /// @brief Lemma 1: the progression that starts from rest at \f$t_0\f$, where it stops, and the
 /// sufficient conditions (8), (9) used in the paper's proof.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "dfchaos/regime_chain.hpp"
 
 #include <cmath>

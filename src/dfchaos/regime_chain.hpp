@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file regime_chain.hpp
 /// @brief The transition rules between regimes (Section 3): from any state, the next regime change.
 ///

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file return_map.hpp
 /// @brief The return map \f$T : [t_2, t_3) \to [t_2, t_3)\f$ of Section 3 and Lemma 3, with the
 /// delimiter's advance (the fiber of the skew product), the scenario of each step and Eq. (17).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file roots.hpp
 /// @brief First-root isolation that cannot skip a root, for functions
 /// \f$f(t) = \alpha s^2 + \beta s + \gamma + A\sin t + B\cos t\f$, \f$s = t - t_{\mathrm{origin}}\f$.

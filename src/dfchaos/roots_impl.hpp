@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file roots_impl.hpp
 /// @brief Template definition of solve_increasing (included by roots.hpp).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file simulator.hpp
 /// @brief Event-driven simulation of the full system \f$(x, y, \dot x, \text{regime})\f$ (Section 2).
 ///

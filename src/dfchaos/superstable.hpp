@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file superstable.hpp
 /// @brief Section 8 and Theorem 2: conditions (21), (22) under which \f$t_2\f$ is a superstable
 /// fixed point of \f$T\f$ (a whole neighbourhood \f$[t_2, t_2+\varepsilon)\f$ is sent to \f$t_2\f$).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file symbolic.hpp
 /// @brief Sections 6 and 7: inverse branches of T on the covering segments, points with a given
 /// itinerary, periodic points, and the coding \f$H\f$ with \f$H\circ T = S\circ H\f$.

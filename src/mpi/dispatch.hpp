@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file dispatch.hpp
 /// @brief How dfchaos-sweep-mpi shares the cells of a run among MPI ranks: dynamically, in small
 /// batches handed out by rank 0, which computes cells too.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file sweep_mpi.cpp
 /// @brief `dfchaos-sweep-mpi`: the sweep of `dfchaos sweep` distributed over MPI ranks, with the
 /// same options and byte for byte the same output.

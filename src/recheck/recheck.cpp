@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // dfchaos-recheck: re-verifies the certificates that `dfchaos certify ... --certificate FILE` writes,
 // in MPFI interval arithmetic, with its own formulas taken from the paper. It shares no code with the
 // prover (no header or library of the rest of src/): only MPFI, MPFR, GMP, nlohmann-json and the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Uses the installed library as a downstream project would: T at one phase, printed with 17 digits.
 #include <cstdio>
 

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # package_downstream: build tests/downstream against the dfchaos installed under PREFIX, with the
 # worked example of docs/adding-an-experiment.md copied under a new name as its only experiment;
 # run both. Usage: run.sh PREFIX EXAMPLE.cpp WORKDIR CXX [FLAGS]

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """pytest configuration for the dfchaos Python module (tests/python).
 
 Run by CTest (tests/CMakeLists.txt) with PYTHONPATH=build/python and DFCHAOS_CLI=build/bin/dfchaos,

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Failure tier (reliability): no object of the module exists in an unchecked state, and
 every keyword argument of every function is checked before any work, with one line naming it and
 the condition it breaks (dfchaos.InvalidParameter, a ValueError), or a TypeError for a wrong type.

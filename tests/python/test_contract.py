@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Unit tier: the contract of the return map T (Section 3, Lemma 3) over every way the module gives T.
 
 The same property suite as the C++ typed tests (tests/test_T_contract.cpp): T(theta) lies in

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Cross-validation: the module gives the numbers of the dfchaos tool to the last bit.
 
 The tool prints %.17g, which reads back to the same double; every comparison is float(text) == value

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Failure tier: bad input raises ValueError (dfchaos.InvalidParameter) with the CLI's one-line
 message, or TypeError for what is not a real number; a computation that gives up raises
 dfchaos.GaveUp (a RuntimeError) with the CLI's message. Nothing crashes, nothing is computed first.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Unit tier: the module's values, shapes and identities (no CLI needed)."""
 import math
 import pickle

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Timing tier: 10^6 phases through dfchaos.T against the bare C++ loop over the same phases
 (dfchaos._bench_T: T(p, theta[i]) in C++, no conversion, no result array). The ratio is printed
 (CTest runs this tier with -s, so it is in the test log), not asserted: the target is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file certificate.hpp
 /// @brief Certificates: the witnesses of a certified proof as a JSON document that an independent
 /// checker (`dfchaos-recheck`, src/recheck/, MPFI) verifies again without the prover's code.

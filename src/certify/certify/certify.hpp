@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file certify.hpp
 /// @brief The certified statements as requests with typed arguments: one call checks the input,
 /// runs the proof in ball arithmetic and returns the verdict with its JSON record.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file json.hpp
 /// @brief The certified results as JSON (kit::Json) with the statement each one proves: the records
 /// of certify.hpp (`dfchaos certify`, `dfchaos.certify`) and the evidence of the experiment

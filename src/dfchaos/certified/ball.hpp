@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file ball.hpp
 /// @brief A small RAII value type over Arb's `arb_t` (a midpoint-radius ball of real numbers), the
 /// arithmetic of the certified layer.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file bisect.hpp
 /// @brief The ball form of dfchaos::bisect: the enclosure of the sign change of a function that is
 /// positive at one end of a bracket and negative at the other, by bisection on exact midpoints.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file covering.hpp
 /// @brief Certified covering segments: Lemma 4 (Eq. 18) and the covering part of Theorem 1, at a
 /// parameter point or for every parameter of a box.

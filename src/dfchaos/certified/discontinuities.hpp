@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file discontinuities.hpp
 /// @brief Lemma 2 certified: the discontinuities of \f$T_1\f$ on a segment \f$L \subset (t_2, t_3)\f$ (the paper's
 /// \f$L_0 = [101\pi/100, 3\pi/2]\f$ or \f$L_2 = [101\pi/100, 51\pi/50]\f$), counted exactly and enclosed,

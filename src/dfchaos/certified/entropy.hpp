@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file entropy.hpp
 /// @brief A certified lower bound of the topological entropy of T from a covering graph (Section 7
 /// beyond two symbols).

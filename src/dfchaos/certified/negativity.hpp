@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file negativity.hpp
 /// @brief Proving \f$f < 0\f$ on a whole interval by adaptive bisection with certified tests: the
 /// work-horse of "no earlier root" (T1, Eq. 11) and "no earlier stop" (θ2, Eq. 17).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file next_hit.hpp
 /// @brief Certified next-hit map \f$T_1\f$ (Section 4, Eq. 11) over a set of start phases and a
 /// box of parameters: an enclosure of the first root of

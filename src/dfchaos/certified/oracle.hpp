@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file oracle.hpp
 /// @brief The floating-point layer as an oracle of *where to look*: guesses of \f$T_1\f$, \f$\theta_2\f$
 /// and T at double parameters. Nothing certified rests on these numbers: every guess is verified

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file outcome.hpp
 /// @brief Three-valued answers of the certified routines (proved, refuted, not proved) and bounded
 /// work, in the spirit of Arb's `arb_calc`.

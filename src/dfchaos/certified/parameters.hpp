@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file parameters.hpp
 /// @brief The parameters of the oscillator (dfchaos/parameters.hpp) over a box, in ball arithmetic: \f$a\f$ fixed, \f$b \in
 /// [b_{lo}, b_{hi}]\f$, \f$q \in [q_{lo}, q_{hi}]\f$ (a point when the ends coincide), with enclosures

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file periodic.hpp
 /// @brief Sections 6 and 7 from a certified covering: periodic points of every minimal period, an
 /// explicit enclosure of one orbit per period by the Krawczyk operator, and the entropy bound.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file progression.hpp
 /// @brief Certified progressions: the stop \f$\theta_2\f$ of the first progression (Eq. 17) over a
 /// start set and a parameter box, and Lemma 1 (the progression from rest at \f$t_0\f$ stops in

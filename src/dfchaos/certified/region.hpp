@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file region.hpp
 /// @brief Theorem 1 over parameter boxes: tiles a band of the
 /// \f$(q/a, b/a)\f$ plane by boxes on each of which Lemma 4's covering is proved for *every*

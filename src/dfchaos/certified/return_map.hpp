@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file return_map.hpp
 /// @brief Certified return map T (Section 3, Lemma 3) over a start set and a parameter box: the
 /// chain of regimes, an enclosure of T, and a proof that T is continuous on the set.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file superstable.hpp
 /// @brief Theorem 2 (Section 8) certified: \f$t_2\f$ is a superstable fixed point of T — a whole
 /// \f$[t_2, t_2 + \varepsilon]\f$ is sent to \f$t_2\f$ — with a certified \f$\varepsilon > 0\f$; conditions

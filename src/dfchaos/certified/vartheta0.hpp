@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file vartheta0.hpp
 /// @brief Eq. (1) certified: \f$\vartheta_0 \in (0, \pi/2]\f$ with \f$\pi - \vartheta_0 = \cot(\vartheta_0/2)\f$,
 /// enclosed to any number of digits, its uniqueness, \f$\sin\vartheta_0\f$, and the correctly rounded

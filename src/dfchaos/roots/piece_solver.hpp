@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file piece_solver.hpp
 /// @brief Internal to the first-root search (roots.hpp): the first up-crossing of f on one piece,
 /// where f' is monotone, so that f is monotone, convex with one minimum or concave with one

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file piecewise.hpp
 /// @brief Internal to the first-root search (roots.hpp): the function
 /// \f$f = \alpha s^2 + \beta s + \gamma + A\sin t + B\cos t\f$ cut into pieces on which \f$f'\f$ is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file rest_start.hpp
 /// @brief Internal to the first-root search (roots.hpp): a search whose origin is a root of f (a
 /// start at rest, QuadraticPlusHarmonic::starts_at_rest). Near such an origin f lies below the

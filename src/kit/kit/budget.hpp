@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file budget.hpp
 /// @brief A time and memory budget for a whole process: a command whose cost is not bounded by its
 /// own counts (a proof at a tiny b/a can need minutes and gigabytes) either answers within it or

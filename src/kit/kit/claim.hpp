@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file claim.hpp
 /// @brief A claim checked by an experiment: what is claimed, where the paper says it (or that it is
 /// ours), the kind of evidence behind the verdict, the numbers the verdict rests on, and the verdict.

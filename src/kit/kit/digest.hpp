@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file digest.hpp
 /// @brief SHA-256 digests (OpenSSL's libcrypto) of the text the project writes, so that a file read
 /// back can be told from a damaged one: a changed, missing or added byte changes the digest.

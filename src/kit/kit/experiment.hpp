@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file experiment.hpp
 /// @brief An experiment declares itself once, in its own .cpp: title, the paper items it checks,
 /// the tests that cross-check the library code it rests on, its options and its outputs, and the

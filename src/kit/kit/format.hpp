@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file format.hpp
 /// @brief Number and text formatting shared by every output: significant digits, LaTeX numbers,
 /// LaTeX escapes.

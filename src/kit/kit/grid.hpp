@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file grid.hpp
 /// @brief Parameter axes and grids with a deterministic order, and a parallel sweep over a grid
 /// that records a failure per cell instead of stopping, with progress on stderr.

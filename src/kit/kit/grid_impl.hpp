@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file grid_impl.hpp
 /// @brief Template definitions of grid.hpp (included by it).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file json.hpp
 /// @brief The JSON value of the claims files, `--describe`, the certified records and provenance:
 /// nlohmann-json's value (object keys in insertion order) with the writing rules of dfchaos.

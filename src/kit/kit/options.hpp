@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file options.hpp
 /// @brief Typed, declared command-line options: each option is written once, with its default,
 /// its admissible range and its value in smoke (`--fast`) mode. From the declaration come the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file output.hpp
 /// @brief Everything an experiment writes, collected in memory and written at the end as a whole:
 /// data tables (build/data), LaTeX tables and macros (build/tables), claims (build/claims).

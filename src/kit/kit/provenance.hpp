@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file provenance.hpp
 /// @brief What a result was computed with: dfchaos version, git hash of the source tree (refreshed
 /// at every build, not only at configure time), compiler and library versions.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file table.hpp
 /// @brief Tables: tab-separated data tables for build/data, and LaTeX tabulars for build/tables.
 #pragma once

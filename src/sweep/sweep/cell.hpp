@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file cell.hpp
 /// @brief One cell of a sweep: its observables, computed and formatted as one row of the output.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file checkpoint.hpp
 /// @brief The side directory `FILE.chunks/` of `--resume FILE`: the chunks of cells computed so far,
 /// each written atomically, from which an interrupted run continues.

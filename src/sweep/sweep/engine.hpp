@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file engine.hpp
 /// @brief Computing rows of a sweep in parallel on one machine (OpenMP threads), and the whole
 /// serial run of `dfchaos sweep`.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file header.hpp
 /// @brief The header of a sweep's TSV output, and its reading back (by sweep-merge and --resume).
 ///

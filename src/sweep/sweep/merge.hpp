@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file merge.hpp
 /// @brief `dfchaos sweep-merge`: the shard files of one sweep, given in any order, joined into the
 /// output the unsharded run prints, byte for byte.

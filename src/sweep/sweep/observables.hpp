@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file observables.hpp
 /// @brief What a sweep computes at each cell of the (q/a, b/a) plane.
 ///

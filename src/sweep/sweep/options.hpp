@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file options.hpp
 /// @brief The command-line options of a sweep, shared by `dfchaos sweep` and `dfchaos-sweep-mpi`
 /// so that both accept exactly the same spelling, bounds and help.

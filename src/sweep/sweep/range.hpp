@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file range.hpp
 /// @brief One axis of a parameter sweep, as the user writes it: `lo:hi:n[:kind]`.
 ///

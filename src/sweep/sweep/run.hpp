@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file run.hpp
 /// @brief One run of a sweep, whatever computes its cells (OpenMP threads, MPI ranks): checks the
 /// whole request before any work, plans the chunks still to compute, and puts their rows where

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file seal.hpp
 /// @brief The seal of a sweep file and of a checkpoint chunk: a last line that states the number
 /// of rows and the SHA-256 digest of every byte above it,

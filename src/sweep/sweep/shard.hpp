@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file shard.hpp
 /// @brief A share of a sweep's cells: shard i of N takes the cells with index ≡ i (mod N).
 ///

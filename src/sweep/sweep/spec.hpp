@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file spec.hpp
 /// @brief What one sweep computes: the plane's axes, the observables and their settings. Everything
 /// that determines the output's bytes is here, and nothing else is (no shard, thread or rank count).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file stream.hpp
 /// @brief Where a sweep's text goes: standard output, streamed, or a file written atomically
 /// (streamed into a uniquely named temporary beside it, renamed into place only when complete).
