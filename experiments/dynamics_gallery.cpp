@@ -240,7 +240,7 @@ const Experiment experiment{
       // only phases at which the proof of Lemma 4 uses it (T1(z_i) > 3pi/2, via Eq. 16).
       {
         const double hi = 5 * pi / 4;
-        long long phases_checked = 0, all_landed = 0, z_checked = 0, z_landed = 0;
+        long long phases_checked = 0, all_landed = 0, z_checked = 0, z_landed = 0, z_landed_7pi4 = 0;
         bool every_b_has_outside = true;
         double z_min_phase = two_pi;
         Json landed_per_b = Json::array();
@@ -261,6 +261,7 @@ const Experiment experiment{
           for (const GrazingPoint& g : grazing_points(ps, s_t2, hi, 4000)) {
             ++z_checked;
             if (lands(g.tangency.phase)) ++z_landed;
+            if (g.tangency.phase >= 1.75 * pi - kLandingTol && g.tangency.phase <= s_t3 + kLandingTol) ++z_landed_7pi4;
             z_min_phase = std::min(z_min_phase, g.tangency.phase);
           }
         }
@@ -282,8 +283,9 @@ const Experiment experiment{
                       "[7pi/4, t3], since T1(z) + z = pi mod 2pi at a tangency.")
             .parameter("b_over_a", ba).parameter("b_proof", b_proof).parameter("q_over_a", qa)
             .evidence("discontinuities_checked", z_checked).evidence("landing_in_3pi2_t3", z_landed)
+            .evidence("landing_in_7pi4_t3", z_landed_7pi4)
             .evidence("smallest_landing_phase", z_min_phase).evidence("landing_tolerance", kLandingTol)
-            .holds(z_checked > 0 && z_landed == z_checked);
+            .holds(z_checked > 0 && z_landed == z_checked && z_landed_7pi4 == z_checked);
       }
 
       // ---- the invariant density: two long orbits from two starts, and pooled

@@ -11,6 +11,7 @@
 /// Theorem 1's covering is found. Every cell is independent: the output does not depend on the
 /// number of threads, and equals the sweep tool's (tested by plane_lyapunov_vs_sweep).
 #include <cmath>
+#include <algorithm>
 #include <cstdio>
 #include <string>
 #include <utility>
@@ -20,6 +21,7 @@
 #include "dfchaos/parameters.hpp"
 #include "dfchaos/superstable.hpp"
 #include "kit/experiment.hpp"
+#include "kit/format.hpp"
 #include "kit/grid.hpp"
 #include "sweep/cell.hpp"
 #include "sweep/spec.hpp"
@@ -92,6 +94,17 @@ const Experiment experiment{
       long long n_not_t2 = 0, n_cycle_failed = 0;
       long long n_unresolved_lost = 0;  // not resolved because the error was lost (StopCycle::lost), not for a narrow arc
       long long n_no_return_lost = 0;   // no stop image repeated, and the error was lost on the way
+      // The cells that decide against plane.stop_cells_superstable (no return with the error kept
+      // small, or the search gave up), as (q/a, b/a): a reader can rerun them one by one.
+      std::vector<std::pair<double, double>> against_at;
+      Json counterexamples = Json::array();
+      for (std::size_t i = 0; i < cycles.size(); ++i) {
+        const auto& c = cycles[i];
+        if (c.failed || (!c.value.cycle.resolved && c.value.cycle.period == 0 && !c.value.cycle.lost)) {
+          against_at.emplace_back(stop_cells[i]->q_over_a, stop_cells[i]->b_over_a);
+          counterexamples.push(Json::array().push(stop_cells[i]->q_over_a).push(stop_cells[i]->b_over_a));
+        }
+      }
       for (const auto& c : cycles) {
         if (c.failed) {
           ++n_cycle_failed;
@@ -133,6 +146,7 @@ const Experiment experiment{
           .evidence("stop", n_stop).evidence("image_not_t2", n_not_t2).evidence("resolved_cycle", n_resolved)
           .evidence("return_not_resolved", n_unresolved_return).evidence("return_not_resolved_error_lost", n_unresolved_lost)
           .evidence("no_return", n_no_return).evidence("no_return_error_lost", n_no_return_lost).evidence("failed", n_cycle_failed)
+          .evidence("counterexamples_q_b", counterexamples)
           // A cell decides against the claim only where its orbit kept its error small and still did not
           // close (no return within the bound, error not lost), or where the search gave up; a cycle seen
           // after the error was lost, or on an arc narrower than the safety margin, is one double
@@ -167,6 +181,15 @@ const Experiment experiment{
       run.out.macro("LyapNoReturn", std::to_string(n_no_return));
       run.out.macro("LyapNoReturnLost", std::to_string(n_no_return_lost));
       run.out.macro("LyapStopCounterexamples", std::to_string(n_no_return - n_no_return_lost + n_cycle_failed));
+      {  // where they are: the first few cells against the claim, as (q/a, b/a)
+        std::string cells;
+        const std::size_t shown = std::min<std::size_t>(against_at.size(), 4);
+        for (std::size_t i = 0; i < shown; ++i)
+          cells += std::string(i ? (i + 1 == shown && shown == against_at.size() ? " and " : ", ") : "") + "$(" +
+                   dfchaos::format_shortest(against_at[i].first) + ", " + latex_number(dfchaos::format_shortest(against_at[i].second)) + ")$";
+        if (against_at.size() > shown) cells += " and " + std::to_string(against_at.size() - shown) + " more";
+        run.out.macro("LyapStopCounterexampleCells", cells.empty() ? std::string("none") : cells);
+      }
       run.out.macro("LyapNudge", kNudge, 1);
       run.out.macro("LyapNonpositive", std::to_string(n_neg));
       run.out.macro("LyapMax", lmax, 3);

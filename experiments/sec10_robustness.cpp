@@ -165,6 +165,7 @@ const Experiment experiment{
       run.out.macro("SecTenB", b, 3);
       // The window of the search for u near J_i: a quarter of |J_i| (search.margin) either side of its end.
       run.out.macro("SecTenReachJZero", search.margin * (c.J0.hi - c.J0.lo), 2);
+      run.out.macro("SecTenMargin", search.margin, 3);
       run.out.macro("SecTenUZeroAtZero", c.J0.theta_at_t2, 6);
       run.out.macro("SecTenUZeroMissing", std::isfinite(first_u0_missing) ? format_significant(first_u0_missing, 2) : std::string("none"));
       run.out.macro("SecTenUZeroBack", std::isfinite(first_u0_back) ? format_significant(first_u0_back, 2) : std::string("none"));

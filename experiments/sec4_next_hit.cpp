@@ -175,19 +175,24 @@ const Experiment experiment{
       long long second_cases = 0, second_first_contact = 0;
       double second_worst_sum = 0, second_min_gap = INFINITY;
       Table t14({"b_over_a", "k", "s", "theta", "T1", "theta_plus_s", "F_theta", "F_theta_plus_s"});
+      // x_k: the root of sin x - x cos x (tan x = x) in (k pi, k pi + pi/2), where it changes sign.
+      auto tan_root = [](int k) {
+        double lo = k * pi + 1e-12, hi = k * pi + pi / 2 - 1e-12;
+        auto g = [](double x) { return std::sin(x) - x * std::cos(x); };
+        const bool g_lo_neg = g(lo) < 0;
+        for (int it = 0; it < 200 && hi - lo > 1e-15 * hi; ++it) {
+          const double mid = 0.5 * (lo + hi);
+          ((g(mid) < 0) == g_lo_neg ? lo : hi) = mid;
+        }
+        return 0.5 * (lo + hi);
+      };
+      run.out.macro("EqSixteenTanRootOne", tan_root(1), 3);
+      run.out.macro("EqSixteenTanRootTwo", tan_root(2), 3);
       for (double ba : run.fast() ? std::vector<double>{0.05, 0.01} : std::vector<double>{0.1, 0.05, 0.01, 1e-3, 1e-4}) {
         const Parameters p(1.0, ba, qa);
         const double t2 = *p.t2(), t3 = *p.t3();
         for (int k = 1;; ++k) {
-          // x_k: the root of sin x - x cos x in (k pi, k pi + pi/2) (it changes sign there).
-          double lo = k * pi + 1e-12, hi = k * pi + pi / 2 - 1e-12;
-          auto g = [](double x) { return std::sin(x) - x * std::cos(x); };
-          const bool g_lo_neg = g(lo) < 0;
-          for (int it = 0; it < 200 && hi - lo > 1e-15 * hi; ++it) {
-            const double mid = 0.5 * (lo + hi);
-            ((g(mid) < 0) == g_lo_neg ? lo : hi) = mid;
-          }
-          const double x = 0.5 * (lo + hi), v = -2 * x * ba / std::sin(x);
+          const double x = tan_root(k), v = -2 * x * ba / std::sin(x);
           if (std::fabs(v) > 1) break;  // no start phase for this k (nor for larger ones)
           for (double m : {std::asin(v), pi - std::asin(v)}) {
             double th = std::fmod(m - x, two_pi);

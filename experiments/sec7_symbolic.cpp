@@ -125,7 +125,7 @@ const Experiment experiment{
                                 "Every binary word of length n <= n-max is the itinerary of an orbit through K0, K1 (2^n words).");
       all.parameter("b_over_a", b).parameter("q_over_a", q).parameter("n_max", n_max)
           .evidence("missing_words", missing).evidence("undecided_words", undecided).evidence("max_step_residual", worst)
-          .evidence("max_precision_floor", worst_floor);
+          .evidence("max_precision_floor", worst_floor).evidence("words_checked", (1LL << (n_max + 1)) - 2);
       if (missing == 0 && undecided > 0) all.inconclusive(why);
       all.holds(missing == 0);
       auto& ent = run.out.claim("sec7.entropy_bound", "Section 7", EvidenceKind::Sampled,

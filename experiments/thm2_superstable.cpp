@@ -11,9 +11,11 @@
 #include <cmath>
 #include <vector>
 
+#include "dfchaos/errors.hpp"
 #include "dfchaos/parameters.hpp"
 #include "dfchaos/superstable.hpp"
 #include "kit/experiment.hpp"
+#include "kit/format.hpp"
 
 using namespace dfchaos;
 using namespace dfchaos::kit;
@@ -53,6 +55,8 @@ const Experiment experiment{
     .body = [](Run& run) {
       const int samples = run.count_int("samples"), grid_points = run.count_int("grid");
       const double b_lo = 1e-3, b_hi = 0.1;
+      run.out.macro("ThmTwoScanBLo", latex_number(dfchaos::format_shortest(b_lo)));
+      run.out.macro("ThmTwoScanBHi", latex_number(dfchaos::format_shortest(b_hi)));
       Table windows({"q_over_a", "b_lo", "b_hi", "condition", "b_mid", "epsilon_mid", "theorem2_hypotheses_mid", "interval"});
       Table summary({"q_over_a", "intervals", "intervals_joined_21_22", "pieces_21", "pieces_22", "intervals_at_4x_samples",
                      "grid_points_in_conditions", "grid_points_outside_windows", "smallest_epsilon", "widest_interval_relative"});

@@ -111,6 +111,35 @@ def grouped_claim_rows(rows):
     return out
 
 
+# The statements are plain text written by the experiments (escaped for LaTeX by the kit): the
+# mathematics in them is typeset here, by a few conservative rules on whole words, so that the PDF
+# shows t_2, 3pi/2, J_0, >= as mathematics. A word no rule knows is left as it was.
+_W = r"(?<![\w\\])"   # not inside a word or a command
+_E = r"(?![\w\\])"    # the end of a word
+_TYPESET = [  # (pattern, replacement as for re.sub: group references \1, LaTeX backslashes doubled)
+    (r"\(0\\textasciicircum\{\}\(m-1\)1\)\\textasciicircum\{\}infinity", r"$(0^{m-1}1)^\\infty$"),
+    (r"\$>\$=", r"$\\ge$"), (r"\$<\$=", r"$\\le$"), (r"!=", r"$\\ne$"), (r"-\$>\$", r"$\\to$"),
+    (_W + r"(\d*)pi/(\d+)" + _E, r"$\1\\pi/\2$"), (_W + r"(\d*)pi" + _E, r"$\1\\pi$"),
+    (_W + r"vartheta0" + _E, r"$\\vartheta_0$"), (_W + r"theta(\d)" + _E, r"$\\theta_\1$"), (_W + r"theta" + _E, r"$\\theta$"),
+    (_W + r"eps\\_b" + _E, r"$\\varepsilon_b$"), (_W + r"(?:epsilon|eps)" + _E, r"$\\varepsilon$"),
+    (_W + r"delta" + _E, r"$\\delta$"), (_W + r"lambda" + _E, r"$\\lambda$"),
+    (_W + r"h\\_top" + _E, r"$h_{\\mathrm{top}}$"),
+    (_W + r"([tTJKLGzb])(?:\\_)?(\d|[ik])" + _E, r"$\1_\2$"),
+    (_W + r"(\d+(?:\.\d+)?)e([-+]?)0*(\d+)" + _E, lambda m: "$" + ("" if m.group(1) == "1" else m.group(1) + r"\cdot") +
+     "10^{" + m.group(2).replace("+", "") + m.group(3) + "}$"),
+]
+
+
+def typeset(text):
+    """The mathematics of a statement typeset (see _TYPESET); \path{...} and \texttt{...} untouched."""
+    parts = re.split(r"(\\(?:path|texttt)\{[^{}]*\})", text)
+    for i in range(0, len(parts), 2):
+        for pattern, repl in _TYPESET:
+            parts[i] = re.sub(pattern, repl, parts[i])
+        parts[i] = parts[i].replace("$$", "")  # adjacent formulas, e.g. $t_2$$\ge$ -> one formula
+    return "".join(parts)
+
+
 def main():
     build = os.path.abspath(sys.argv[1])
     root = os.path.abspath(sys.argv[2] if len(sys.argv) > 2 else os.path.join(os.path.dirname(__file__), ".."))
@@ -194,6 +223,7 @@ def main():
             paths = lambda xs: ", ".join(f"\\path{{{x}}}" for x in xs) or "---"
             f.write(f"\\dfcclaims{{{name}}}{{{paths(d['figures'])}}}{{{paths(d['tests'])}}}{{%\n")
             for row in grouped_claim_rows(kit_rows):
+                row = row[:3] + (typeset(row[3]),) + row[4:]
                 f.write("\\dfcclaimentry" + "".join("{" + x + "}" for x in row) + "\n")
             f.write("}\n")
     print(f"claims map: {len(rows)} paper items, {len(experiments)} experiments -> {build}/claims-map.md")

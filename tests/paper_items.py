@@ -118,5 +118,18 @@ class OneRowPerFamily(unittest.TestCase):
             M.tex_args("\\dfcclaimrow{a}{b}", 6)
 
 
+class Typeset(unittest.TestCase):
+    """The statements' mathematics typeset by claims_map.typeset: known words only, ids untouched."""
+
+    def test_known_words_become_mathematics(self):
+        self.assertEqual(M.typeset(r"T $>$= 3pi/2 on [t2, t3], J\_i, 1e-10, 5e-05, vartheta0, theta2 != t2"),
+                         r"T $\ge$ $3\pi/2$ on [$t_2$, $t_3$], $J_i$, $10^{-10}$, $5\cdot10^{-5}$, $\vartheta_0$, $\theta_2$ $\ne$ $t_2$")
+        self.assertEqual(M.typeset(r"(0\textasciicircum{}(m-1)1)\textasciicircum{}infinity"), r"$(0^{m-1}1)^\infty$")
+
+    def test_identifiers_and_paths_are_left_alone(self):
+        for text in (r"'jump\_at\_least' and t2\_cycle", r"\path{cert.t2} and \texttt{t2}", "typical steps at 2k+1"):
+            self.assertEqual(M.typeset(text), text)
+
+
 if __name__ == "__main__":
     unittest.main()

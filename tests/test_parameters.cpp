@@ -4,6 +4,9 @@
 
 #include <cfloat>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
 
 #include "dfchaos/errors.hpp"
 #include "dfchaos/parameters.hpp"
@@ -203,6 +206,20 @@ TEST(Format, ShortestReadsBackToTheSameDouble) {
     const std::string s = dfchaos::format_shortest(x);
     EXPECT_EQ(std::strtod(s.c_str(), nullptr), x) << s;
     EXPECT_LE(s.size(), dfchaos::format_double(x).size()) << s;
+    // Its significant digits d: the nearest decimal of d - 1 digits (the closest of all of them to x)
+    // reads back to another double, so no shorter decimal names x.
+    const std::string mantissa = s.substr(0, s.find('e'));
+    std::string digits;
+    for (char ch : mantissa)
+      if (ch >= '0' && ch <= '9') digits += ch;
+    digits.erase(0, digits.find_first_not_of('0'));
+    digits.erase(digits.find_last_not_of('0') + 1);  // zeros ending an integer are not significant
+    const int d = static_cast<int>(digits.size());
+    if (d > 1) {
+      char shorter[64];
+      std::snprintf(shorter, sizeof shorter, "%.*e", d - 2, x);
+      EXPECT_NE(std::strtod(shorter, nullptr), x) << s << " vs " << shorter;
+    }
   }
   EXPECT_EQ(Parameters(1.0, 0.003, 0.85).describe(), "a=1 b=0.003 q=0.85");
 }
