@@ -47,3 +47,9 @@ set format y "$%g$"
 # the figures mark the edge q/a = sin(vartheta0) of assumption (2) with the computed value.
 sin_vartheta0 = real(system("sed -n 's/^\\\\newcommand{\\\\dfcSinVarthetaZero}{\\(.*\\)}$/\\1/p' '".data."/../tables/eq1_vartheta0-macros.tex'"))
 if (!(sin_vartheta0 > 0.7 && sin_vartheta0 < 0.75)) { print "style.gp: no sin(vartheta0) in tables/eq1_vartheta0-macros.tex (run eq1_vartheta0)"; exit status 1 }
+
+# The (q/a, b/a) plane figures share one axis convention: q/a linear with ticks every 0.05, b/a on a
+# logarithmic axis plotted as log10(b/a) with ticks at the powers of ten. `eval plane_axes` after
+# setting the ranges.
+plane_axes = "set xlabel '$q/a$'; set ylabel '$b/a$' offset 0.5,0; set xtics 0.05 format '$%.2f$'; set mxtics 5; " . \
+             "set ytics ('$10^{-5}$' -5, '$10^{-4}$' -4, '$10^{-3}$' -3, '$10^{-2}$' -2, '$10^{-1}$' -1, '$1$' 0); set mytics 10"
