@@ -37,6 +37,7 @@ set grid noxtics noytics
 set lmargin at screen 0.1; set rmargin at screen 0.46; set bmargin at screen 0.34; set tmargin at screen 0.97
 set xrange [Q_min - dq/2 : Q_max + dq/2]; set yrange [B_min - db/2 : B_max + db/2]
 eval plane_axes
+set xlabel offset 0,0.6
 set xtics 0.1 format '$%.1f$'
 set object 1 rect from QL_min, log10(BL_min) to QH_max, log10(BH_max) fs empty border lc rgb "black" lw 1.2 front
 set label 1 '\footnotesize the band' at QL_min, log10(BH_max) left offset 0,0.6 front
@@ -61,7 +62,7 @@ plot fc using (0.5*(column("q_lo") + column("q_hi"))):(column("b_reached") < BH_
 unset border; unset tics; unset xlabel; unset ylabel; unset grid
 set lmargin at screen 0; set rmargin at screen 1; set bmargin at screen 0; set tmargin at screen 1
 set xrange [0:1]; set yrange [0:1]
-k1 = 0.18; k2 = 0.11; k3 = 0.04
+k1 = 0.165; k2 = 0.1; k3 = 0.035
 key_box(n, x, y, colour) = sprintf("set object %d rect center screen %g, screen %g size screen 0.016, screen 0.03 fc rgb '%s' fs solid border lc rgb '#808080' front", n, x, y, colour)
 eval key_box(11, 0.03, k1, "#56B4E9")
 set label 11 '\small covering found (sampled)' at screen 0.045, screen k1 left front
