@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # Figure: the return map T of Lemma 3 on [t2, t3), each point coloured by its scenario; from
-# lemma3_return_map. Left: Lemma 1 holds (b/a = 0.01, q/a = 0.85); right: it fails (q/a = 0.7).
+# lemma3_return_map (colour and marker per scenario). Left: Lemma 1 holds (b/a = 0.01, q/a = 0.85); right: it fails (q/a = 0.7).
 # Grey: theta2, where the first progression ends (Eq. 17), wherever it is not T itself, unwrapped
 # into [t1, t0 + 2 pi): in [t1, t2) the mass stops until t2 (B), in [t3, t0 + 2 pi) it stops
 # until t0 and progresses again (C, D). The phases t0..t3 (closed form, docs/architecture.md) are marked on
@@ -15,6 +15,8 @@ set xlabel '$\theta$' offset 0,0
 set ylabel '$T(\theta)$' offset 1.5,0
 set grid noxtics noytics
 sc_col(s) = (s eq "A" ? c_free : (s eq "B" ? c_stop : (s eq "C" ? c_alt : (s eq "D" ? c_prog : c_grey))))
+# and a marker per scenario, so that the key reads in greyscale too (circle for theta2)
+sc_pt(s) = (s eq "A" ? 5 : (s eq "B" ? 9 : (s eq "C" ? 13 : 11)))
 files = "b0.01-q0.85 b0.05-q0.7"
 do for [k=1:2] {
   f = word(files, k)
@@ -45,10 +47,10 @@ do for [k=1:2] {
   set key at graph 0.5, graph 1.0 center bottom horizontal reverse Left samplen 0.8 spacing 1 width -1.5 maxrows 1 noopaque nobox
   unwrap(p) = (p < t0 + 1e-12 ? p + 2*pi : p)
   plot file using "theta":(strcol("scenario") ne "A" && abs(column("theta2_phase") - column("T")) > 1e-12 ? unwrap(column("theta2_phase")) : NaN) \
-            w p pt 7 ps 0.15 lc rgb "#606060" notitle, \
-       NaN w p pt 7 ps 0.8 lc rgb "#606060" title '$\theta_2$', \
-       for [s in present] file using "theta":(strcol("scenario") eq s ? column("T") : NaN) w p pt 7 ps 0.2 lc rgb sc_col(s) notitle, \
-       for [s in present] NaN w p pt 7 ps 0.8 lc rgb sc_col(s) title s, \
+            w p pt 7 ps 0.15 lc rgb "#909090" notitle, \
+       NaN w p pt 6 ps 1.0 lw 1.5 lc rgb "#909090" title '$\theta_2$', \
+       for [s in present] file using "theta":(strcol("scenario") eq s ? column("T") : NaN) w p pt sc_pt(s) ps 0.2 lc rgb sc_col(s) notitle, \
+       for [s in present] NaN w p pt sc_pt(s) ps 1.0 lc rgb sc_col(s) title s, \
        x w l dt 2 lw 1 lc rgb "black" title '$T=\theta$'
   unset ylabel
 }

@@ -94,7 +94,7 @@ set object 11 circle at screen 0.03, screen ky size screen 0.004 fc rgb c_prog f
 set label 11 '\small finite $\lambda$' at screen 0.045, screen ky left front
 set label 12 '$\times$' at screen 0.165, screen ky center front
 set label 13 '\small $\lambda=-\infty$: a step with $T''=0$ (stop)' at screen 0.18, screen ky left front
-set label 14 '{\color[rgb]{0.17,0.63,0.17}$\square$}' at screen 0.56, screen ky center front
+set label 14 sprintf('{\color[HTML]{%s}$\square$}', c_stop[2:7]) at screen 0.56, screen ky center front
 set label 15 '\small $\lambda=-\infty$, superstable cycle through $t_2$ (resolved)' at screen 0.575, screen ky left front
 plot NaN notitle
 unset multiplot

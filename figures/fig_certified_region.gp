@@ -1,31 +1,83 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
-# Figure: where Theorem 1's covering is *proved* for every parameter of a box
-# (certified_region: green boxes proved, red boxes not proved), over the plane sampled in floating
-# point by thm1_parameter_plane (left: the whole plane, the certified band drawn on it; right: the
-# band enlarged, b/a linear).
+# Figure: where Theorem 1's covering is *proved* for every parameter of a box (certified_region),
+# over the plane sampled in floating point by thm1_parameter_plane. Left: the whole plane (classes
+# in the colours of fig_plane), the certified band outlined on it. Right: the band enlarged, b/a
+# linear: boxes proved (bluish green), boxes not proved (vermilion, each marked by a cross so that
+# even the thinnest is seen), and, per column of q/a, the part of the band above the b/a that the
+# box budget reached (certified_region-columns.tsv, b_reached): not reached, hatched grey.
+# One key under both panels, with the counts read from the data. Axes: the plane convention
+# (plane_axes, style.gp) on the left; b/a linear on the right.
 load figdir."/style.gp"
-set terminal cairolatex pdf input size 15cm,7cm
+set terminal cairolatex pdf input size 15cm,8.6cm
 set output "fig_certified_region.tex"
 fp = data."/thm1_parameter_plane.tsv"
 fr = data."/certified_region.tsv"
-set multiplot layout 1,2
-set xlabel '$q/a$'; set ylabel '$\log_{10}(b/a)$'
-set format x '$%.2f$'; set format y '$%g$'
-set palette maxcolors 4
-set palette defined (0 "#f0f0f0", 1 "#c6dbef", 2 "#fdd0a2", 3 "#fcbba1")
-set cbrange [-0.5:3.5]
-unset colorbox
-set yrange [-4.05:-0.95]
-set xrange [0.72:1.0]
-set style fill solid 1.0 border
-color(p) = p == 1 ? 0x2ca02c : 0xd62728
-plot fp using "q_over_a":(log10(column("b_over_a"))):"class" with image, \
-     fr using ((column("q_lo")+column("q_hi"))/2):(log10((column("b_lo")+column("b_hi"))/2)):"q_lo":"q_hi":(log10(column("b_lo"))):(log10(column("b_hi")+1e-3*(column("b_hi")-column("b_lo"))+2e-5*column("b_hi"))):(color(column("proved"))) \
-        with boxxyerror lc rgb variable
-set ylabel '$b/a$'
-set format y '$%.4g$'
-set autoscale y
-set xrange [*:*]
-plot fr using ((column("q_lo")+column("q_hi"))/2):((column("b_lo")+column("b_hi"))/2):"q_lo":"q_hi":"b_lo":"b_hi":(color(column("proved"))) \
-        with boxxyerror lc rgb variable
+fc = data."/certified_region-columns.tsv"
+c_ok = oi_green; c_bad = oi_verm; c_unreached = "#bdbdbd"
+# counts and extents (stats obeys ranges: before any is set)
+stats fr using (column("proved") == 1 ? 1 : 0) name "NP" nooutput
+stats fr using (column("proved") == 1 ? 0 : 1) name "NF" nooutput
+stats fr using "b_lo" name "BL" nooutput
+stats fr using "b_hi" name "BH" nooutput
+stats fr using "q_lo" name "QL" nooutput
+stats fr using "q_hi" name "QH" nooutput
+stats fc using (column("b_reached") < BH_max ? 1 : 0) name "NU" nooutput
+stats fp using "q_over_a" name "Q" nooutput
+stats fp using (log10(column("b_over_a"))) name "B" nooutput
+stats fp using (abs(column("q_over_a") - Q_min) <= 1e-12*abs(Q_min) ? 1 : 0) name "NBQ" nooutput
+nb = int(NBQ_sum); nq = int(Q_records / nb + 0.5)
+dq = (Q_max - Q_min) / (nq > 1 ? nq - 1 : 1); db = (B_max - B_min) / (nb > 1 ? nb - 1 : 1)
+# the classes of fig_plane: 0 neither, 1 covering, 2 superstable, 3 both, -1 failed
+rgbof(c) = (c == 0 ? 0xe8e8e8 : (c == 1 ? 0x56B4E9 : (c == 2 ? 0xD55E00 : (c == 3 ? 0x0072B2 : 0x000000))))
+red(c) = int(rgbof(c)) >> 16 & 255; green(c) = int(rgbof(c)) >> 8 & 255; blue(c) = int(rgbof(c)) & 255
+
+set multiplot
+set grid noxtics noytics
+# ---- left: the whole plane
+set lmargin at screen 0.1; set rmargin at screen 0.46; set bmargin at screen 0.34; set tmargin at screen 0.97
+set xrange [Q_min - dq/2 : Q_max + dq/2]; set yrange [B_min - db/2 : B_max + db/2]
+eval plane_axes
+set xlabel offset 0,0.6
+set xtics 0.1 format '$%.1f$'
+set object 1 rect from QL_min, log10(BL_min) to QH_max, log10(BH_max) fs empty border lc rgb "black" lw 1.2 front
+set label 1 '\footnotesize the band' at QL_min, log10(BH_max) left offset 0,0.6 front
+plot fp using "q_over_a":(log10(column("b_over_a"))):(red(column("class"))):(green(column("class"))):(blue(column("class"))) with rgbimage pixels notitle
+unset object 1; unset label 1
+# ---- right: the band, b/a linear
+set lmargin at screen 0.65; set rmargin at screen 0.97
+set xrange [QL_min - 0.005 : QH_max + 0.005]; set yrange [BL_min : BH_max]
+set xtics 0.05 format '$%.2f$'; set mxtics 5
+set ytics auto format '$%.5f$'; set mytics 2
+set ylabel '$b/a$' offset 0.5,0
+plot fc using (0.5*(column("q_lo") + column("q_hi"))):(column("b_reached") < BH_max ? 0.5*(column("b_reached") + BH_max) : NaN):"q_lo":"q_hi":"b_reached":(BH_max) \
+        w boxxyerror fc rgb c_unreached fs pattern 4 border lc rgb c_unreached notitle, \
+     fr using (0.5*(column("q_lo") + column("q_hi"))):(column("proved") == 1 ? 0.5*(column("b_lo") + column("b_hi")) : NaN):"q_lo":"q_hi":"b_lo":"b_hi" \
+        w boxxyerror fs solid 1.0 noborder fc rgb c_ok notitle, \
+     fr using (0.5*(column("q_lo") + column("q_hi"))):(column("proved") != 1 ? 0.5*(column("b_lo") + column("b_hi")) : NaN):"q_lo":"q_hi":"b_lo":"b_hi" \
+        w boxxyerror fs solid 1.0 noborder fc rgb c_bad notitle, \
+     fr using (0.5*(column("q_lo") + column("q_hi"))):(column("proved") != 1 ? 0.5*(column("b_lo") + column("b_hi")) : NaN) \
+        w p pt 2 ps 0.5 lw 1 lc rgb "black" notitle
+
+# ---- the key, drawn by hand under the panels
+unset border; unset tics; unset xlabel; unset ylabel; unset grid
+set lmargin at screen 0; set rmargin at screen 1; set bmargin at screen 0; set tmargin at screen 1
+set xrange [0:1]; set yrange [0:1]
+k1 = 0.165; k2 = 0.1; k3 = 0.035
+key_box(n, x, y, colour) = sprintf("set object %d rect center screen %g, screen %g size screen 0.016, screen 0.03 fc rgb '%s' fs solid border lc rgb '#808080' front", n, x, y, colour)
+eval key_box(11, 0.03, k1, "#56B4E9")
+set label 11 '\small covering found (sampled)' at screen 0.045, screen k1 left front
+eval key_box(12, 0.03, k2, "#0072B2")
+set label 12 '\small covering and $t_2$ superstable' at screen 0.045, screen k2 left front
+eval key_box(13, 0.36, k1, "#D55E00")
+set label 13 '\small $t_2$ superstable only' at screen 0.375, screen k1 left front
+eval key_box(14, 0.36, k2, "#e8e8e8")
+set label 14 '\small neither' at screen 0.375, screen k2 left front
+eval key_box(15, 0.65, k1, c_ok)
+set label 15 sprintf('\small box proved: %d', int(NP_sum)) at screen 0.665, screen k1 left front
+eval key_box(16, 0.65, k2, c_bad)
+set label 26 '' at screen 0.65, screen k2 front point pt 2 ps 0.5 lw 1 lc rgb "black"
+set label 16 sprintf('\small box not proved: %d', int(NF_sum)) at screen 0.665, screen k2 left front
+set object 17 rect center screen 0.65, screen k3 size screen 0.016, screen 0.03 fc rgb c_unreached fs pattern 4 border lc rgb c_unreached front
+set label 17 sprintf('\small not reached by the boxes (%d columns)', int(NU_sum)) at screen 0.665, screen k3 left front
+plot NaN notitle
 unset multiplot

@@ -70,9 +70,10 @@ set xlabel '$n$' offset 0,0.2; set ylabel '$\theta_n$' offset 0.3,0
 unset object 1; unset object 2; unset object 3
 set object 1 rect from graph 0, first J0L_mean to graph 1, first J0H_mean fc rgb c_prog fs transparent solid 0.2 noborder back
 set object 2 rect from graph 0, first J1L_mean to graph 1, first J1H_mean fc rgb c_alt fs transparent solid 0.25 noborder back
-set label 1 '$J_0$' at graph 0.97, first (J0L_mean+J0H_mean)/2 right front
-set label 2 '$J_1$' at graph 0.97, first (J1L_mean+J1H_mean)/2 right front
-set xrange [-0.5:6.5]; set xtics 1 format '$%g$'; set mxtics 1
+set label 1 '$J_0$' at graph 0.98, first (J0L_mean+J0H_mean)/2 right front
+set label 2 '$J_1$' at graph 0.98, first (J1L_mean+J1H_mean)/2 right front
+# room on the right, beyond n = 6, for the labels J0, J1 (clear of the points' itinerary letters)
+set xrange [-0.5:7.6]; set xtics 0, 1, 6 format '$%g$'; set mxtics 1
 set yrange [J0L_mean-0.02:J1H_mean+0.04]
 set ytics 0.1 format '$%.1f$'
 # two periods: n = 0..6, theta_{n} = p_{n mod 3}

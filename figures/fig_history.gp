@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # Figure: a long time history of the full system on the chaotic attractor (dynamics_gallery), from
 # rest at the delimiter at a phase reached after the transient of T.
-# (a) x(t) coloured by regime and y(t) dashed, over several steps of T; impacts (fp) marked by
+# (a) x(t) drawn by regime (style.gp: colour, width, dots) and y(t) dashed, over several steps of T; impacts (fp) marked by
 #     triangles at the exact instants of the simulator's event log; the box is the window of (b).
 # (b) one contact magnified (sampled finely): every regime change marked and named (fp, is).
 # (c) the phase portrait: velocity of the mass against its distance to the delimiter, x - y <= 0;
@@ -12,7 +12,6 @@ set output "fig_history.tex"
 h = data."/dynamics_gallery-history.tsv"
 z = data."/dynamics_gallery-history-zoom.tsv"
 ev = data."/dynamics_gallery-history-events.tsv"
-regrgb(r) = (r == 0 ? 0x1f77b4 : (r == 1 ? 0xd62728 : 0x2ca02c))
 # ranges of the data (stats obeys ranges: before any is set)
 stats h using "t" name "HT" nooutput
 stats h using (column("regime") == 2 ? 1 : 0) name "STOPS" nooutput   # the key lists stop only if the history has one
@@ -35,7 +34,7 @@ set ylabel '$x$, $y$' offset 1,0
 set xrange [0:HT_max]; set yrange [lo - 0.08*(hi - lo):hi + 0.12*(hi - lo)]
 set object 1 rect from ZT_min, zlo - 0.2 to ZT_max, zhi + 0.2 fs empty border lc rgb "black" lw 0.8 front
 plot h using "t":"y" w l lw 1 dt 2 lc rgb "black" notitle, \
-     h using "t":"x":(regrgb(column("regime"))) w l lw 1.5 lc rgb variable notitle, \
+     for [r=0:2] h using "t":(reg(r, column("x"))) w l lt 11+r notitle, \
      ev using (strcol("kind") eq "fp" ? column("t") : NaN):(column("x") + 0.06*(hi - lo)) w p pt 11 ps 0.5 lc rgb "black" notitle
 unset object 1; unset label 1
 
@@ -46,7 +45,7 @@ set xrange [ZT_min:ZT_max]; set yrange [zlo - 0.1*(zhi - zlo):zhi + 0.15*(zhi - 
 zstep = (ZT_max - ZT_min > 2.5 ? 1 : (ZT_max - ZT_min > 1 ? 0.5 : 0.2))
 set xtics zstep format '$%.1f$'
 plot z using "t":"y" w l lw 1 dt 2 lc rgb "black" notitle, \
-     z using "t":"x":(regrgb(column("regime"))) w l lw 2 lc rgb variable notitle, \
+     for [r=0:2] z using "t":(reg(r, column("x"))) w l lt 11+r notitle, \
      ev using (column("t") >= ZT_min && column("t") <= ZT_max ? column("t") : NaN):"x" w p pt 6 ps 0.8 lw 1.2 lc rgb "black" notitle, \
      ev using (column("t") >= ZT_min && column("t") <= ZT_max ? column("t") : NaN):"x":(strcol("kind")) w labels offset 0,0.9 notitle
 
@@ -58,7 +57,7 @@ set xlabel '$x-y$'; set ylabel '$\dot x$' offset 1,0
 set autoscale xy
 set xrange [*:0.4]
 set arrow 1 from 0, graph 0 to 0, graph 1 nohead dt 3 lc rgb c_grey
-plot h using "gap":"v":(regrgb(column("regime"))) w l lw 1 lc rgb variable notitle
+plot for [r=0:2] h using "gap":(reg(r, column("v"))) w l lt 11+r lw (r == 0 ? 0.8 : 3) notitle
 unset arrow 1
 
 # ---- one key for the figure, drawn by hand at the top
@@ -68,7 +67,7 @@ set xrange [0:1]; set yrange [0:1]
 ky = 0.975
 do for [r=0:(STOPS_sum > 0 ? 2 : 1)] {
   kx = (r == 0 ? 0.06 : (r == 1 ? 0.27 : 0.47))
-  set arrow 10+r from screen kx, screen ky to screen kx + 0.035, screen ky nohead lw 2 lc rgb regrgb(r)
+  set arrow 10+r from screen kx, screen ky to screen kx + 0.035, screen ky nohead lt 11+r
   set label (10+r) (r == 0 ? '\small $x$: free flight' : (r == 1 ? '\small progression' : '\small stop')) at screen kx + 0.045, screen ky left front
 }
 set arrow 20 from screen 0.66, screen ky to screen 0.695, screen ky nohead dt 2 lc rgb "black"

@@ -32,5 +32,4 @@ set colorbox user origin screen 0.86, screen 0.15 size screen 0.02, screen 0.75
 set cblabel 'flight time $T_1(\theta)-\theta$' offset 0.5,0
 set cbrange [FL_min:FL_max]
 set cbtics ('$1$' 0, '$3$' log10(3), '$10$' 1, '$30$' log10(30), '$100$' 2, '$300$' log10(300), '$1000$' 3)
-set palette defined (0 '#440154', 1 '#3b528b', 2 '#21918c', 3 '#5ec962', 4 '#fde725')
 plot f using "impact_phase":"impact_velocity":(log10(column("flight"))) w p pt 7 ps 0.15 lc palette notitle

@@ -66,7 +66,6 @@ set cblabel 'rate$/(b/a)$' offset 0.6,0
 set format cb '$%.1f$'
 set cbtics 0.4
 set cbrange [R_min:R_max]
-set palette defined (0 '#440154', 1 '#3b528b', 2 '#21918c', 3 '#5ec962', 4 '#fde725')
 plot g using "q_over_a":(log10(column("b_over_a"))):(column("failed") == 0 ? column("rate_mean")/column("b_over_a") : NaN) w image pixels notitle, \
      g using "q_over_a":(column("relative_spread") > spread_tol ? log10(column("b_over_a")) : NaN) w p pt 7 ps 0.9 lc rgb "white" notitle, \
      g using "q_over_a":(column("relative_spread") > spread_tol ? log10(column("b_over_a")) : NaN) w p pt 6 ps 0.9 lw 1.5 lc rgb c_prog notitle

@@ -3,7 +3,7 @@
 # regime may do on each arc (our version of the paper's Fig. 2). Phases from sec3_scenarios
 # (table sec3_scenarios-phases.tsv, row b/a = 0.05, q/a = 0.85).
 load figdir."/style.gp"
-set terminal cairolatex pdf input size 11cm,7.5cm
+set terminal cairolatex pdf input size 11cm,7.5cm dashlength 2.5
 set output "fig_phase_circle.tex"
 file = data."/sec3_scenarios-phases.tsv"
 # pick the row b/a = 0.05, q/a = 0.85
@@ -28,11 +28,13 @@ do for [k=1:4] {
 }
 # arc descriptions, placed outside the middle of each arc
 mid01 = (t0+t1)/2; mid12 = (t1+t2)/2; mid23 = (t2+t3)/2; mid30 = (t3+2*pi+t0)/2
-set label '$(t_0,t_1)$: $F>q$, progression accelerates, cannot stop' at 1.3*cos(mid01),1.22*sin(mid01) center tc rgb c_prog
-set label '$[t_1,t_2)$: a stop lasts until $t_2$' at 1.2*cos(mid12),1.2*sin(mid12) right tc rgb c_stop
-set label '$[t_2,t_3)$: $F<0$, free flight starts' at 1.3*cos(mid23),1.25*sin(mid23) center tc rgb c_free
-set label '$[t_3,t_0)$: a stop lasts until $t_0$' at 1.2*cos(mid30),1.2*sin(mid30) left tc rgb c_alt
+set label '$(t_0,t_1)$: $F>q$, progression accelerates, cannot stop' at 1.3*cos(mid01),1.22*sin(mid01) center
+set label '$[t_1,t_2)$: a stop lasts until $t_2$' at 1.2*cos(mid12),1.2*sin(mid12) right
+set label '$[t_2,t_3)$: $F<0$, free flight starts' at 1.3*cos(mid23),1.25*sin(mid23) center
+set label '$[t_3,t_0)$: a stop lasts until $t_0$' at 1.2*cos(mid30),1.2*sin(mid30) left
+# arcs told apart by colour and by dash (style.gp's regimes: progression solid, stops dotted or
+# dash-dotted, free flight dashed), labels in black
 plot cos(arc(t,t0,t1)),sin(arc(t,t0,t1)) w l lw 5 lc rgb c_prog, \
-     cos(arc(t,t1,t2)),sin(arc(t,t1,t2)) w l lw 5 lc rgb c_stop, \
-     cos(arc(t,t2,t3)),sin(arc(t,t2,t3)) w l lw 5 lc rgb c_free, \
-     cos(arc(t,t3,2*pi+t0)),sin(arc(t,t3,2*pi+t0)) w l lw 5 lc rgb c_alt
+     cos(arc(t,t1,t2)),sin(arc(t,t1,t2)) w l lw 5 dt (1, 1) lc rgb c_stop, \
+     cos(arc(t,t2,t3)),sin(arc(t,t2,t3)) w l lw 5 dt (5, 2) lc rgb c_free, \
+     cos(arc(t,t3,2*pi+t0)),sin(arc(t,t3,2*pi+t0)) w l lw 5 dt (5, 2, 1, 2) lc rgb c_alt

@@ -8,7 +8,10 @@ set terminal cairolatex pdf input size 14cm,7.6cm
 set output "fig_plane.tex"
 f = data."/thm1_parameter_plane.tsv"
 # class: 0 neither, 1 covering, 2 superstable, 3 both, -1 error (header of the table)
-col0 = 0xe8e8e8; col1 = 0x6baed6; col2 = 0xfd8d3c; col3 = 0xd62728; colE = 0x000000
+# Okabe-Ito colours (style.gp), chosen to differ in lightness too: neither very light, covering sky
+# blue, t2 superstable only vermilion (it lies among the 'neither' cells), both blue (among the
+# covering cells), failed black.
+col0 = 0xe8e8e8; col1 = 0x56B4E9; col2 = 0xD55E00; col3 = 0x0072B2; colE = 0x000000
 rgbof(c) = (c == 0 ? col0 : (c == 1 ? col1 : (c == 2 ? col2 : (c == 3 ? col3 : colE))))
 red(c) = int(rgbof(c)) >> 16 & 255; green(c) = int(rgbof(c)) >> 8 & 255; blue(c) = int(rgbof(c)) & 255
 do for [c=-1:3] {
@@ -22,15 +25,18 @@ stats f using (abs(column("q_over_a") - Q_min) <= 1e-12*abs(Q_min) ? 1 : 0) name
 nb = int(NBQ_sum); nq = int(Q_records / nb + 0.5)
 dq = (Q_max - Q_min) / (nq > 1 ? nq - 1 : 1); db = (B_max - B_min) / (nb > 1 ? nb - 1 : 1)
 set lmargin at screen 0.11; set rmargin at screen 0.66; set bmargin at screen 0.15; set tmargin at screen 0.97
-set xlabel '$q/a$'; set ylabel '$b/a$' offset 0.5,0
 set xrange [Q_min - dq/2 : Q_max + dq/2]; set yrange [B_min - db/2 : B_max + db/2]
-set xtics 0.05 format '$%.2f$'
-set ytics ('$10^{-4}$' -4, '$10^{-3}$' -3, '$10^{-2}$' -2, '$10^{-1}$' -1)
-set mytics 10
+eval plane_axes
 set grid front lc rgb "#ffffff" lw 0.5
 set key at screen 0.68, screen 0.93 left top reverse Left samplen 1 spacing 1.4 nobox
 set style fill solid 1.0 border lc rgb "#404040"
+# the superstable classes (and failed cells) lie on lines one cell high: drawn `big` cells high
+# over the image so that they can be seen (the key counts the cells themselves)
+big = 3
 plot f using "q_over_a":(log10(column("b_over_a"))):(red(column("class"))):(green(column("class"))):(blue(column("class"))) with rgbimage pixels notitle, \
+     f using "q_over_a":(column("class") == 2 || column("class") == 3 ? log10(column("b_over_a")) : NaN):(dq/2):(big*db/2):(rgbof(column("class"))) \
+       w boxxyerror fs solid 1.0 noborder lc rgb variable notitle, \
+     f using "q_over_a":(column("class") == -1 ? log10(column("b_over_a")) : NaN):(big*dq/2):(big*db/2) w boxxyerror fs solid 1.0 noborder lc rgb "black" notitle, \
      NaN w boxes lc rgb sprintf("#%06x", col1) title sprintf('covering of Lemma~4 (%d)', n2), \
      NaN w boxes lc rgb sprintf("#%06x", col2) title sprintf('$t_2$ superstable only (%d)', n3), \
      NaN w boxes lc rgb sprintf("#%06x", col3) title sprintf('both (%d)', n4), \

@@ -3,14 +3,17 @@
 # eps, computed by integrating the perturbed equations of motion. The covering asks each branch to
 # run from the perturbed stop release t2^eps (dashed, one per eps, from sec10_robustness.tsv) up
 # past 3 pi/2 (dotted). The t2^eps differ by less than 0.01: the inset of each panel magnifies the
-# end of the branches, where each lands on its own t2^eps. One key for the figure, above the panels.
+# end of the branches, where each lands on its own t2^eps; its tick labels clear of the t2 lines.
+# Each eps has its Okabe-Ito colour and its marker. One key for the figure, above the panels.
 load figdir."/style.gp"
 set terminal cairolatex pdf input size 15cm,7.2cm
 set output "fig_robustness.tex"
 f = data."/sec10_robustness-graph.tsv"
 tab = data."/sec10_robustness.tsv"
 eps_list = "0 0.001 0.01"
-ecol(k) = (k == 1 ? "#000000" : (k == 2 ? "#e6550d" : "#756bb1"))
+ecol(k) = (k == 1 ? oi_black : (k == 2 ? oi_orange : oi_blue))
+# and a marker per eps (circle, square, triangle), so that the curves and the key read in greyscale
+ept(k) = (k == 1 ? 7 : (k == 2 ? 5 : 9))
 sel(s, e) = (column("segment") == s && abs(column("eps") - real(e)) < 1e-15)
 # t2^eps per eps, and the theta range of each segment (stats obeys ranges: before any is set)
 do for [k=1:3] {
@@ -38,11 +41,11 @@ do for [s=0:1] {
   # the box that the inset magnifies
   ilo = (s == 0 ? 3.578 : 3.699); ihi = (s == 0 ? 3.602 : 3.734)
   set object 1 rect from ilo, 3.156 to ihi, 3.172 fs empty border lc rgb "black" lw 0.6 front
-  plot for [k=1:3] f using (sel(s, word(eps_list, k)) ? column("theta") : NaN):"T_eps" w p pt 7 ps 0.12 lc rgb ecol(k) notitle
+  plot for [k=1:3] f using (sel(s, word(eps_list, k)) ? column("theta") : NaN):"T_eps" w p pt ept(k) ps 0.12 lc rgb ecol(k) notitle
   unset object 1
   # inset: the landing of each branch on its t2^eps
   set lmargin at screen (s == 0 ? 0.15 : 0.645); set rmargin at screen (s == 0 ? 0.295 : 0.79)
-  set bmargin at screen 0.25; set tmargin at screen 0.48
+  set bmargin at screen 0.29; set tmargin at screen 0.5
   unset title; unset xlabel; unset ylabel
   set xrange [ilo:ihi]; set yrange [3.156:3.172]
   set xtics 0.02 format '\scriptsize $%.2f$' scale 0.4
@@ -50,7 +53,7 @@ do for [s=0:1] {
   set mxtics 2
   set object 2 rect from graph 0, graph 0 to graph 1, graph 1 fc rgb "white" fs solid 1.0 noborder behind
   unset arrow 1
-  plot for [k=1:3] f using (sel(s, word(eps_list, k)) ? column("theta") : NaN):"T_eps" w lp pt 7 ps 0.25 lw 0.6 lc rgb ecol(k) notitle
+  plot for [k=1:3] f using (sel(s, word(eps_list, k)) ? column("theta") : NaN):"T_eps" w lp pt ept(k) ps 0.45 lw 0.6 lc rgb ecol(k) notitle
   unset object 2
   set format x '$%.2f$'; set format y '$%.1f$'; set tics scale 0.6
   do for [k=1:3] { unset arrow 1+k }
@@ -63,8 +66,7 @@ set xrange [0:1]; set yrange [0:1]
 ky = 0.955
 do for [k=1:3] {
   kx = 0.06 + (k-1)*0.14
-  set object 10+k circle at screen kx, screen ky size screen 0.005 fc rgb ecol(k) fs solid noborder front
-  set label 10+k sprintf('$\varepsilon=%s$', word(eps_list, k)) at screen kx + 0.015, screen ky left front
+  set label 10+k sprintf('$\varepsilon=%s$', word(eps_list, k)) at screen kx, screen ky left front point pt ept(k) ps 0.8 lc rgb ecol(k) offset 0.8,0
 }
 set arrow 20 from screen 0.47, screen ky to screen 0.51, screen ky nohead dt 2 lc rgb "black"
 set label 20 '$t_2^\varepsilon$ (in the colour of its $\varepsilon$)' at screen 0.52, screen ky left front

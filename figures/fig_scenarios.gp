@@ -2,18 +2,18 @@
 # Figure: time histories x(t) (mass) and y(t) (delimiter) of one simulated motion per scenario
 # of Section 3, from rest at the delimiter at the phase theta; from sec3_scenarios (full
 # event-driven simulator, sampled on a regular grid of 3000 steps per history).
-#  - x coloured by regime (blue free flight, red progression, green stop), y dashed;
+#  - x drawn by regime (style.gp: free flight thin, progression thick, stop dotted), y dashed;
 #  - a regime bar under the data of each panel: the regime at every sample;
 #  - open circles at the switching instants, at the first sample of each new regime (within one
 #    sample step of the event);
 #  - the chain of regimes read off the data (f = free, p = progression, s = stop) in each panel;
-#  - an inset magnifying the shortest contact phase: the contact of A and B (1 to 2 time units
-#    after a flight of about 100), and the stop between the two progressions of C and D (a few
-#    thousandths of a time unit).
+#  - an inset magnifying the shortest contact phase: the contact of A (1 to 2 time units after a
+#    flight of about 100), the stop that ends the progression of B, and the stop between the two
+#    progressions of C and D (a few thousandths of a time unit); the inset's white ground covers its
+#    tick labels too, so that they do not sit on the curves of the panel.
 load figdir."/style.gp"
 set terminal cairolatex pdf input size 15cm,16cm
 set output "fig_scenarios.tex"
-regrgb(r) = (r == 0 ? 0x1f77b4 : (r == 1 ? 0xd62728 : 0x2ca02c))
 code(r) = (r == 0 ? "f" : (r == 1 ? "p" : "s"))
 names = "A B C D Cprime Dprime"
 # switch(r): 1 at the first sample of a new regime (not at the first sample of the file)
@@ -43,7 +43,17 @@ do for [k=1:6] {
                  last_t = t, 0) nooutput
   # the window of the inset: A, B the contact; C, D the shortest stop; none for C', D'
   inset = (s eq "A" || s eq "B" || s eq "C" || s eq "D")
-  if (s eq "A" || s eq "B") { w_lo = c_lo - 0.3*(c_hi - c_lo); w_hi = c_hi + 0.3*(c_hi - c_lo) }
+  if (s eq "A") { w_lo = c_lo - 0.3*(c_hi - c_lo); w_hi = c_hi + 0.3*(c_hi - c_lo) }
+  # B: its stop (from the end of the progression in [t1, t2) to the next t2) is shorter than one
+  # sampling step, so the inset shows the last samples of the progression, the one stopped sample
+  # and, dotted, the instant t2 = pi + asin(2b/a) at which the stop ends (phase theta and b/a from
+  # the file's header).
+  if (s eq "B") {
+    hdr = system("sed -n 's/^# scenario B: a=\\([^ ]*\\) b=\\([^ ]*\\) q=[^ ]* theta=\\(.*\\)$/\\1 \\2 \\3/p' '".f."'")
+    B_t2 = pi + asin(2*real(word(hdr, 2))/real(word(hdr, 1))); B_theta = real(word(hdr, 3))
+    B_end = s_lo + (B_t2 - (B_theta + s_lo)) - 2*pi*floor((B_t2 - (B_theta + s_lo))/(2*pi))
+    w_lo = s_lo - 10*(B_end - s_lo); w_hi = B_end + 6*(B_end - s_lo)
+  }
   if (s eq "C" || s eq "D") { w_lo = s_lo - 4*(s_hi - s_lo) - 0.002; w_hi = s_hi + 4*(s_hi - s_lo) + 0.002 }
   if (inset) {
     stats f using (column("t_minus_start") >= w_lo && column("t_minus_start") <= w_hi ? column("x") : NaN) name "WX" nooutput
@@ -65,31 +75,38 @@ do for [k=1:6] {
   set label 1 sprintf('\small scenario %s: %s', nm, chain) at graph 0.02, graph 0.93 left front
   if (inset) { set object 1 rect from w_lo, WX_min to w_hi, WX_max fs empty border lc rgb "black" lw 0.6 front }
   plot f using "t_minus_start":"y" w l lw 1 dt 2 lc rgb "black" notitle, \
-       f using "t_minus_start":"x":(regrgb(column("regime"))) w l lw 2 lc rgb variable notitle, \
-       f using "t_minus_start":(bar):(regrgb(column("regime"))) w l lw 5 lc rgb variable notitle, \
+       for [r=0:2] f using "t_minus_start":(reg(r, column("x"))) w l lt 11+r notitle, \
+       for [r=0:2] f using "t_minus_start":(reg(r, bar)) w l lt 11+r lw (r == 0 ? 1.5 : 5) notitle, \
        f using (switch(column("regime")) ? column("t_minus_start") : NaN):"x" w p pt 6 ps 0.55 lw 1 lc rgb "black" notitle
   unset label 1; unset label 3; unset object 1
 
   # --- the inset, in the part of the panel the motion leaves empty
   if (inset) {
-    ix = (s eq "D" ? 0.06 : 0.3); iy = (s eq "C" ? 0.3 : (s eq "D" ? 0.45 : 0.42))
-    set lmargin at screen px0(k) + (ix + 0.04)*pw; set rmargin at screen px0(k) + (ix + 0.36)*pw
+    ix = (s eq "D" ? 0.04 : 0.28); iy = (s eq "C" ? 0.3 : (s eq "D" ? 0.45 : 0.42))
+    set lmargin at screen px0(k) + (ix + 0.04)*pw; set rmargin at screen px0(k) + (ix + 0.44)*pw
     set bmargin at screen py0(k) + iy*ph; set tmargin at screen py0(k) + (iy + 0.38)*ph
     unset xlabel; unset ylabel
     set xrange [w_lo:w_hi]
     wspan = WX_max - WX_min; wspan = (wspan > 0 ? wspan : 1e-9)
-    set yrange [WX_min - 0.35*wspan : WX_max + 0.25*wspan]
-    set xtics (sprintf('\scriptsize $%.4g$', w_lo + 0.1*(w_hi - w_lo)) w_lo + 0.1*(w_hi - w_lo), \
-               sprintf('\scriptsize $%.4g$', w_hi - 0.1*(w_hi - w_lo)) w_hi - 0.1*(w_hi - w_lo)) scale 0.4
+    set yrange [WX_min - 0.35*wspan : WX_max + 0.6*wspan]
+    # the window's two marked instants written inside the inset, above the motion (tick labels
+    # below it would sit on the curves of the panel)
+    i_a = w_lo + 0.1*(w_hi - w_lo); i_b = w_hi - 0.1*(w_hi - w_lo)
+    set xtics (i_a, i_b) format "" scale 0.4
+    set label 6 sprintf('\scriptsize $%.4g$, $%.4g$', i_a, i_b) at graph 0.5, graph 0.88 center front
     unset ytics
     set object 2 rect from graph 0, graph 0 to graph 1, graph 1 fc rgb "white" fs solid 1.0 noborder behind
     ibar = WX_min - 0.22*wspan
+    if (s eq "B") {
+      set arrow 5 from B_end, graph 0 to B_end, graph 1 nohead dt 3 lw 1 lc rgb c_stop front
+      set label 5 '\scriptsize $t_2$' at B_end, graph 0.42 left offset 0.3,0 front
+    }
     plot f using "t_minus_start":"y" w l lw 1 dt 2 lc rgb "black" notitle, \
-         f using "t_minus_start":"x":(regrgb(column("regime"))) w l lw 2 lc rgb variable notitle, \
-         f using "t_minus_start":(ibar):(regrgb(column("regime"))) w l lw 5 lc rgb variable notitle, \
+         for [r=0:2] f using "t_minus_start":(reg(r, column("x"))) w l lt 11+r notitle, \
+         for [r=0:2] f using "t_minus_start":(reg(r, ibar)) w l lt 11+r lw (r == 0 ? 1.5 : 5) notitle, \
          f using (switch(column("regime")) ? column("t_minus_start") : NaN):"x" w p pt 6 ps 0.55 lw 1 lc rgb "black" notitle
-    unset object 2
-    set tics scale 0.6
+    unset object 2; unset arrow 5; unset label 5; unset label 6
+    set tics scale 0.6; set xtics format '$%g$'
   }
 }
 # one key for the figure, drawn by hand in a strip above the panels
@@ -99,7 +116,7 @@ set xrange [0:1]; set yrange [0:1]
 ky = 0.975
 do for [r=0:2] {
   kx = (r == 0 ? 0.01 : (r == 1 ? 0.25 : 0.47))
-  set arrow 10+r from screen kx, screen ky to screen kx + 0.035, screen ky nohead lw 2 lc rgb regrgb(r)
+  set arrow 10+r from screen kx, screen ky to screen kx + 0.035, screen ky nohead lt 11+r
   set label (10+r) (r == 0 ? '\small $x$: free flight (f)' : (r == 1 ? '\small progression (p)' : '\small stop (s)')) at screen kx + 0.045, screen ky left front
 }
 set arrow 20 from screen 0.62, screen ky to screen 0.655, screen ky nohead dt 2 lc rgb "black"

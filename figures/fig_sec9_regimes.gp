@@ -1,13 +1,12 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # Figure: the Remark of Section 9 by the full simulator (sec9_regimes): one time history per case,
-# position of the mass x (coloured by regime: blue free, red progression, green stop) and of the
+# position of the mass x (drawn by regime, style.gp: free thin, progression thick, stop dotted) and of the
 # delimiter y (dashed black). Each panel names its case and its parameters (read from the table
 # sec9_regimes.tsv); one key for the whole figure, above the panels.
 load figdir."/style.gp"
 set terminal cairolatex pdf input size 15cm,13cm
 set output "fig_sec9_regimes.tex"
 tab = data."/sec9_regimes.tsv"
-rgb(r) = (r == 0 ? 0x1f77b4 : (r == 1 ? 0xd62728 : 0x2ca02c))
 cases = "stop progression between-high between-low b-large-q-small reference"
 # the parameters of each case (stats obeys ranges: read them before any range is set)
 do for [k=1:words(cases)] {
@@ -35,13 +34,19 @@ do for [k=1:words(cases)] {
   # the permanently stopped case is a constant: give it a range of its own
   if (c eq "stop") { set yrange [-0.5:0.5] } else { set autoscale y }
   plot f using "t":"y" with lines lw 1 dt 2 lc rgb "black" notitle, \
-       f using "t":"x":(rgb(column("regime"))) with lines lw 2 lc rgb variable notitle
+       for [r=0:2] f using "t":(reg(r, column("x"))) with lines lt 11+r notitle
 }
-# one key for the whole figure, in a strip of its own above the panels
-set lmargin at screen 0.05; set rmargin at screen 0.95; set bmargin at screen 0.955; set tmargin at screen 0.995
+# one key for the whole figure, drawn by hand in one row above the panels
+set lmargin at screen 0; set rmargin at screen 1; set bmargin at screen 0; set tmargin at screen 1
 unset border; unset tics; unset xlabel; unset ylabel; unset title; unset grid
 set xrange [0:1]; set yrange [0:1]
-set key at screen 0.5, screen 0.975 center center horizontal samplen 2 spacing 1 width -2 maxrows 1 nobox
-plot NaN w l lw 2 lc rgb c_free title 'mass $x$: free flight', NaN w l lw 2 lc rgb c_prog title 'progression', \
-     NaN w l lw 2 lc rgb c_stop title 'stop', NaN w l lw 1 dt 2 lc rgb "black" title 'delimiter $y$'
+ky = 0.975
+do for [r=0:2] {
+  kx = (r == 0 ? 0.06 : (r == 1 ? 0.34 : 0.54))
+  set arrow 10+r from screen kx, screen ky to screen kx + 0.035, screen ky nohead lt 11+r
+  set label (10+r) (r == 0 ? '\small mass $x$: free flight' : (r == 1 ? '\small progression' : '\small stop')) at screen kx + 0.045, screen ky left front
+}
+set arrow 20 from screen 0.7, screen ky to screen 0.735, screen ky nohead dt 2 lc rgb "black"
+set label 20 '\small delimiter $y$' at screen 0.745, screen ky left front
+plot NaN notitle
 unset multiplot

@@ -2,10 +2,14 @@
 # Figure: numerical thresholds b0(q) of Lemma 1 and Lemma 4 against q/a.
 # Left (lemma1_progression_stop): the largest b/a below which progression from rest at t0 stops in
 # [t1, t2], and the same for the proof's sufficient bound (Eq. 9); both bisected between grid
-# points, so drawn as curves. Where q/a < sin(vartheta0) assumption (2) fails (shaded).
+# points, so drawn as curves; over them the closed form (q/a - sin(vartheta0))/2 of the proof's
+# bound and the certified lower bounds of b0 at single q/a (certified_claims-b0.tsv, proved ones
+# only): the three b0 thresholds of Lemma 1 in one panel. Where q/a < sin(vartheta0) assumption (2)
+# fails (shaded).
 # Right (lemma4_coverage): the (q/a, b/a) grid itself, every point marked by what holds there: the
 # covering (b) found, and the paper's construction (a) going through. The thresholds of this panel
-# are grid values (not bisected): b0 is the last grid point of an unbroken column, drawn as steps.
+# are grid values (not bisected): b0 is the last grid point of an unbroken column, drawn as steps;
+# beside them the band where certified_region proves the covering for every parameter of its boxes.
 load figdir."/style.gp"
 set terminal cairolatex pdf input size 15cm,7cm
 set output "fig_thresholds.tex"
@@ -28,10 +32,13 @@ set yrange [1e-4:1]
 set object 1 rect from graph 0, graph 0 to first s0, graph 1 fc rgb "#d9d9d9" fs solid 0.5 noborder back
 set label 1 '\footnotesize (2) fails' at first (0.6+s0)/2, graph 0.5 center front
 set label 2 '$\sin\vartheta_0$' at first s0, graph 0.92 left offset 0.4,0
-set key bottom right samplen 2 spacing 1.1 box opaque
+set key bottom right samplen 2 spacing 1.05 box opaque width -2
 f1 = data."/lemma1_progression_stop.tsv"
-plot f1 using "q_over_a":(column("b0_lemma1") > 0 ? column("b0_lemma1") : NaN) w l lw 2 lc rgb c_free title 'computed $b_0$', \
-     f1 using "q_over_a":(column("b0_proof_bound") > 0 ? column("b0_proof_bound") : NaN) w l lw 2 dt 2 lc rgb c_prog title "proof's bound (9)"
+fb = data."/certified_claims-b0.tsv"
+plot f1 using "q_over_a":(column("b0_lemma1") > 0 ? column("b0_lemma1") : NaN) w l lw 2 lc rgb c_free title '\footnotesize computed $b_0$', \
+     f1 using "q_over_a":(column("b0_proof_bound") > 0 ? column("b0_proof_bound") : NaN) w l lw 2 dt 2 lc rgb c_prog title "\\footnotesize bound (9)", \
+     [s0:1] (x - s0)/2 w l lw 0.8 dt 3 lc rgb "black" title '\footnotesize $(q-\sin\vartheta_0)/2$', \
+     fb using "q_over_a":(column("proved") == 1 ? column("b0_lower_bound") : NaN) w p pt 4 ps 0.8 lw 1.5 lc rgb "black" title '\footnotesize certified'
 unset object 1; unset label 1; unset label 2
 
 # ---- Lemma 4, on its grid
@@ -40,7 +47,11 @@ set label 90 '$b_0/a$' at screen 0.475, graph 0.5 rotate center
 set title 'Lemma 4 on the grid'
 f4 = data."/lemma4_coverage.tsv"
 g4 = data."/lemma4_coverage-grid.tsv"
+# Lemma 4 proved for every parameter of boxes (certified_region): per column of q/a, from the band's
+# lower edge up to the b/a its boxes reached
+fc = data."/certified_region-columns.tsv"
 set autoscale xy
+stats data."/certified_region.tsv" using "b_lo" name "RB" nooutput
 stats g4 using "b_over_a" name "B" nooutput
 stats f4 using "q_over_a" name "NQ" nooutput
 dq = (NQ_max - NQ_min) / (NQ_records - 1)
@@ -56,5 +67,7 @@ plot g4 using "q_over_a":(column("covering_holds") == 0 && column("literal_all")
      f4 using "q_over_a":(column("b0_covering") > 0 ? column("b0_covering") : NaN):(column("q_over_a")-dq/2):(column("q_over_a")+dq/2) \
         w xerrorbars pt -1 lw 2 lc rgb c_free title '$b_0$ of (b)', \
      f4 using "q_over_a":(column("b0_literal") > 0 ? column("b0_literal") : NaN):(column("q_over_a")-dq/2):(column("q_over_a")+dq/2) \
-        w xerrorbars pt -1 lw 2 dt 2 lc rgb c_prog title '$b_0$ of (a)'
+        w xerrorbars pt -1 lw 2 dt 2 lc rgb c_prog title '$b_0$ of (a)', \
+     fc using (0.5*(column("q_lo") + column("q_hi"))):(column("b_reached") > RB_min ? sqrt(RB_min*column("b_reached")) : NaN):"q_lo":"q_hi":(RB_min):"b_reached" \
+        w boxxyerror fs solid 1.0 border lc rgb c_stop lw 3 fc rgb c_stop title 'proved boxes'
 unset multiplot

@@ -1,14 +1,32 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
-# Figure: superstable windows of Theorem 2 at q/a = 0.85 (thm2_superstable): each window of b/a
-# where (21) or (22) holds, drawn at its epsilon (the width of [t2, t2 + epsilon) sent to t2).
+# Figure: superstable windows of Theorem 2 at q/a = 0.85 (thm2_superstable): each piece of b/a
+# where (21) or (22) holds. The pieces are far narrower than a marker on a b/a axis, so instead of
+# bars their width is drawn as a quantity: (a) epsilon at the piece's middle (the width of
+# [t2, t2 + epsilon) sent to t2); (b) the piece's relative width (b_hi - b_lo)/b_mid, same b/a axis.
+# Conditions told apart by colour and marker (filled circle: (21); open square: (22)).
 load figdir."/style.gp"
-set terminal cairolatex pdf input size 14cm,6.5cm
+set terminal cairolatex pdf input size 14cm,9.5cm
 set output "fig_windows.tex"
-set logscale xy
-set format x '$10^{%T}$'; set format y '$10^{%T}$'
-set xlabel '$b/a$'; set ylabel '$\varepsilon$ at the window middle'
-set key top left box opaque
 f = data."/thm2_superstable-windows.tsv"
 sel(c) = (abs(column("q_over_a") - 0.85) < 1e-12 && column("condition") == c)
-plot f using (sel(21) ? column("b_mid") : NaN):"epsilon_mid":"b_lo":"b_hi" w xerrorbars pt 7 ps 0.35 lc rgb c_stop title 'condition (21)', \
-     f using (sel(22) ? column("b_mid") : NaN):"epsilon_mid":"b_lo":"b_hi" w xerrorbars pt 5 ps 0.35 lc rgb c_alt title 'condition (22)'
+set multiplot
+set logscale xy
+set format x '$10^{%T}$'; set format y '$10^{%T}$'
+set lmargin at screen 0.12; set rmargin at screen 0.97
+# ---- (a) epsilon
+set bmargin at screen 0.585; set tmargin at screen 0.97
+set format x ''; unset xlabel
+set ylabel '$\varepsilon$ at the middle'
+set label 1 '(a)' at graph 0.97, graph 0.1 right front
+set key top left box opaque
+plot f using (sel(21) ? column("b_mid") : NaN):"epsilon_mid" w p pt 7 ps 0.4 lc rgb c_stop title 'condition (21)', \
+     f using (sel(22) ? column("b_mid") : NaN):"epsilon_mid" w p pt 4 ps 0.45 lw 1.5 lc rgb c_alt title 'condition (22)'
+# ---- (b) relative width
+set bmargin at screen 0.12; set tmargin at screen 0.505
+set format x '$10^{%T}$'; set xlabel '$b/a$'
+set ylabel 'relative width $\frac{b_{\mathrm{hi}}-b_{\mathrm{lo}}}{b_{\mathrm{mid}}}$'
+set label 1 '(b)' at graph 0.97, graph 0.1 right front
+unset key
+plot f using (sel(21) ? column("b_mid") : NaN):((column("b_hi") - column("b_lo"))/column("b_mid")) w p pt 7 ps 0.4 lc rgb c_stop, \
+     f using (sel(22) ? column("b_mid") : NaN):((column("b_hi") - column("b_lo"))/column("b_mid")) w p pt 4 ps 0.45 lw 1.5 lc rgb c_alt
+unset multiplot
