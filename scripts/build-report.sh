@@ -53,11 +53,14 @@ if awk '/^Overfull \\hbox \(/ { w = $3; sub(/^\(/, "", w); sub(/pt$/, "", w); if
   exit 1
 fi
 # Every claim is in the PDF; no nan, inf or unresolved reference (??) reached it; the main text
-# (before the appendices) stays within 30 pages.
+# (before the appendices) and the whole report stay within the limits below.
 pdftotext -layout "$out/report.pdf" "$out/report.txt"
 python3 - "$abs" "$out" <<'PY'
 import glob, json, re, subprocess, sys
 build, out = sys.argv[1], sys.argv[2]
+# The report's length. A referee asked for a main text of at most 24 pages and 32 in all; we are at
+# 25 and 34 (docs/architecture.md says what was cut and what is left): these limits stop it growing.
+MAX_MAIN, MAX_TOTAL = 25, 34
 text = open(out + "/report.txt", encoding="utf-8", errors="replace").read()
 flat = re.sub(r"\s+", "", text)
 ids = [c["id"] for f in sorted(glob.glob(build + "/claims/*.json")) for c in json.load(open(f))["claims"]]
@@ -96,8 +99,12 @@ aux = open(out + "/report.aux").read()
 m = re.search(r"\\newlabel\{app:start\}\{\{[^}]*\}\{(\d+)\}", aux)
 if not m:
     problems.append("no label app:start at the appendices")
-elif int(m.group(1)) - 1 > 30:
-    problems.append(f"the main text runs to page {int(m.group(1)) - 1} (at most 30)")
+elif int(m.group(1)) - 1 > MAX_MAIN:
+    problems.append(f"the main text runs to page {int(m.group(1)) - 1} (at most {MAX_MAIN}; docs/architecture.md, the report's length)")
+pages = int(re.search(r"^Pages:\s+(\d+)", subprocess.run(["pdfinfo", out + "/report.pdf"], capture_output=True, text=True,
+                                                           check=True).stdout, re.M).group(1))
+if pages > MAX_TOTAL:
+    problems.append(f"the report has {pages} pages (at most {MAX_TOTAL}; docs/architecture.md, the report's length)")
 # The title page names the version and the git hash of the build (tables/build-info.tex).
 info = dict(re.findall(r"\\dfcbuildrow\{([^}]*)\}\{([^}]*)\}", open(build + "/tables/build-info.tex").read()))
 title_page = re.sub(r"\s+", "", text.split("\f")[0])
