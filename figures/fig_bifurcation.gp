@@ -7,7 +7,7 @@
 # resolves (a superstable cycle through t2: column t2_cycle_resolved) with a second marker; a
 # computed return that it does not resolve (a cycle of the rounding) keeps the first marker. Where q/a < sin(vartheta0) assumption (2) fails: shaded.
 load figdir."/style.gp"
-set terminal cairolatex pdf input size 15cm,11.5cm
+set terminal cairolatex pdf input size 15cm,10cm
 set output "fig_bifurcation.tex"
 orb = data."/bifurcation_diagram-orbits.tsv"
 lya = data."/bifurcation_diagram-lyapunov.tsv"

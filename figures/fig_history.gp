@@ -7,7 +7,7 @@
 # (c) the phase portrait: velocity of the mass against its distance to the delimiter, x - y <= 0;
 #     a progression runs along x - y = 0.
 load figdir."/style.gp"
-set terminal cairolatex pdf input size 15cm,11cm
+set terminal cairolatex pdf input size 15cm,9.5cm
 set output "fig_history.tex"
 h = data."/dynamics_gallery-history.tsv"
 z = data."/dynamics_gallery-history-zoom.tsv"

@@ -16,7 +16,7 @@
 # (cross); not reached by a proof (no two candidate segments); failed or inadmissible.
 # Axes: the convention of the plane figures (plane_axes, style.gp).
 load figdir."/style.gp"
-set terminal cairolatex pdf input size 14cm,9.2cm
+set terminal cairolatex pdf input size 14cm,8cm
 set output "fig_plane_certified.tex"
 f = data."/plane_certified.tsv"
 s0 = sin_vartheta0   # Eq. (1), from eq1_vartheta0 (style.gp)

@@ -12,7 +12,7 @@
 #    progressions of C and D (a few thousandths of a time unit); the inset's white ground covers its
 #    tick labels too, so that they do not sit on the curves of the panel.
 load figdir."/style.gp"
-set terminal cairolatex pdf input size 15cm,16cm
+set terminal cairolatex pdf input size 15cm,13.5cm
 set output "fig_scenarios.tex"
 code(r) = (r == 0 ? "f" : (r == 1 ? "p" : "s"))
 names = "A B C D Cprime Dprime"

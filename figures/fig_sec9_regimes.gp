@@ -4,7 +4,7 @@
 # delimiter y (dashed black). Each panel names its case and its parameters (read from the table
 # sec9_regimes.tsv); one key for the whole figure, above the panels.
 load figdir."/style.gp"
-set terminal cairolatex pdf input size 15cm,13cm
+set terminal cairolatex pdf input size 15cm,11cm
 set output "fig_sec9_regimes.tex"
 tab = data."/sec9_regimes.tsv"
 cases = "stop progression between-high between-low b-large-q-small reference"

@@ -5,7 +5,7 @@
 # [t2, t2 + epsilon) sent to t2); (b) the piece's relative width (b_hi - b_lo)/b_mid, same b/a axis.
 # Conditions told apart by colour and marker (filled circle: (21); open square: (22)).
 load figdir."/style.gp"
-set terminal cairolatex pdf input size 14cm,9.5cm
+set terminal cairolatex pdf input size 14cm,8cm
 set output "fig_windows.tex"
 f = data."/thm2_superstable-windows.tsv"
 sel(c) = (abs(column("q_over_a") - 0.85) < 1e-12 && column("condition") == c)
