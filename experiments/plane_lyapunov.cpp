@@ -173,6 +173,7 @@ const Experiment experiment{
       run.out.macro("LyapStopResolved", std::to_string(n_resolved));
       run.out.macro("LyapStopUnresolvedReturn", std::to_string(n_unresolved_return));
       run.out.macro("LyapCycleMaxPeriod", std::to_string(kCycleMaxPeriod));
+      run.out.macro("LyapLostAt", latex_number(dfchaos::format_shortest(kStopCycleLostAt)));
       run.out.macro("LyapUnresolvedNudgedSame", std::to_string(n_unresolved_nudged_same));
       run.out.macro("LyapResolvedNudgedSame", std::to_string(n_resolved_nudged_same));
       run.out.macro("LyapStopNotTTwo", std::to_string(n_not_t2));
@@ -188,7 +189,8 @@ const Experiment experiment{
           cells += std::string(i ? (i + 1 == shown && shown == against_at.size() ? " and " : ", ") : "") + "$(" +
                    dfchaos::format_shortest(against_at[i].first) + ", " + latex_number(dfchaos::format_shortest(against_at[i].second)) + ")$";
         if (against_at.size() > shown) cells += " and " + std::to_string(against_at.size() - shown) + " more";
-        run.out.macro("LyapStopCounterexampleCells", cells.empty() ? std::string("none") : cells);
+        // the phrase that follows the count in the report: where they are, or nothing when there are none
+        run.out.macro("LyapStopCounterexampleCells", cells.empty() ? std::string() : ", at $(q/a,b/a)={}$" + cells);
       }
       run.out.macro("LyapNudge", kNudge, 1);
       run.out.macro("LyapNonpositive", std::to_string(n_neg));

@@ -64,7 +64,9 @@ def tex_args(line, n):
     return args
 
 
-NUMBER = re.compile(r"(?<![\w.])\d+(?:\.\d+)?(?:e[-+]?\d+)?(?!\w)")
+# A number standing alone: not part of a word, a fraction, a power, an exponent or a range (so
+# 3pi/2, 2^10, 1E-3 and sec4-2 are words, not numbers that may differ between variants).
+NUMBER = re.compile(r"(?<![\w.\-/^{}])\d+(?:\.\d+)?(?:e[-+]?\d+)?(?![\w/^}]|\.\d|-\d)")
 
 
 def variant(cid):
@@ -74,12 +76,14 @@ def variant(cid):
     return (m.group(1), m.group(2)) if m else (cid, None)
 
 
-def grouped_claim_rows(rows):
+def grouped_claim_rows(rows, parameters=None):
     """Claims of one family (same id but for the variant) whose statements differ only in numbers,
     with the same reference, verdict, kind and origin, become one row: the first statement, each
-    number that differs followed by the others' values in brackets ([B: 0.003; D: 5e-05]). Rows are
+    number that differs followed by the others' values in brackets ([B: 0.003; D: 5e-05]), after the
+    parameters of each variant (parameters: id -> "q=0.85, b=0.001", when known). Rows are
     (id, reference, statement, verdict, kind, origin); returns (label, first id, reference, statement,
     verdict, kind, origin), order kept."""
+    parameters = parameters or {}
     out, used = [], set()
     for i, r in enumerate(rows):
         if i in used:
@@ -104,18 +108,21 @@ def grouped_claim_rows(rows):
             if k < len(nums[0]):
                 others = [f"{variant(rows[j][0])[1]}: {nums[g][k]}" for g, j in enumerate(group) if g and nums[g][k] != nums[0][k]]
                 pieces.append(nums[0][k] + (" [" + "; ".join(others) + "]" if others else ""))
-        label = fam + "{" + ",".join(variant(rows[j][0])[1] for j in group) + "}"
-        first = variant(r[0])[1]
-        out.append((label, r[0], r[1], f"[{first}; " + ", ".join(variant(rows[j][0])[1] for j in group[1:]) +
-                    " in brackets] " + "".join(pieces), r[3], r[4], r[5]))
+        names = [variant(rows[j][0])[1] for j in group]
+        label = fam + "{" + ",".join(names) + "}"
+        at = "; ".join(f"{n}: {parameters[rows[j][0]]}" for n, j in zip(names, group) if parameters.get(rows[j][0]))
+        differ = any(nums[g][k] != nums[0][k] for g in range(1, len(group)) for k in range(len(nums[0])))
+        head = (f"[{at}] " if at else "") + (f"[{names[0]}; " + ", ".join(names[1:]) + " in brackets] " if differ else
+                                             f"[{', '.join(names)}: the same statement; their numbers are in their claims files] ")
+        out.append((label, r[0], r[1], head + "".join(pieces), r[3], r[4], r[5]))
     return out
 
 
 # The statements are plain text written by the experiments (escaped for LaTeX by the kit): the
 # mathematics in them is typeset here, by a few conservative rules on whole words, so that the PDF
 # shows t_2, 3pi/2, J_0, >= as mathematics. A word no rule knows is left as it was.
-_W = r"(?<![\w\\])"   # not inside a word or a command
-_E = r"(?![\w\\])"    # the end of a word
+_W = r"(?<![\w\\.$])"   # not inside a word, a number, a command or after an escaped dollar
+_E = r"(?![\w\\-])"      # the end of a word, not joined to the next by a hyphen
 _TYPESET = [  # (pattern, replacement as for re.sub: group references \1, LaTeX backslashes doubled)
     (r"\(0\\textasciicircum\{\}\(m-1\)1\)\\textasciicircum\{\}infinity", r"$(0^{m-1}1)^\\infty$"),
     (r"\$>\$=", r"$\\ge$"), (r"\$<\$=", r"$\\le$"), (r"!=", r"$\\ne$"), (r"-\$>\$", r"$\\to$"),
@@ -124,7 +131,7 @@ _TYPESET = [  # (pattern, replacement as for re.sub: group references \1, LaTeX 
     (_W + r"eps\\_b" + _E, r"$\\varepsilon_b$"), (_W + r"(?:epsilon|eps)" + _E, r"$\\varepsilon$"),
     (_W + r"delta" + _E, r"$\\delta$"), (_W + r"lambda" + _E, r"$\\lambda$"),
     (_W + r"h\\_top" + _E, r"$h_{\\mathrm{top}}$"),
-    (_W + r"([tTJKLGzb])(?:\\_)?(\d|[ik])" + _E, r"$\1_\2$"),
+    (_W + r"([tTJKLGzb])(?:\\_)?(\d|[ik])" + _E + r"(?! distance)", r"$\1_\2$"),  # L1 distance is a norm, not the arc L_1
     (_W + r"(\d+(?:\.\d+)?)e([-+]?)0*(\d+)" + _E, lambda m: "$" + ("" if m.group(1) == "1" else m.group(1) + r"\cdot") +
      "10^{" + m.group(2).replace("+", "") + m.group(3) + "}$"),
 ]
@@ -136,7 +143,7 @@ def typeset(text):
     for i in range(0, len(parts), 2):
         for pattern, repl in _TYPESET:
             parts[i] = re.sub(pattern, repl, parts[i])
-        parts[i] = parts[i].replace("$$", "")  # adjacent formulas, e.g. $t_2$$\ge$ -> one formula
+        parts[i] = re.sub(r"(?<!\\)\$\$", "", parts[i])  # adjacent formulas ($t_2$$\ge$ -> one); not an escaped \$
     return "".join(parts)
 
 
@@ -222,7 +229,9 @@ def main():
                 sys.exit(f"claims_map: {name}-claims.tex has {len(kit_rows)} rows for {len(d['claims'])} claims")
             paths = lambda xs: ", ".join(f"\\path{{{x}}}" for x in xs) or "---"
             f.write(f"\\dfcclaims{{{name}}}{{{paths(d['figures'])}}}{{{paths(d['tests'])}}}{{%\n")
-            for row in grouped_claim_rows(kit_rows):
+            at = {c["id"]: ", ".join(f"{k.replace('_', chr(92) + '_')}={v!r}" for k, v in c["parameters"].items())
+                  for c in d["claims"] if isinstance(c.get("parameters"), dict)}
+            for row in grouped_claim_rows(kit_rows, at):
                 row = row[:3] + (typeset(row[3]),) + row[4:]
                 f.write("\\dfcclaimentry" + "".join("{" + x + "}" for x in row) + "\n")
             f.write("}\n")

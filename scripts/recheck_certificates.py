@@ -223,14 +223,18 @@ def family(cid):
     return (m.group(1), m.group(2)) if m else (cid, None)
 
 
-def grouped(listed):
+def grouped(listed, premise_of=None):
     """One \\dfccertgroup{claims}{files}{bytes}{status} (files and bytes of its own accepted
-    certificates) per family of claims that differ only in
-    their variant (the parameter point A-D, the window number): the report's table. Families keep
-    the order of their first claim; the status says how many files are accepted, premises or none."""
+    certificates) per family of claims: ids equal but for their variant (the parameter point A-D, the
+    window number), whatever else their statements say. The report's table. Families keep the order
+    of their first claim; the status counts the files accepted, and names the claims whose proof rests
+    on another's certificate (premise_of: claim id -> the claim it follows from) and the variants
+    without a certificate."""
+    premise_of = premise_of or {}
     order, members = [], {}
     for cid, stem, sha, size, status in listed:
-        key = family(cid)[0]
+        fam, var = family(cid)
+        key = (fam, var is not None)  # an id without a variant never joins a family it is the prefix of
         if key not in members:
             order.append(key)
             members[key] = []
@@ -244,13 +248,21 @@ def grouped(listed):
             if v is not None and v not in variants:
                 variants.append(v)
         ids = {cid for cid, _, _ in rows}
-        label = key + "{" + ",".join(variants) + "}" if len(ids) > 1 else rows[0][0]
-        counts = {}
-        for _, _, status in rows:
-            counts[status] = counts.get(status, 0) + 1
-        status = ", ".join(f"{n} {s}" for s, n in counts.items())
+        label = key[0] + "{" + ",".join(variants) + "}" if len(ids) > 1 else rows[0][0]
+        parts = []
+        accepted = sum(1 for _, _, st in rows if st == "accepted")
+        if accepted:
+            parts.append(f"{accepted} accepted")
+        premises = [cid for cid, _, st in rows if st == "premise"]
+        if premises:
+            bases = sorted({premise_of.get(cid, "?") for cid in premises})
+            parts.append(f"premise: {', '.join(bases)}" if len(bases) <= 1 else
+                         f"premises: {family(bases[0])[0]}{{{','.join(family(b)[1] or b for b in bases)}}}")
+        missing = [family(cid)[1] or cid for cid, _, st in rows if st == "none"]
+        if missing:
+            parts.append("none yet: " + ", ".join(dict.fromkeys(missing)))
         own = [size for _, size, st in rows if st == "accepted"]  # a premise's file is counted in its own row
-        out.append(f"\\dfccertgroup{{{label}}}{{{len(own)}}}{{{sum(own)}}}{{{status}}}")
+        out.append(f"\\dfccertgroup{{{label}}}{{{len(own)}}}{{{sum(own)}}}{{{'; '.join(parts)}}}")
     return out
 
 
@@ -331,7 +343,8 @@ def main():
           head + f"\\newcommand{{\\dfcCertificatesAccepted}}{{{accepted}}}\n"
                  f"\\newcommand{{\\dfcCertifiedClaims}}{{{len(claims)}}}\n"
                  f"\\newcommand{{\\dfcCertifiedClaimsWithout}}{{{without}}}\n")
-    write(os.path.join(tables, "certificates-grouped.tex"), head + "\n".join(grouped(listed)) + "\n")
+    premise_of = {cid: record[cid]["evidence"].get("rests_on") for cid in claims if isinstance(record[cid]["evidence"], dict)}
+    write(os.path.join(tables, "certificates-grouped.tex"), head + "\n".join(grouped(listed, premise_of)) + "\n")
     # Every file's digest, in the format of sha256sum, so that `sha256sum -c` checks them.
     write(os.path.join(build, "certificates", "SHA256SUMS"),
           "".join(f"{sha}  {stem}.json\n" for _, stem, sha, _, status in listed if status == "accepted"))

@@ -107,6 +107,23 @@ class OneRowPerFamily(unittest.TestCase):
             out = M.grouped_claim_rows([base, other])
             self.assertEqual([o[0] for o in out], [base[0], other[0]], other)
 
+    def test_numbers_inside_words_fractions_and_powers_are_not_merged(self):
+        for a, b in (("on [t2, 3pi/2]", "on [t2, 3pi/4]"), ("to 1E-3", "to 1E-5"), ("2^10 words", "2^12 words"),
+                     ("file sec4-2.tsv", "file sec4-3.tsv"), ("x = -0.5", "x = -0.7")):
+            out = M.grouped_claim_rows([self.r("c.l.A", a), self.r("c.l.B", b)])
+            self.assertEqual(len(out), 2, (a, b))
+
+    def test_the_parameters_of_each_variant_head_the_row(self):
+        rows = [self.r("c.l.A", "has 158 jumps"), self.r("c.l.B", "has 52 jumps")]
+        out = M.grouped_claim_rows(rows, {"c.l.A": "b=0.001", "c.l.B": "b=0.003"})
+        self.assertEqual(out[0][3], "[A: b=0.001; B: b=0.003] [A; B in brackets] has 158 [B: 52] jumps")
+
+    def test_identical_statements_promise_no_brackets(self):
+        out = M.grouped_claim_rows([self.r("c.w1", "a window at q=0.85"), self.r("c.w2", "a window at q=0.85")])
+        self.assertEqual(len(out), 1)
+        self.assertNotIn("in brackets", out[0][3])
+        self.assertIn("the same statement", out[0][3])
+
     def test_ids_without_a_variant_are_never_merged(self):
         rows = [self.r("c.negative", "x 1"), self.r("c.negative", "x 2")]
         self.assertEqual(len(M.grouped_claim_rows(rows)), 2)
@@ -127,7 +144,8 @@ class Typeset(unittest.TestCase):
         self.assertEqual(M.typeset(r"(0\textasciicircum{}(m-1)1)\textasciicircum{}infinity"), r"$(0^{m-1}1)^\infty$")
 
     def test_identifiers_and_paths_are_left_alone(self):
-        for text in (r"'jump\_at\_least' and t2\_cycle", r"\path{cert.t2} and \texttt{t2}", "typical steps at 2k+1"):
+        for text in (r"'jump\_at\_least' and t2\_cycle", r"\path{cert.t2} and \texttt{t2}", "typical steps at 2k+1",
+                     "the L1 distance", "Li-Yorke chaos, bi-infinite", r"costs \$t2 and \$\$", "3.5pi/2"):
             self.assertEqual(M.typeset(text), text)
 
 

@@ -186,7 +186,7 @@ bool same_branch_around(const Parameters& p, double theta, double r) {
 /// Largest error a step without a stop may carry: below it the step's branch is checked; at or above
 /// it the error counts as infinite until the next stop (a later contraction, e.g. near t2 where
 /// T' = 0, must not bring back a verdict that was lost).
-constexpr double kLostAt = 1e-3;
+constexpr double kLostAt = kStopCycleLostAt;
 
 }  // namespace
 

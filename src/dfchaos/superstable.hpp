@@ -78,6 +78,9 @@ struct StopCycle {
 /// Margin (distance over propagated error) that stop_cycle() requires of every step it follows.
 inline constexpr double kStopCycleSafety = 10;
 
+/// The propagated error at which stop_cycle() counts the orbit's precision as lost (StopCycle::lost).
+inline constexpr double kStopCycleLostAt = 1e-3;
+
 /// The default \f$\delta\f$ of stop_cycle(): the accuracy docs/accuracy.md promises for \f$T\f$ near a
 /// discontinuity of \f$T_1\f$, the loosest of its bounds.
 inline constexpr double kStopCycleStepError = 1e-9;

@@ -99,9 +99,10 @@ void require_output_root(const std::filesystem::path& root);
 
 /// The outputs of one experiment run, written below an output root (usually build/):
 /// `data/NAME[-PART].tsv`, `tables/FILE.tex`, `tables/NAME-macros.tex`, `claims/NAME.json`, and
-/// for the report `tables/NAME-claims.tex` (one `\dfcsetverdict{id}{verdict}` and one
-/// `\dfcclaimrow{id}{reference}{statement}{verdict}` per claim, and `\dfcclaiminfo{id}{kind}{origin}`)
-/// and `tables/NAME-params.tex` (one `\dfcparamrow{key}{value}` per run parameter).
+/// for the report `tables/NAME-claims.tex` (one `\dfcsetverdict{id}{verdict}{kind}{origin}` and one
+/// `\dfcclaimrow{id}{reference}{statement}{verdict}{kind}{origin}` per claim, read by
+/// scripts/claims_map.py) and `tables/NAME-params.tex` (one `\dfcparamrow{key}{value}` per run
+/// parameter; the report no longer prints them: the same values are in claims/NAME.json).
 class Output {
  public:
   /// Outputs of experiment `name` below `root`.
