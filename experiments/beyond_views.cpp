@@ -96,6 +96,8 @@ const Experiment experiment{
       const int nrows = run.count_int("rows"), phases = run.count_int("phases"), fibre_n = run.count_int("fibre-n");
       const Parameters p(1.0, b, q);
       p.require_return_map();
+      run.out.macro("ViewsB", b, 3);
+      run.out.macro("ViewsQ", q, 3);
 
       // ---- 1. Stroboscopic section: from rest at the delimiter at t = 0, sampled every 2 pi.
       {
@@ -134,9 +136,9 @@ const Experiment experiment{
         run.out.macro("ViewsSectionBound", bound, 3);
         run.out.macro("ViewsSectionMaxSpeed", v_max, 3);
         run.out.macro("ViewsSectionGrowth", grow, 2);
-        run.out.claim("views.section_bounded", "Section 2 (full system, beyond)", EvidenceKind::Sampled,
-                      "The stroboscopic section of the full system (x - y and velocity at t = 2 pi k) stays above the a priori bound "
-                      "x - y >= -(2a + a^2/(4b)) of a free flight from rest at the delimiter, at every sample.")
+        run.out.claim("views.section_bounded", "Section 2 (beyond)", EvidenceKind::Sampled,
+                      "Every sample of the stroboscopic section of the full system (t = 2 pi k) has x - y >= -(2a + a^2/(4b)), "
+                      "the a priori bound of a flight from rest.")
             .ours()
             .parameter("b_over_a", b).parameter("q_over_a", q).parameter("periods", periods)
             .evidence("events", static_cast<long long>(sim.events.size())).evidence("bound", bound)
@@ -193,8 +195,7 @@ const Experiment experiment{
         run.out.macro("ViewsLapMinCovering", with_covering > 0 ? min_cov : 0.0, 3);
         run.out.macro("ViewsLapMax", max_all, 3);
         auto& c = run.out.claim("views.laps_at_least_ln2", "Section 7 (beyond)", EvidenceKind::Sampled,
-                                "Along b/a at fixed q/a, wherever Lemma 4's covering is found the lap-count estimate (1/n) ln laps(T^n) "
-                                "is at least ln 2.")
+                                "Wherever Lemma 4's covering is found on the line of b/a, the lap estimate (1/n) ln laps(T^n) is at least ln 2.")
                       .ours()
                       .parameter("q_over_a", q).parameter("n", static_cast<long long>(lap_n)).parameter("grid", static_cast<long long>(lap_grid))
                       .evidence("values", static_cast<long long>(nb)).evidence("failed", failed)
@@ -277,6 +278,18 @@ const Experiment experiment{
         // Rows: Theorem 2's verdict (superstable_check) against the orbits (some start falls onto the
         // resolved fixed point t2 within the run), and every return to t2 with the period of t2's cycle.
         long long rows_checked = 0, rows_bad = 0, rows_undecided = 0, rows_theorem2 = 0, rows_captured = 0;
+        long long rows_longer = 0, longest = 0;  // rows with a resolved cycle through t2 of period >= 2, the longest period
+        for (std::size_t i = 0; i < cells.size(); ++i)
+          if (!orbits[i].failed && orbits[i].value.period_of_t2 > 1) {
+            const RowValue& rv = rowv[static_cast<std::size_t>(cells[i].j)].value;
+            if (!rv.cycle_failed && rv.cycle.resolved) longest = std::max(longest, orbits[i].value.period_of_t2);
+          }
+        for (int j = 0; j < nrows; ++j) {
+          const RowValue& rv = rowv[static_cast<std::size_t>(j)].value;
+          if (!rowv[static_cast<std::size_t>(j)].failed && !rv.cycle_failed && rv.cycle.resolved && rv.cycle.period > 1 &&
+              returned[static_cast<std::size_t>(j)] > 0)
+            ++rows_longer;
+        }
         for (int j = 0; j < nrows; ++j) {
           const auto jj = static_cast<std::size_t>(j);
           const RowValue& rv = rowv[jj].value;
@@ -298,22 +311,24 @@ const Experiment experiment{
         run.out.macro("ViewsBasinWindowHi", w_hi, 6);
         run.out.macro("ViewsBasinRowsTheoremTwo", std::to_string(rows_theorem2));
         run.out.macro("ViewsBasinRowsCaptured", std::to_string(rows_captured));
+        run.out.macro("ViewsBasinRowsLonger", std::to_string(rows_longer));
+        run.out.macro("ViewsBasinLongestPeriod", std::to_string(longest));
         run.out.macro("ViewsBasinNoStop", std::to_string(counts[kNoStop]));
         run.out.macro("ViewsBasinElsewhere", std::to_string(counts[kStopsElsewhere]));
         run.out.macro("ViewsBasinUnresolved", std::to_string(counts[kT2Unresolved]));
         run.out.macro("ViewsBasinSuperstable", std::to_string(counts[kT2Superstable]));
         run.out.macro("ViewsBasinFailed", std::to_string(counts[kFailed]));
-        run.out.claim("views.basins_match_theorem2", "Section 8, Theorem 2 (beyond)", EvidenceKind::Sampled,
-                      "Across one superstable interval of b/a, some start of the basin map falls within the run onto the resolved "
-                      "superstable fixed point t2 exactly at the values of b/a where Theorem 2's conditions (21) or (22) hold "
-                      "(superstable_check), and every start that returns to t2 does so with the period of t2's own cycle (t2_cycle).")
+        run.out.claim("views.basins_match_theorem2", "Theorem 2 (beyond)", EvidenceKind::Sampled,
+                      "Some start falls onto the resolved fixed point t2 exactly in the rows where (21) or (22) holds with T(t2) = t2, "
+                      "and every return to t2 has the period of t2's own cycle.")
             .ours()
             .parameter("q_over_a", q).parameter("steps", steps).parameter("window_lo", w_lo).parameter("window_hi", w_hi)
             .evidence("cells", static_cast<long long>(cells.size())).evidence("failed", counts[kFailed])
             .evidence("superstable", counts[kT2Superstable]).evidence("unresolved", counts[kT2Unresolved])
             .evidence("stops_elsewhere", counts[kStopsElsewhere]).evidence("no_stop", counts[kNoStop])
             .evidence("rows_theorem2", rows_theorem2).evidence("rows_captured", rows_captured)
-            .evidence("period_mismatches", period_mismatch)
+            .evidence("period_mismatches", period_mismatch).evidence("rows_longer_superstable_cycle", rows_longer)
+            .evidence("longest_resolved_period", longest)
             .evidence("rows", rows_checked).evidence("returns_to_t2", returns)
             .cases(rows_checked + returns, rows_bad + period_mismatch, rows_undecided);
       }
@@ -376,9 +391,9 @@ const Experiment experiment{
         run.out.macro("ViewsFibreMean", checked > 0 ? sum_pen / static_cast<double>(checked) : 0.0, 3);
         run.out.macro("ViewsFibreWorst", worst, 2);
         run.out.macro("ViewsFibreTol", kFibreRelTol, 1);
-        run.out.claim("views.fibre_matches_simulator", "Section 3 (skew product, beyond)", EvidenceKind::Sampled,
-                      "At every phase of the grid, the delimiter's advance during one step of T (the fibre map) equals the full "
-                      "simulator's advance over the same time span, to {tol} of the largest advance.")
+        run.out.claim("views.fibre_matches_simulator", "Section 3 (beyond)", EvidenceKind::Sampled,
+                      "At every phase of the grid the fibre map (advance of y in one step of T) equals the simulator's, to {tol} of its "
+                      "largest value.")
             .ours()
             .parameter("b_over_a", b).parameter("q_over_a", q)
             .evidence("failed", failed).evidence("worst_relative_difference", worst).tolerance(kFibreRelTol)
