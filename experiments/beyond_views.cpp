@@ -4,19 +4,23 @@
 ///
 ///  1. The stroboscopic Poincaré section of the full system (Section 2, Eqs. 3–5): the event-driven
 ///     simulator (simulator.hpp) sampled at \f$t = 2\pi k\f$, relative position \f$x - y\f$ against
-///     velocity \f$\dot x\f$. Claim: the section stays in a bounded set (its second half lies in the
-///     box of its first half, enlarged by a tolerance).
+///     velocity \f$\dot x\f$. Claim: every sample stays above the a priori bound
+///     \f$x - y \ge -(2a + a^2/(4b))\f$ of a free flight from rest at the delimiter (Eq. 3 in closed form).
 ///  2. The lap-count estimate \f$\frac1n\ln\ell(T^n)\f$ of \f$h_{top}(T)\f$ (entropy.hpp, Section 7)
 ///     against \f$b/a\f$. Claim: wherever Lemma 4's covering (Eq. 18) is found, the estimate is at
 ///     least \f$\ln 2\f$, the bound the semi-conjugacy of Section 7 gives.
-///  3. A basin map over \f$(\theta_0, b/a)\f$: whether the orbit of \f$T\f$ from \f$\theta_0\f$ falls,
-///     within a bounded number of steps, onto the cycle through \f$t_2\f$ (Section 8, Theorem 2 and
-///     its cycles: superstable.hpp), stops elsewhere, or never stops. Claim (cross-check): every start
-///     whose computed orbit returns to \f$t_2\f$ does so with the period of \f$t_2\f$'s own cycle
-///     (t2_cycle at the same parameters).
+///  3. A basin map over \f$(\theta_0, b/a)\f$ across one superstable interval of \f$b/a\f$
+///     (superstable_windows, Section 8): whether the orbit of \f$T\f$ from \f$\theta_0\f$ falls, within
+///     a bounded number of steps, onto a cycle through \f$t_2\f$ that double precision resolves
+///     (superstable.hpp, t2_cycle), returns to \f$t_2\f$ on one it does not resolve, stops and goes on,
+///     or never stops. Claim (cross-check): starts fall onto the fixed point \f$t_2\f$ exactly in the
+///     rows where Theorem 2's conditions (21) or (22) hold with \f$T(t_2) = t_2\f$ (superstable_check),
+///     and every return to \f$t_2\f$ has the period of \f$t_2\f$'s own cycle.
 ///  4. The fibre map of the skew product (Section 3, Lemma 3): the delimiter's advance during one
 ///     step of \f$T\f$ against \f$\theta\f$ (MapStep::penetration). Claim (cross-check): it equals
-///     the advance of the full simulator over the same step.
+///     the advance found by integrating the equations of motion numerically (ode_map.hpp), which shares
+///     no root search with the closed-form map (the simulator shares the regime chain, so its agreement
+///     is recorded, not asserted).
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -28,6 +32,7 @@
 #include "dfchaos/entropy.hpp"
 #include "dfchaos/errors.hpp"
 #include "dfchaos/map_derivative.hpp"
+#include "dfchaos/ode_map.hpp"
 #include "dfchaos/return_map.hpp"
 #include "dfchaos/simulator.hpp"
 #include "dfchaos/superstable.hpp"
@@ -39,7 +44,7 @@ using namespace dfchaos::kit;
 
 namespace {
 
-constexpr double kFibreRelTol = 1e-9;   // fibre map against the simulator, relative to the largest advance
+constexpr double kFibreRelTol = 1e-8;   // fibre map against the ODE map, relative to the largest advance
 constexpr double kNearJump = 1e-8;      // a phase this close to a change of scenario is undecided in double
 constexpr double kBLo = 1e-3, kBRatio = 200.0;  // the b/a line of views 2 and 3: [1e-3, 0.2], log-spaced
 
@@ -88,7 +93,7 @@ const Experiment experiment{
                 data("basins", "class of the orbit of T from theta0 against (theta0, b/a): 0 no stop, 1 stops but does not return to "
                                "t2, 2 returns to t2 on a cycle double precision does not resolve, 3 falls onto the resolved superstable "
                                "cycle through t2, 4 failed"),
-                data("fibre", "the fibre map: delimiter advance and duration of one step of T against theta, with the simulator's advance")},
+                data("fibre", "the fibre map: delimiter advance and duration of one step of T against theta, with the simulator's and the ODE map's advance")},
     .body = [](Run& run) {
       const double b = run.real("b"), q = run.real("q");
       const long long periods = run.count("periods"), steps = run.count("steps");
@@ -338,8 +343,8 @@ const Experiment experiment{
         const Axis th = Axis::centres(*p.t2(), *p.t3(), fibre_n);
         struct Fibre {
           MapStep step;
-          double y_sim = NAN;
-          bool near_jump = false;
+          double y_sim = NAN, y_ode = NAN;
+          bool near_jump = false, ode_failed = false;
         };
         std::vector<double> thetas(static_cast<std::size_t>(fibre_n));
         for (int k = 0; k < fibre_n; ++k) thetas[static_cast<std::size_t>(k)] = th[k];
@@ -349,6 +354,11 @@ const Experiment experiment{
               Fibre f;
               f.step = return_map_step(p, theta);
               f.y_sim = simulate(p, 0.0, 0.0, 0.0, theta, theta + f.step.elapsed).final_state.y;
+              try {
+                f.y_ode = ode_return_map_step(p, theta).penetration;  // independent: GSL integration (ode_map.hpp)
+              } catch (const GaveUp&) {
+                f.ode_failed = true;
+              }
               for (double h : {-kNearJump, kNearJump}) {
                 const double t = theta + h;
                 if (t < *p.t2() || t >= *p.t3()) continue;
@@ -364,39 +374,43 @@ const Experiment experiment{
         double scale = 0;
         for (const auto& f : fib)
           if (!f.failed) scale = std::max(scale, f.value.step.penetration);
-        Table fibre({"theta", "penetration", "elapsed", "T", "scenario", "penetration_simulator", "failed"});
+        Table fibre({"theta", "penetration", "elapsed", "T", "scenario", "penetration_simulator", "penetration_ode", "failed"});
         long long checked = 0, bad = 0, undecided = 0, failed = 0;
-        double worst = 0, sum_pen = 0;
+        double worst = 0, worst_sim = 0, sum_pen = 0;
         for (std::size_t k = 0; k < fib.size(); ++k) {
           if (fib[k].failed) {
             ++failed;
-            fibre.row({thetas[k], NAN, NAN, NAN, std::string("-"), NAN, 1LL});
+            fibre.row({thetas[k], NAN, NAN, NAN, std::string("-"), NAN, NAN, 1LL});
             continue;
           }
           const Fibre& f = fib[k].value;
-          const double d = std::fabs(f.y_sim - f.step.penetration) / scale;
+          worst_sim = std::max(worst_sim, std::fabs(f.y_sim - f.step.penetration) / scale);
           ++checked;
           sum_pen += f.step.penetration;
+          const double d = f.ode_failed ? INFINITY : std::fabs(f.y_ode - f.step.penetration) / scale;
           if (d > kFibreRelTol) {
-            if (f.near_jump) ++undecided;
+            if (f.near_jump || f.ode_failed) ++undecided;  // a branch double precision cannot pick, or the ODE gave up
             else ++bad;
           } else {
             worst = std::max(worst, d);
           }
-          fibre.row({thetas[k], f.step.penetration, f.step.elapsed, f.step.T, std::string(scenario_name(f.step.scenario)), f.y_sim, 0LL});
+          fibre.row({thetas[k], f.step.penetration, f.step.elapsed, f.step.T, std::string(scenario_name(f.step.scenario)), f.y_sim,
+                     f.ode_failed ? NAN : f.y_ode, 0LL});
         }
         run.table("fibre", fibre);
         run.out.macro("ViewsFibrePhases", std::to_string(fibre_n));
         run.out.macro("ViewsFibreMax", scale, 3);
         run.out.macro("ViewsFibreMean", checked > 0 ? sum_pen / static_cast<double>(checked) : 0.0, 3);
         run.out.macro("ViewsFibreWorst", worst, 2);
+        run.out.macro("ViewsFibreUndecided", std::to_string(undecided));
         run.out.macro("ViewsFibreTol", kFibreRelTol, 1);
-        run.out.claim("views.fibre_matches_simulator", "Section 3 (beyond)", EvidenceKind::Sampled,
-                      "At every phase of the grid the fibre map (advance of y in one step of T) equals the simulator's, to {tol} of its "
-                      "largest value.")
+        run.out.claim("views.fibre_matches_ode", "Section 3 (beyond)", EvidenceKind::Sampled,
+                      "At every phase of the grid the fibre map (advance of y in one step of T) equals the advance found by "
+                      "independent numerical integration (ode_map.hpp), to {tol} of its largest value.")
             .ours()
             .parameter("b_over_a", b).parameter("q_over_a", q)
-            .evidence("failed", failed).evidence("worst_relative_difference", worst).tolerance(kFibreRelTol)
+            .evidence("failed", failed).evidence("worst_relative_difference", worst)
+            .evidence("worst_relative_difference_simulator", worst_sim).tolerance(kFibreRelTol)
             .cases(checked, bad, undecided);
       }
     }};
