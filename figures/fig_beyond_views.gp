@@ -24,8 +24,11 @@ stats lap using "b_over_a" name "LB" nooutput
 # b/a and q/a of the section and the fibre map, from the headers of their files
 b_sec = real(system("sed -n 's/^# b_over_a = //p' '".sec."' | head -1"))
 q_all = real(system("sed -n 's/^# q_over_a = //p' '".sec."' | head -1"))
-nrows = BB_records / 1.0
-db = (BB_max - BB_min) / 59.0
+# the grid of the basin map (rows of b/a, start phases per row), from the header of its file
+nrows = int(system("sed -n 's/^# rows = //p' '".bas."' | head -1"))
+nphases = int(system("sed -n 's/^# phases = //p' '".bas."' | head -1"))
+if (nrows < 2 || nphases < 2) { print "fig_beyond_views: no rows or phases in the header of ".bas; exit status 1 }
+db = (BB_max - BB_min) / (nrows - 1)
 set multiplot
 set grid noxtics noytics
 col_l = 0.115; col_r = 0.6; pw = 0.37
@@ -83,7 +86,7 @@ set format y '$%.1f$'
 set ytics 0.1
 # class -> colour (lightness: sky 0.62, blue 0.34, yellow 0.84, black 0)
 clsrgb(c) = (c == 0 ? 0x56B4E9 : (c == 1 ? 0x0072B2 : (c == 2 ? 0xF0E442 : (c == 3 ? 0x000000 : 0x7f7f7f))))
-dth = (t3m - t2m) / 120.0
+dth = (t3m - t2m) / nphases
 wl = (W_min - db/2)*ysc; wh = (W_max + db/2)*ysc
 set arrow 3 from graph 0, first wl to graph 1, first wl nohead lw 3.5 lc rgb "#ffffff" front
 set arrow 4 from graph 0, first wh to graph 1, first wh nohead lw 3.5 lc rgb "#ffffff" front
