@@ -76,7 +76,7 @@ struct BasinCell {
 const Experiment experiment{
     .title = "four views beyond the paper: stroboscopic section, lap entropy, basins, fibre map",
     .paper = {"Section 3 (skew product)", "Section 7", "Section 8"},
-    .tests = {"test_simulate", "test_entropy", "test_beyond"},
+    .tests = {"test_simulate", "test_entropy", "test_covering", "test_beyond", "test_T_contract"},
     .options = {real("b", 0.01, "b/a of the stroboscopic section and the fibre map").range(1e-4, 0.2).recorded_as("b_over_a"),
                 real("q", 0.85, "q/a of all four views").range(0.75, 0.99).recorded_as("q_over_a"),
                 count("periods", 20000, "forcing periods sampled in the stroboscopic section").range(10, 1'000'000).fast_value(200),
