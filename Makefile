@@ -25,7 +25,7 @@ STAMPS      := $(EXPERIMENTS:%=$(BUILD)/stamps/%.ok)
 FIGS        := $(FIGURES:%=$(BUILD)/figures/%.tex)
 
 .PHONY: help deps deps-report configure build build-tools test reproduce experiments figures report manifest claims-map \
-        docs bench bench-snapshot plane-hires clean test-sanitize test-clang check-determinism certify-region dist
+        docs bench bench-snapshot plane-hires clean test-sanitize test-clang check-determinism certify-region dist format format-check
 
 help:
 	@echo "dfchaos make targets:"
@@ -47,6 +47,8 @@ help:
 	@echo "                   when built: $(BUILD)/plane/ (hours: docs/cluster.md; rerun to resume)"
 	@echo "  make test-sanitize  build with ASan+UBSan in $(BUILD)-sanitize and run every test"
 	@echo "  make test-clang  build warning-free with clang++ in $(BUILD)-clang and run every test"
+	@echo "  make format      reformat every tracked C++ file with .clang-format (clang-format 14)"
+	@echo "  make format-check  fail, naming the files, when clang-format would change a tracked C++ file"
 	@echo "  make check-determinism  rerun every experiment on 1 thread (and on 2 unless make reproduce ran on 2+):"
 	@echo "                   manifests must match each other and the last make reproduce"
 	@echo "  make dist        $(BUILD)/dist/dfchaos-<version>.tar.gz, a git archive of HEAD (refused while tracked files"
@@ -179,6 +181,19 @@ test-clang:
 	@CXX=clang++ $(CMAKE) -S . -B $(BUILD)-clang -DCMAKE_BUILD_TYPE=RelWithDebInfo > /dev/null
 	@$(CMAKE) --build $(BUILD)-clang -j $(JOBS)
 	@ctest --test-dir $(BUILD)-clang --output-on-failure -j $(JOBS) $(CHECK_CTEST_ARGS)
+
+# The tracked C++ sources, formatted by .clang-format (format) or checked against it (format-check).
+CXX_SOURCES = $(shell git ls-files '*.cpp' '*.hpp' '*.h' 2>/dev/null)
+
+format:
+	@bash scripts/install-deps.sh check
+	@clang-format -i $(CXX_SOURCES)
+
+format-check:
+	@bash scripts/install-deps.sh check
+	@bad=$$(for f in $(CXX_SOURCES); do clang-format --dry-run --Werror "$$f" > /dev/null 2>&1 || echo "$$f"; done); \
+	if [ -n "$$bad" ]; then echo "format-check: clang-format would change these files (make format):"; echo "$$bad"; exit 1; fi; \
+	echo "format-check: $(words $(CXX_SOURCES)) C++ files are as .clang-format writes them"
 
 check-determinism: build-tools
 	@bash scripts/check-determinism.sh $(BUILD)
