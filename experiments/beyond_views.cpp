@@ -44,8 +44,8 @@ using namespace dfchaos::kit;
 
 namespace {
 
-constexpr double kFibreRelTol = 1e-8;   // fibre map against the ODE map, relative to the largest advance
-constexpr double kNearJump = 1e-8;      // a phase this close to a change of scenario is undecided in double
+constexpr double kFibreRelTol = 1e-8;           // fibre map against the ODE map, relative to the largest advance
+constexpr double kNearJump = 1e-8;              // a phase this close to a change of scenario is undecided in double
 constexpr double kBLo = 1e-3, kBRatio = 200.0;  // the b/a line of views 2 and 3: [1e-3, 0.2], log-spaced
 
 /// Classes of the basin map (view 3).
@@ -60,9 +60,9 @@ struct LineValue {
 
 /// Per row of the basin map: t2's own computed cycle and Theorem 2's conditions there.
 struct RowValue {
-  StopCycle cycle;          // t2_cycle
+  StopCycle cycle;  // t2_cycle
   bool cycle_failed = false;
-  bool theorem2 = false;    // (21) or (22) holds and T(t2) = t2 (superstable_check)
+  bool theorem2 = false;  // (21) or (22) holds and T(t2) = t2 (superstable_check)
   bool check_failed = false;
 };
 
@@ -77,23 +77,26 @@ const Experiment experiment{
     .title = "four views beyond the paper: stroboscopic section, lap entropy, basins, fibre map",
     .paper = {"Section 3 (skew product)", "Section 7", "Section 8"},
     .tests = {"test_simulate", "test_entropy", "test_covering", "test_beyond", "test_T_contract"},
-    .options = {real("b", 0.01, "b/a of the stroboscopic section and the fibre map").range(1e-4, 0.2).recorded_as("b_over_a"),
-                real("q", 0.85, "q/a of all four views").range(0.75, 0.99).recorded_as("q_over_a"),
-                count("periods", 20000, "forcing periods sampled in the stroboscopic section").range(10, 1'000'000).fast_value(200),
-                count("nb", 40, "values of b/a (log-spaced in [1e-3, 0.2]) for the lap estimate and the basin map").range(2, 1000).fast_value(4),
-                count("lap-grid", 20000, "grid points of [t2, t3) for the lap counts").range(100, 10'000'000).fast_value(2000),
-                count("lap-n", 3, "iterate n of the lap count (1/n) ln laps(T^n)").range(1, 6).fast_value(2),
-                real("window-b", 0.015, "the basin map spans the first superstable interval of b/a at or after this value").range(1e-3, 0.1),
-                count("rows", 60, "values of b/a in the basin map (across the interval and as much again on either side)").range(2, 10000).fast_value(6),
-                count("phases", 120, "start phases theta0 of [t2, t3) in the basin map").range(2, 10000).fast_value(8),
-                count("steps", 1500, "steps of T followed from each start of the basin map").range(10, 1'000'000).fast_value(100),
-                count("fibre-n", 3000, "phases of [t2, t3) at which the fibre map is evaluated").range(2, 1'000'000).fast_value(50)},
+    .options =
+        {real("b", 0.01, "b/a of the stroboscopic section and the fibre map").range(1e-4, 0.2).recorded_as("b_over_a"),
+         real("q", 0.85, "q/a of all four views").range(0.75, 0.99).recorded_as("q_over_a"),
+         count("periods", 20000, "forcing periods sampled in the stroboscopic section").range(10, 1'000'000).fast_value(200),
+         count("nb", 40, "values of b/a (log-spaced in [1e-3, 0.2]) for the lap estimate and the basin map").range(2, 1000).fast_value(4),
+         count("lap-grid", 20000, "grid points of [t2, t3) for the lap counts").range(100, 10'000'000).fast_value(2000),
+         count("lap-n", 3, "iterate n of the lap count (1/n) ln laps(T^n)").range(1, 6).fast_value(2),
+         real("window-b", 0.015, "the basin map spans the first superstable interval of b/a at or after this value").range(1e-3, 0.1),
+         count("rows", 60, "values of b/a in the basin map (across the interval and as much again on either side)").range(2, 10000).fast_value(6),
+         count("phases", 120, "start phases theta0 of [t2, t3) in the basin map").range(2, 10000).fast_value(8),
+         count("steps", 1500, "steps of T followed from each start of the basin map").range(10, 1'000'000).fast_value(100),
+         count("fibre-n", 3000, "phases of [t2, t3) at which the fibre map is evaluated").range(2, 1'000'000).fast_value(50)},
     .outputs = {data("section", "stroboscopic section of the full system: x - y and velocity at t = 2 pi k (first tenth dropped)"),
                 data("laps", "lap-count estimate of the entropy of T against b/a, and whether Lemma 4's covering is found"),
-                data("basins", "class of the orbit of T from theta0 against (theta0, b/a): 0 no stop, 1 stops but does not return to "
-                               "t2, 2 returns to t2 on a cycle double precision does not resolve, 3 falls onto the resolved superstable "
-                               "cycle through t2, 4 failed"),
-                data("fibre", "the fibre map: delimiter advance and duration of one step of T against theta, with the simulator's and the ODE map's advance")},
+                data("basins",
+                     "class of the orbit of T from theta0 against (theta0, b/a): 0 no stop, 1 stops but does not return to "
+                     "t2, 2 returns to t2 on a cycle double precision does not resolve, 3 falls onto the resolved superstable "
+                     "cycle through t2, 4 failed"),
+                data("fibre",
+                     "the fibre map: delimiter advance and duration of one step of T against theta, with the simulator's and the ODE map's advance")},
     .body = [](Run& run) {
       const double b = run.real("b"), q = run.real("q");
       const long long periods = run.count("periods"), steps = run.count("steps");
@@ -117,8 +120,10 @@ const Experiment experiment{
           const Sample& s = sim.samples[k];
           const double r = s.x - s.y;
           double* bx = box[k < half ? 0 : 1];
-          bx[0] = std::min(bx[0], r); bx[1] = std::max(bx[1], r);
-          bx[2] = std::min(bx[2], s.v); bx[3] = std::max(bx[3], s.v);
+          bx[0] = std::min(bx[0], r);
+          bx[1] = std::max(bx[1], r);
+          bx[2] = std::min(bx[2], s.v);
+          bx[3] = std::max(bx[3], s.v);
           section.row({static_cast<long long>(k), s.t, r, s.v, static_cast<long long>(s.regime)});
         }
         run.table("section", section);
@@ -131,23 +136,28 @@ const Experiment experiment{
           if (sim.samples[k].x - sim.samples[k].y < bound) ++below;
         // Growth of the second half's box beyond the first's, relative to the first's size per axis.
         const double wr = box[0][1] - box[0][0], wv = box[0][3] - box[0][2];
-        const double grow = std::max({(box[0][0] - box[1][0]) / wr, (box[1][1] - box[0][1]) / wr,
-                                      (box[0][2] - box[1][2]) / wv, (box[1][3] - box[0][3]) / wv, 0.0});
-        const double rel_min = std::min(box[0][0], box[1][0]), v_max = std::max({std::fabs(box[0][2]), std::fabs(box[0][3]),
-                                                                                 std::fabs(box[1][2]), std::fabs(box[1][3])});
+        const double grow =
+            std::max({(box[0][0] - box[1][0]) / wr, (box[1][1] - box[0][1]) / wr, (box[0][2] - box[1][2]) / wv, (box[1][3] - box[0][3]) / wv, 0.0});
+        const double rel_min = std::min(box[0][0], box[1][0]),
+                     v_max = std::max({std::fabs(box[0][2]), std::fabs(box[0][3]), std::fabs(box[1][2]), std::fabs(box[1][3])});
         run.out.macro("ViewsSectionPeriods", std::to_string(periods));
         run.out.macro("ViewsSectionSamples", std::to_string(n));
         run.out.macro("ViewsSectionMinGap", rel_min, 3);
         run.out.macro("ViewsSectionBound", bound, 3);
         run.out.macro("ViewsSectionMaxSpeed", v_max, 3);
         run.out.macro("ViewsSectionGrowth", grow, 2);
-        run.out.claim("views.section_bounded", "Section 2 (beyond)", EvidenceKind::Sampled,
-                      "Every sample of the stroboscopic section of the full system (t = 2 pi k) has x - y >= -(2a + a^2/(4b)), "
-                      "the a priori bound of a flight from rest.")
+        run.out
+            .claim("views.section_bounded", "Section 2 (beyond)", EvidenceKind::Sampled,
+                   "Every sample of the stroboscopic section of the full system (t = 2 pi k) has x - y >= -(2a + a^2/(4b)), "
+                   "the a priori bound of a flight from rest.")
             .ours()
-            .parameter("b_over_a", b).parameter("q_over_a", q).parameter("periods", periods)
-            .evidence("events", static_cast<long long>(sim.events.size())).evidence("bound", bound)
-            .evidence("min_x_minus_y", rel_min).evidence("max_abs_velocity", v_max)
+            .parameter("b_over_a", b)
+            .parameter("q_over_a", q)
+            .parameter("periods", periods)
+            .evidence("events", static_cast<long long>(sim.events.size()))
+            .evidence("bound", bound)
+            .evidence("min_x_minus_y", rel_min)
+            .evidence("max_abs_velocity", v_max)
             .evidence("box_growth_second_half", grow)
             .cases(static_cast<long long>(n), below, 0);
       }
@@ -182,9 +192,12 @@ const Experiment experiment{
           const auto& r = line[static_cast<std::size_t>(j)];
           const LineValue& v = r.value;
           const bool f = r.failed || v.failed;
-          laps.row({line_b[j], q, static_cast<long long>(lap_n), f ? 0LL : v.laps, f ? NAN : v.entropy,
-                    static_cast<long long>(!f && v.covering), static_cast<long long>(f)});
-          if (f) { ++failed; continue; }
+          laps.row({line_b[j], q, static_cast<long long>(lap_n), f ? 0LL : v.laps, f ? NAN : v.entropy, static_cast<long long>(!f && v.covering),
+                    static_cast<long long>(f)});
+          if (f) {
+            ++failed;
+            continue;
+          }
           max_all = std::max(max_all, v.entropy);
           if (v.covering) {
             ++with_covering;
@@ -199,12 +212,17 @@ const Experiment experiment{
         run.out.macro("ViewsLapBelow", std::to_string(below));
         run.out.macro("ViewsLapMinCovering", with_covering > 0 ? min_cov : 0.0, 3);
         run.out.macro("ViewsLapMax", max_all, 3);
-        auto& c = run.out.claim("views.laps_at_least_ln2", "Section 7 (beyond)", EvidenceKind::Sampled,
-                                "Wherever Lemma 4's covering is found on the line of b/a, the lap estimate (1/n) ln laps(T^n) is at least ln 2.")
+        auto& c = run.out
+                      .claim("views.laps_at_least_ln2", "Section 7 (beyond)", EvidenceKind::Sampled,
+                             "Wherever Lemma 4's covering is found on the line of b/a, the lap estimate (1/n) ln laps(T^n) is at least ln 2.")
                       .ours()
-                      .parameter("q_over_a", q).parameter("n", static_cast<long long>(lap_n)).parameter("grid", static_cast<long long>(lap_grid))
-                      .evidence("values", static_cast<long long>(nb)).evidence("failed", failed)
-                      .evidence("min_estimate_with_covering", with_covering > 0 ? min_cov : 0.0).evidence("ln2", std::log(2.0));
+                      .parameter("q_over_a", q)
+                      .parameter("n", static_cast<long long>(lap_n))
+                      .parameter("grid", static_cast<long long>(lap_grid))
+                      .evidence("values", static_cast<long long>(nb))
+                      .evidence("failed", failed)
+                      .evidence("min_estimate_with_covering", with_covering > 0 ? min_cov : 0.0)
+                      .evidence("ln2", std::log(2.0));
         if (with_covering == 0) c.not_expected();
         c.cases(with_covering, below, 0);
       }
@@ -298,14 +316,20 @@ const Experiment experiment{
         for (int j = 0; j < nrows; ++j) {
           const auto jj = static_cast<std::size_t>(j);
           const RowValue& rv = rowv[jj].value;
-          if (rowv[jj].failed || rv.check_failed) { ++rows_undecided; ++rows_checked; continue; }
+          if (rowv[jj].failed || rv.check_failed) {
+            ++rows_undecided;
+            ++rows_checked;
+            continue;
+          }
           ++rows_checked;
           if (rv.theorem2) ++rows_theorem2;
           if (captured[jj] > 0) ++rows_captured;
           const bool unresolved_return = returned[jj] > 0 && !(!rv.cycle_failed && rv.cycle.resolved);
           if (rv.theorem2 != (captured[jj] > 0)) {
-            if (unresolved_return) ++rows_undecided;
-            else ++rows_bad;
+            if (unresolved_return)
+              ++rows_undecided;
+            else
+              ++rows_bad;
           }
         }
         run.out.macro("ViewsBasinCells", std::to_string(cells.size()));
@@ -323,18 +347,28 @@ const Experiment experiment{
         run.out.macro("ViewsBasinUnresolved", std::to_string(counts[kT2Unresolved]));
         run.out.macro("ViewsBasinSuperstable", std::to_string(counts[kT2Superstable]));
         run.out.macro("ViewsBasinFailed", std::to_string(counts[kFailed]));
-        run.out.claim("views.basins_match_theorem2", "Theorem 2 (beyond)", EvidenceKind::Sampled,
-                      "Some start falls onto the resolved fixed point t2 exactly in the rows where (21) or (22) holds with T(t2) = t2, "
-                      "and every return to t2 has the period of t2's own cycle.")
+        run.out
+            .claim("views.basins_match_theorem2", "Theorem 2 (beyond)", EvidenceKind::Sampled,
+                   "Some start falls onto the resolved fixed point t2 exactly in the rows where (21) or (22) holds with T(t2) = t2, "
+                   "and every return to t2 has the period of t2's own cycle.")
             .ours()
-            .parameter("q_over_a", q).parameter("steps", steps).parameter("window_lo", w_lo).parameter("window_hi", w_hi)
-            .evidence("cells", static_cast<long long>(cells.size())).evidence("failed", counts[kFailed])
-            .evidence("superstable", counts[kT2Superstable]).evidence("unresolved", counts[kT2Unresolved])
-            .evidence("stops_elsewhere", counts[kStopsElsewhere]).evidence("no_stop", counts[kNoStop])
-            .evidence("rows_theorem2", rows_theorem2).evidence("rows_captured", rows_captured)
-            .evidence("period_mismatches", period_mismatch).evidence("rows_longer_superstable_cycle", rows_longer)
+            .parameter("q_over_a", q)
+            .parameter("steps", steps)
+            .parameter("window_lo", w_lo)
+            .parameter("window_hi", w_hi)
+            .evidence("cells", static_cast<long long>(cells.size()))
+            .evidence("failed", counts[kFailed])
+            .evidence("superstable", counts[kT2Superstable])
+            .evidence("unresolved", counts[kT2Unresolved])
+            .evidence("stops_elsewhere", counts[kStopsElsewhere])
+            .evidence("no_stop", counts[kNoStop])
+            .evidence("rows_theorem2", rows_theorem2)
+            .evidence("rows_captured", rows_captured)
+            .evidence("period_mismatches", period_mismatch)
+            .evidence("rows_longer_superstable_cycle", rows_longer)
             .evidence("longest_resolved_period", longest)
-            .evidence("rows", rows_checked).evidence("returns_to_t2", returns)
+            .evidence("rows", rows_checked)
+            .evidence("returns_to_t2", returns)
             .cases(rows_checked + returns, rows_bad + period_mismatch, rows_undecided);
       }
 
@@ -389,8 +423,10 @@ const Experiment experiment{
           sum_pen += f.step.penetration;
           const double d = f.ode_failed ? INFINITY : std::fabs(f.y_ode - f.step.penetration) / scale;
           if (d > kFibreRelTol) {
-            if (f.near_jump || f.ode_failed) ++undecided;  // a branch double precision cannot pick, or the ODE gave up
-            else ++bad;
+            if (f.near_jump || f.ode_failed)
+              ++undecided;  // a branch double precision cannot pick, or the ODE gave up
+            else
+              ++bad;
           } else {
             worst = std::max(worst, d);
           }
@@ -404,13 +440,17 @@ const Experiment experiment{
         run.out.macro("ViewsFibreWorst", worst, 2);
         run.out.macro("ViewsFibreUndecided", std::to_string(undecided));
         run.out.macro("ViewsFibreTol", kFibreRelTol, 1);
-        run.out.claim("views.fibre_matches_ode", "Section 3 (beyond)", EvidenceKind::Sampled,
-                      "At every phase of the grid the fibre map (advance of y in one step of T) equals the advance found by "
-                      "independent numerical integration (ode_map.hpp), to {tol} of its largest value.")
+        run.out
+            .claim("views.fibre_matches_ode", "Section 3 (beyond)", EvidenceKind::Sampled,
+                   "At every phase of the grid the fibre map (advance of y in one step of T) equals the advance found by "
+                   "independent numerical integration (ode_map.hpp), to {tol} of its largest value.")
             .ours()
-            .parameter("b_over_a", b).parameter("q_over_a", q)
-            .evidence("failed", failed).evidence("worst_relative_difference", worst)
-            .evidence("worst_relative_difference_simulator", worst_sim).tolerance(kFibreRelTol)
+            .parameter("b_over_a", b)
+            .parameter("q_over_a", q)
+            .evidence("failed", failed)
+            .evidence("worst_relative_difference", worst)
+            .evidence("worst_relative_difference_simulator", worst_sim)
+            .tolerance(kFibreRelTol)
             .cases(checked, bad, undecided);
       }
     }};

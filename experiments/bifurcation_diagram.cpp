@@ -46,9 +46,10 @@ const Experiment experiment{
                 real("q", 0.85, "q/a of the b/a sweep").range(0.5, 0.999).recorded_as("q_of_b_sweep"),
                 real("b", 0.01, "b/a of the q/a sweep").range(1e-5, 0.2).recorded_as("b_of_q_sweep")},
     .outputs = {data("orbits", "phases of the orbit of T after the transient, per parameter value"),
-                data("lyapunov", "Lyapunov exponent (-inf when a step has T' = 0), steps with a stop, period of the computed cycle through t2 (0: none seen), "
-                                "whether double precision resolves that cycle (1: a superstable cycle; 0: none, or a cycle of the rounding) and "
-                                "its margin (superstable.hpp, t2_cycle)"),
+                data("lyapunov",
+                     "Lyapunov exponent (-inf when a step has T' = 0), steps with a stop, period of the computed cycle through t2 (0: none seen), "
+                     "whether double precision resolves that cycle (1: a superstable cycle; 0: none, or a cycle of the rounding) and "
+                     "its margin (superstable.hpp, t2_cycle)"),
                 data("derivative-check", "T' by the implicit function theorem against central differences (every 10th compared phase)")},
     .body = [](Run& run) {
       const int nb = run.count_int("nb"), nq = run.count_int("nq"), transient = run.count_int("transient"), keep = run.count_int("keep");
@@ -144,24 +145,31 @@ const Experiment experiment{
       run.out.macro("BifDerivativeWorst", worst, 2);
       run.out.macro("BifDerivativeCompared", std::to_string(compared));
 
-      run.out.claim("bif.derivative", "Eqs. (11), (17) (beyond)", EvidenceKind::Sampled,
-                    "The derivative of T from the implicit function theorem agrees with central finite differences to {tol} (relative) "
-                    "wherever T is smooth.")
+      run.out
+          .claim("bif.derivative", "Eqs. (11), (17) (beyond)", EvidenceKind::Sampled,
+                 "The derivative of T from the implicit function theorem agrees with central finite differences to {tol} (relative) "
+                 "wherever T is smooth.")
           .ours()
-          .evidence("phases_compared", compared).evidence("worst_relative_difference", worst)
+          .evidence("phases_compared", compared)
+          .evidence("worst_relative_difference", worst)
           .tolerance(kDerivativeRelTol)
           .holds(compared > 0 && worst < kDerivativeRelTol);
       // Not expected: a finding, not an assertion of the paper.
-      run.out.claim("bif.collapse_onto_t2", "Lemma 3, Theorem 2 (beyond)", EvidenceKind::Sampled,
-                    "After the transient, the orbit of a typical phase has met an arc where T = t2 and continues as the orbit of t2; "
-                    "at most parameter values that orbit is a superstable cycle through t2 (T' = 0 on it: a Lyapunov exponent of minus infinity), "
-                    "resolved in double precision (the error propagated along it stays " + format_tolerance(kStopCycleSafety) +
-                    " times inside every stop arc it uses).")
-          .ours().not_expected()
+      run.out
+          .claim("bif.collapse_onto_t2", "Lemma 3, Theorem 2 (beyond)", EvidenceKind::Sampled,
+                 "After the transient, the orbit of a typical phase has met an arc where T = t2 and continues as the orbit of t2; "
+                 "at most parameter values that orbit is a superstable cycle through t2 (T' = 0 on it: a Lyapunov exponent of minus infinity), "
+                 "resolved in double precision (the error propagated along it stays " +
+                     format_tolerance(kStopCycleSafety) + " times inside every stop arc it uses).")
+          .ours()
+          .not_expected()
           .parameter("safety", kStopCycleSafety)
-          .evidence("parameter_values", static_cast<long long>(pts.size())).evidence("superstable_cycle_through_t2", superstable)
-          .evidence("computed_returns_to_t2", returns).evidence("returns_not_resolved", returns - superstable)
-          .evidence("positive_lyapunov", positive).evidence("map_undefined", fails)
+          .evidence("parameter_values", static_cast<long long>(pts.size()))
+          .evidence("superstable_cycle_through_t2", superstable)
+          .evidence("computed_returns_to_t2", returns)
+          .evidence("returns_not_resolved", returns - superstable)
+          .evidence("positive_lyapunov", positive)
+          .evidence("map_undefined", fails)
           .holds(superstable * 2 > static_cast<long long>(pts.size()));
     }};
 

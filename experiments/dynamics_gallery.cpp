@@ -26,10 +26,10 @@ using namespace dfchaos::kit;
 
 namespace {
 
-constexpr double kStepTol = 1e-9;        // simulator's switch phase against T of the previous one
-constexpr double kPenetrationTol = 1e-9; // simulator's advance of the delimiter per step against T's fiber (relative)
-constexpr double kMassTol = 1e-12;       // the invariant density and the atom at t2 sum to one
-constexpr double kLandingTol = 1e-12;    // a hit phase counts as <= t3 up to rounding of the phase
+constexpr double kStepTol = 1e-9;         // simulator's switch phase against T of the previous one
+constexpr double kPenetrationTol = 1e-9;  // simulator's advance of the delimiter per step against T's fiber (relative)
+constexpr double kMassTol = 1e-12;        // the invariant density and the atom at t2 sum to one
+constexpr double kLandingTol = 1e-12;     // a hit phase counts as <= t3 up to rounding of the phase
 
 long long regime_number(Regime r) { return r == Regime::Free ? 0 : (r == Regime::Progression ? 1 : 2); }
 
@@ -64,7 +64,9 @@ const Experiment experiment{
                 count("transient", 1000, "steps of T discarded before every orbit").range(0, 100'000'000).fast_value(100),
                 count("bins", 200, "bins of [t2, t3) for the invariant density").range(10, 100000).fast_value(50),
                 count("grid", 20000, "phases of the grid on which T1 is drawn").range(100, 10'000'000).fast_value(400)},
-    .outputs = {data("", "the gallery's b/a and q/a, and per start of the invariant-density orbits: start, points, atom at t2, points outside [t2, t3), total mass"),
+    .outputs = {data("",
+                     "the gallery's b/a and q/a, and per start of the invariant-density orbits: start, points, atom at t2, points outside [t2, t3), "
+                     "total mass"),
                 data("history", "time history of the full system from rest at the delimiter, on the attractor (t from the start)"),
                 data("history-events", "every regime change of the time history"),
                 data("history-steps", "each step of the history: the simulator's switch phases against T, scenario, advance"),
@@ -130,8 +132,8 @@ const Experiment experiment{
           if (chain != s.chain) ++chain_mismatch;
           ++compared;
           chain_length.push_back(s.chain.size());
-          steps.row({static_cast<long long>(k), t_start - theta0, th, s.T, sw[k]->when.phase, d, std::string(scenario_name(s.scenario)), chain, s.chain,
-                     advance, s.penetration});
+          steps.row({static_cast<long long>(k), t_start - theta0, th, s.T, sw[k]->when.phase, d, std::string(scenario_name(s.scenario)), chain,
+                     s.chain, advance, s.penetration});
           th = sw[k]->when.phase;
           t_start = sw[k]->t;
           y_start = sw[k]->y;
@@ -150,7 +152,10 @@ const Experiment experiment{
         const double t_switch_before = zoom_step == 0 ? theta0 : sw[zoom_step - 1]->t, t_switch = sw[zoom_step]->t;
         double t_impact = t_switch;
         for (const auto& e : sim.events)
-          if (e.t > t_switch_before && e.t <= t_switch && e.kind == TransitionKind::Impact) { t_impact = e.t; break; }
+          if (e.t > t_switch_before && e.t <= t_switch && e.kind == TransitionKind::Impact) {
+            t_impact = e.t;
+            break;
+          }
         const double L = std::max(0.5, t_switch - t_impact);
         const double w0 = std::max(t_switch_before, t_impact - 0.3 * L), w1 = t_switch + 0.3 * L;
         const Simulation before_window = simulate(p, 0, 0, 0, theta0, w0, events_only);
@@ -161,14 +166,17 @@ const Experiment experiment{
         run.out.macro("GalleryZoomStep", std::to_string(zoom_step));
       }
 
-      run.out.claim("gallery.history_follows_T", "Section 3, Lemma 3", EvidenceKind::Sampled,
-                    "Along the simulated time history, each switch to free flight happens at the phase T gives for the previous one "
-                    "(to {tol}), the regimes in between are the chain of the scenario T reports, and the delimiter advances by T's fiber "
-                    "(to 1e-9 relative). The simulator and T share the switching rules (regime_chain.hpp): this checks the "
-                    "bookkeeping of a long run; the independent method is numerical integration (lemma3.integration_agrees).")
+      run.out
+          .claim("gallery.history_follows_T", "Section 3, Lemma 3", EvidenceKind::Sampled,
+                 "Along the simulated time history, each switch to free flight happens at the phase T gives for the previous one "
+                 "(to {tol}), the regimes in between are the chain of the scenario T reports, and the delimiter advances by T's fiber "
+                 "(to 1e-9 relative). The simulator and T share the switching rules (regime_chain.hpp): this checks the "
+                 "bookkeeping of a long run; the independent method is numerical integration (lemma3.integration_agrees).")
           .ours()
-          .parameter("b_over_a", ba).parameter("q_over_a", qa)
-          .evidence("steps_compared", compared).evidence("chain_mismatches", chain_mismatch)
+          .parameter("b_over_a", ba)
+          .parameter("q_over_a", qa)
+          .evidence("steps_compared", compared)
+          .evidence("chain_mismatches", chain_mismatch)
           .evidence("worst_relative_advance_difference", worst_advance)
           .tolerance(kStepTol)
           .evidence("worst_phase_difference", worst_step)
@@ -182,18 +190,24 @@ const Experiment experiment{
         const Orbit orbit(p, theta0, n_impacts);
         for (auto it = orbit.begin(); it != orbit.end(); ++it) {
           const MapStep& s = *it;
-          if (s.hit.hit_velocity == 0) ++grazing;
-          else v_min = std::min(v_min, s.hit.hit_velocity);
+          if (s.hit.hit_velocity == 0)
+            ++grazing;
+          else
+            v_min = std::min(v_min, s.hit.hit_velocity);
           if (s.hit.hit_velocity > 0 && s.chain.rfind("f>p", 0) != 0) ++not_progression;
           impacts.row({it.n(), s.theta, s.hit.t1.phase, s.hit.hit_velocity, s.hit.theta1 - s.theta, std::string(scenario_name(s.scenario)), s.T});
         }
       }
       run.table("impacts", impacts);
-      run.out.claim("gallery.impacts_start_progression", "Section 3", EvidenceKind::Sampled,
-                    "At every impact along the orbit the mass meets the delimiter with a positive velocity and a progression follows "
-                    "(f -> fp -> p); zero-velocity touches (grazing) are counted apart.")
-          .parameter("b_over_a", ba).parameter("q_over_a", qa)
-          .evidence("impacts", n_impacts).evidence("smallest_impact_velocity", v_min).evidence("grazing_touches", grazing)
+      run.out
+          .claim("gallery.impacts_start_progression", "Section 3", EvidenceKind::Sampled,
+                 "At every impact along the orbit the mass meets the delimiter with a positive velocity and a progression follows "
+                 "(f -> fp -> p); zero-velocity touches (grazing) are counted apart.")
+          .parameter("b_over_a", ba)
+          .parameter("q_over_a", qa)
+          .evidence("impacts", n_impacts)
+          .evidence("smallest_impact_velocity", v_min)
+          .evidence("grazing_touches", grazing)
           .evidence("impacts_not_followed_by_progression", not_progression)
           .holds(v_min > 0 && not_progression == 0);
 
@@ -226,11 +240,14 @@ const Experiment experiment{
         graz.row({b_proof, g.z, g.tangency.phase, g.jump, static_cast<long long>(in_L1)});
       }
       run.table("grazing", graz);
-      run.out.claim("gallery.L2_lands_in_L1", "Lemma 4 (proof)", EvidenceKind::Sampled,
-                    "At b/a = b-proof, L2 = [101pi/100, 51pi/50] holds at least three discontinuities z of T1, and every T1(z) "
-                    "lies in L1 = [197pi/100, t3] modulo 2pi, as the proof of Lemma 4 uses.")
-          .parameter("b_over_a", b_proof).parameter("q_over_a", qa)
-          .evidence("discontinuities_in_L2", in_L2).evidence("landing_in_L1", landing_in_L1)
+      run.out
+          .claim("gallery.L2_lands_in_L1", "Lemma 4 (proof)", EvidenceKind::Sampled,
+                 "At b/a = b-proof, L2 = [101pi/100, 51pi/50] holds at least three discontinuities z of T1, and every T1(z) "
+                 "lies in L1 = [197pi/100, t3] modulo 2pi, as the proof of Lemma 4 uses.")
+          .parameter("b_over_a", b_proof)
+          .parameter("q_over_a", qa)
+          .evidence("discontinuities_in_L2", in_L2)
+          .evidence("landing_in_L1", landing_in_L1)
           .holds(in_L2 >= 3 && landing_in_L1 == in_L2);
       run.out.macro("GalleryProofB", b_proof, 2);
       run.out.macro("GalleryLTwoCount", std::to_string(in_L2));
@@ -267,24 +284,34 @@ const Experiment experiment{
         }
         run.out.macro("GallerySecFivePhases", std::to_string(grid));
         run.out.macro("GallerySecFiveDiscontinuities", std::to_string(z_checked));
-        run.out.claim("gallery.sec5_every_theta", "Section 5 (theta in [t2, 5pi/4])", EvidenceKind::Sampled,
-                      "Read for every theta in [t2, 5pi/4], the sentence after Lemma 2 (theta1 = T1(theta) mod 2pi lies in "
-                      "[3pi/2, t3] once b/a is small) is false: at b/a = b and at b/a = b-proof some phases of a grid of "
-                      "[t2, 5pi/4] land outside [3pi/2, t3].")
-              .erratum()
-              .parameter("b_over_a", ba).parameter("b_proof", b_proof).parameter("q_over_a", qa)
-              .evidence("phases_checked", phases_checked).evidence("phases_landing_in_3pi2_t3", all_landed)
-              .evidence("phases_per_b", static_cast<long long>(grid)).evidence("landing_per_b_at_b_and_b_proof", landed_per_b)
-              .evidence("landing_tolerance", kLandingTol)
-              .holds(phases_checked > 0 && every_b_has_outside);
-        run.out.claim("gallery.sec5_at_discontinuities", "Section 5 (theta in [t2, 5pi/4]), Lemma 4 (proof)", EvidenceKind::Sampled,
-                      "Read at the discontinuities z of T1 in [t2, 5pi/4] (where the proof of Lemma 4 uses it), the sentence "
-                      "after Lemma 2 holds at b/a = b and b-proof: every T1(z) mod 2pi lies in [3pi/2, t3], in fact in "
-                      "[7pi/4, t3], since T1(z) + z = pi mod 2pi at a tangency.")
-            .parameter("b_over_a", ba).parameter("b_proof", b_proof).parameter("q_over_a", qa)
-            .evidence("discontinuities_checked", z_checked).evidence("landing_in_3pi2_t3", z_landed)
+        run.out
+            .claim("gallery.sec5_every_theta", "Section 5 (theta in [t2, 5pi/4])", EvidenceKind::Sampled,
+                   "Read for every theta in [t2, 5pi/4], the sentence after Lemma 2 (theta1 = T1(theta) mod 2pi lies in "
+                   "[3pi/2, t3] once b/a is small) is false: at b/a = b and at b/a = b-proof some phases of a grid of "
+                   "[t2, 5pi/4] land outside [3pi/2, t3].")
+            .erratum()
+            .parameter("b_over_a", ba)
+            .parameter("b_proof", b_proof)
+            .parameter("q_over_a", qa)
+            .evidence("phases_checked", phases_checked)
+            .evidence("phases_landing_in_3pi2_t3", all_landed)
+            .evidence("phases_per_b", static_cast<long long>(grid))
+            .evidence("landing_per_b_at_b_and_b_proof", landed_per_b)
+            .evidence("landing_tolerance", kLandingTol)
+            .holds(phases_checked > 0 && every_b_has_outside);
+        run.out
+            .claim("gallery.sec5_at_discontinuities", "Section 5 (theta in [t2, 5pi/4]), Lemma 4 (proof)", EvidenceKind::Sampled,
+                   "Read at the discontinuities z of T1 in [t2, 5pi/4] (where the proof of Lemma 4 uses it), the sentence "
+                   "after Lemma 2 holds at b/a = b and b-proof: every T1(z) mod 2pi lies in [3pi/2, t3], in fact in "
+                   "[7pi/4, t3], since T1(z) + z = pi mod 2pi at a tangency.")
+            .parameter("b_over_a", ba)
+            .parameter("b_proof", b_proof)
+            .parameter("q_over_a", qa)
+            .evidence("discontinuities_checked", z_checked)
+            .evidence("landing_in_3pi2_t3", z_landed)
             .evidence("landing_in_7pi4_t3", z_landed_7pi4)
-            .evidence("smallest_landing_phase", z_min_phase).evidence("landing_tolerance", kLandingTol)
+            .evidence("smallest_landing_phase", z_min_phase)
+            .evidence("landing_tolerance", kLandingTol)
             .holds(z_checked > 0 && z_landed == z_checked && z_landed_7pi4 == z_checked);
       }
 
@@ -303,14 +330,18 @@ const Experiment experiment{
       summary.row({ba, qa, 2LL, start2, h2.steps, h2.at_t2, h2.atom_mass(), h2.outside, h2.total_mass()});
       run.table("", summary);
       const double mass_error = std::max(std::fabs(h1.total_mass() - 1), std::fabs(h2.total_mass() - 1));
-      run.out.claim("gallery.density_normalised", "Introduction (invariant measure)", EvidenceKind::Analytic,
-                    "The histogram density of T on [t2, t3) and the atom at t2 together have mass one, to {tol}: no orbit point is lost.")
+      run.out
+          .claim("gallery.density_normalised", "Introduction (invariant measure)", EvidenceKind::Analytic,
+                 "The histogram density of T on [t2, t3) and the atom at t2 together have mass one, to {tol}: no orbit point is lost.")
           .ours()
-          .evidence("points_per_start", n_orbit).evidence("bins", bins)
+          .evidence("points_per_start", n_orbit)
+          .evidence("bins", bins)
           .at_most("worst_mass_error", mass_error, kMassTol);
-      run.out.claim("gallery.density_support", "Section 3, Theorem 1", EvidenceKind::Sampled,
-                    "T maps [t2, t3) into itself: every point of both orbits lies in [t2, t3).")
-          .evidence("points", h1.steps + h2.steps).evidence("outside", h1.outside + h2.outside)
+      run.out
+          .claim("gallery.density_support", "Section 3, Theorem 1", EvidenceKind::Sampled,
+                 "T maps [t2, t3) into itself: every point of both orbits lies in [t2, t3).")
+          .evidence("points", h1.steps + h2.steps)
+          .evidence("outside", h1.outside + h2.outside)
           .holds(h1.outside + h2.outside == 0);
       // Once a computed orbit meets t2 (a stop arc sends it there exactly), it continues as the
       // computed orbit of t2, and if that returns to t2 it repeats with a fixed period. Whether that
@@ -345,20 +376,26 @@ const Experiment experiment{
       // whose long-run statistics double precision cannot follow: then the verdict is inconclusive.
       const double l1 = l1_distance(h1, h2), noise = std::sqrt(4.0 * bins / (pi * static_cast<double>(n_orbit)));
       Claim& same_density =
-          run.out.claim("gallery.density_independent_of_start", "beyond the paper", EvidenceKind::Sampled,
-                        "The two orbits give the same invariant density: their L1 distance is below {tol}, three times the sampling noise "
-                        "of the histograms.")
-              .ours().not_expected()
-              .evidence("l1_distance", l1).evidence("sampling_noise", noise)
-              .evidence("first_t2_start1", h1.first_t2).evidence("first_t2_start2", h2.first_t2)
-              .evidence("t2_return_start1", h1.t2_return).evidence("t2_return_start2", h2.t2_return)
+          run.out
+              .claim("gallery.density_independent_of_start", "beyond the paper", EvidenceKind::Sampled,
+                     "The two orbits give the same invariant density: their L1 distance is below {tol}, three times the sampling noise "
+                     "of the histograms.")
+              .ours()
+              .not_expected()
+              .evidence("l1_distance", l1)
+              .evidence("sampling_noise", noise)
+              .evidence("first_t2_start1", h1.first_t2)
+              .evidence("first_t2_start2", h2.first_t2)
+              .evidence("t2_return_start1", h1.t2_return)
+              .evidence("t2_return_start2", h2.t2_return)
               .tolerance(3 * noise)
               .holds(l1 < 3 * noise);
       same_density.evidence("t2_orbit_lost_after", lost_after).evidence("t2_orbit_flat_after", flat_after);
       if (collapsed && lost_after >= 0)
-        same_density.inconclusive("both computed orbits reach t2 and from there on are the computed orbit of t2, which double precision "
-                                  "follows only for " + std::to_string(lost_after) +
-                                  " steps (then |(T^k)'(t2)| exceeds 2^52): the two histograms are not two independent samples");
+        same_density.inconclusive(
+            "both computed orbits reach t2 and from there on are the computed orbit of t2, which double precision "
+            "follows only for " +
+            std::to_string(lost_after) + " steps (then |(T^k)'(t2)| exceeds 2^52): the two histograms are not two independent samples");
       const std::string first1 = h1.first_t2 >= 0 ? std::to_string(h1.first_t2) : "no",
                         first2 = h2.first_t2 >= 0 ? std::to_string(h2.first_t2) : "no";
       const long long period = std::max(h1.t2_return, h2.t2_return);
@@ -366,15 +403,17 @@ const Experiment experiment{
       const std::string follow =
           lost_after >= 0 ? "Along the computed orbit of $t_2$ the derivative of $T^k$ exceeds $2^{52}$ after " + std::to_string(lost_after) +
                                 " steps, so from there on double precision no longer follows the exact orbit"
-          : flat_after >= 0 ? "The computed orbit of $t_2$ meets a stop after " + std::to_string(flat_after) +
-                                  " steps with the derivative of $T^k$ still below $2^{52}$"
-                            : "Along " + std::to_string(kFollow) + " steps of the computed orbit of $t_2$ the derivative of $T^k$ stays below $2^{52}$";
+          : flat_after >= 0
+              ? "The computed orbit of $t_2$ meets a stop after " + std::to_string(flat_after) +
+                    " steps with the derivative of $T^k$ still below $2^{52}$"
+              : "Along " + std::to_string(kFollow) + " steps of the computed orbit of $t_2$ the derivative of $T^k$ stays below $2^{52}$";
       std::string collapse;
       if (collapsed)
         collapse = "Both computed orbits meet $t_2$ (at steps " + first1 + " and " + first2 +
                    " from their starts) and then continue as the computed orbit of $t_2$" +
                    (period > 0 ? ", which returns to $t_2$ after " + std::to_string(period) + " steps and from there repeats" : std::string()) +
-                   ". " + follow + (lost_after >= 0 ? ": the two starts do not give independent samples, and their comparison is inconclusive." : ".");
+                   ". " + follow +
+                   (lost_after >= 0 ? ": the two starts do not give independent samples, and their comparison is inconclusive." : ".");
       else if (h1.first_t2 < 0 && h2.first_t2 < 0)
         collapse = "Neither computed orbit meets $t_2$ within its " + std::to_string(transient + n_orbit) + " steps. " + follow + ".";
       else

@@ -40,9 +40,12 @@ const Experiment experiment{
       }
       run.table("", curve);
 
-      run.out.claim("eq1.unique", "Eq. (1)", EvidenceKind::Sampled,
-                    "Eq. (1) has exactly one solution on (0, pi/2]: the residual increases strictly and changes sign once.")
-          .evidence("samples", samples).evidence("sign_changes", sign_changes).evidence("non_increasing_steps", non_increasing)
+      run.out
+          .claim("eq1.unique", "Eq. (1)", EvidenceKind::Sampled,
+                 "Eq. (1) has exactly one solution on (0, pi/2]: the residual increases strictly and changes sign once.")
+          .evidence("samples", samples)
+          .evidence("sign_changes", sign_changes)
+          .evidence("non_increasing_steps", non_increasing)
           .evidence("min_derivative_on_open_interval", min_derivative)
           .holds(sign_changes == 1 && non_increasing == 0 && min_derivative > 0);
 
@@ -50,9 +53,13 @@ const Experiment experiment{
           .evidence("vartheta0", v)
           .at_most("residual", r, 1e-15);
 
-      run.out.claim("eq1.paper_digits", "Eq. (1)", EvidenceKind::Analytic,
-                    "The printed values 0.81047 and 0.724611 are vartheta0 and sin(vartheta0) correctly rounded.")
-          .evidence("vartheta0", v).evidence("sin_vartheta0", s).evidence("paper_vartheta0", 0.81047).evidence("paper_sin_vartheta0", 0.724611)
+      run.out
+          .claim("eq1.paper_digits", "Eq. (1)", EvidenceKind::Analytic,
+                 "The printed values 0.81047 and 0.724611 are vartheta0 and sin(vartheta0) correctly rounded.")
+          .evidence("vartheta0", v)
+          .evidence("sin_vartheta0", s)
+          .evidence("paper_vartheta0", 0.81047)
+          .evidence("paper_sin_vartheta0", 0.724611)
           .holds(std::fabs(v - 0.81047) <= 0.5e-5 && std::fabs(s - 0.724611) <= 0.5e-6);
 
       run.out.macro("VarthetaZero", v, 16);

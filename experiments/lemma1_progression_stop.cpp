@@ -47,7 +47,10 @@ const Experiment experiment{
         bool holds_small = false;
         for (int j = 0; j < nb; ++j) {
           const double ba = b_axis[j];
-          if (!(qa > 2 * ba) || !(std::fabs(qa - 2 * ba) < 1)) { still = still_bound = false; continue; }
+          if (!(qa > 2 * ba) || !(std::fabs(qa - 2 * ba) < 1)) {
+            still = still_bound = false;
+            continue;
+          }
           const Parameters p(1.0, ba, qa);
           const ProgressionFromT0 r = progression_from_t0(p);
           ++grid_cases;
@@ -58,11 +61,18 @@ const Experiment experiment{
           if (r.proof_bound && !r.stops_in_t1_t2) ++bound_without_lemma;
           if (r.stops_in_t1_t2 && seen_fail) ++non_interval;
           if (!r.stops_in_t1_t2) seen_fail = true;
-          if (still && r.stops_in_t1_t2) b0 = ba; else still = false;
-          if (still_bound && r.proof_bound) b0_bound = ba; else still_bound = false;
+          if (still && r.stops_in_t1_t2)
+            b0 = ba;
+          else
+            still = false;
+          if (still_bound && r.proof_bound)
+            b0_bound = ba;
+          else
+            still_bound = false;
           if (j == 0) {
             holds_small = r.stops_in_t1_t2;
-            outcome_small = r.stops_in_t1_t2 ? "stops in [t1,t2]" : (r.next == Regime::Free ? "flies from [t2,t3): scenario D" : "stops again: repeats for ever");
+            outcome_small =
+                r.stops_in_t1_t2 ? "stops in [t1,t2]" : (r.next == Regime::Free ? "flies from [t2,t3): scenario D" : "stops again: repeats for ever");
           }
           if (i % std::max(1, nq / 40) == 0)
             grid.row({qa, ba, static_cast<long long>(r.stops_in_t1_t2), r.eq8_velocity_at_t2, r.proof_bound_value, r.t4_value,
@@ -84,29 +94,42 @@ const Experiment experiment{
       run.table("", curve);
       run.table("grid", grid);
 
-      run.out.claim("lemma1.eq8_agrees", "Lemma 1, Eq. (8)", EvidenceKind::Sampled,
-                    "The sign of the velocity at t2 (Eq. 8) and the root search agree on whether the progression stops by t2.")
+      run.out
+          .claim("lemma1.eq8_agrees", "Lemma 1, Eq. (8)", EvidenceKind::Sampled,
+                 "The sign of the velocity at t2 (Eq. 8) and the root search agree on whether the progression stops by t2.")
           .ours()
-          .evidence("checked", grid_cases).evidence("mismatches", mismatch_eq8)
+          .evidence("checked", grid_cases)
+          .evidence("mismatches", mismatch_eq8)
           .holds(mismatch_eq8 == 0);
-      run.out.claim("lemma1.proof_bound_sufficient", "Lemma 1, proof", EvidenceKind::Sampled,
-                    "Wherever the proof's bound a + a cos t0 - (q-2b)(pi - t0) < 0 holds, the progression does stop in [t1, t2].")
-          .evidence("checked_where_bound_holds", bound_cases).evidence("violations", bound_without_lemma)
+      run.out
+          .claim("lemma1.proof_bound_sufficient", "Lemma 1, proof", EvidenceKind::Sampled,
+                 "Wherever the proof's bound a + a cos t0 - (q-2b)(pi - t0) < 0 holds, the progression does stop in [t1, t2].")
+          .evidence("checked_where_bound_holds", bound_cases)
+          .evidence("violations", bound_without_lemma)
           .holds(bound_without_lemma == 0);
-      run.out.claim("lemma1.small_b", "Lemma 1", EvidenceKind::Sampled,
-                    "For every grid q/a above sin(vartheta0), the progression from rest at t0 stops in [t1, t2] at the smallest b/a of the grid.")
+      run.out
+          .claim("lemma1.small_b", "Lemma 1", EvidenceKind::Sampled,
+                 "For every grid q/a above sin(vartheta0), the progression from rest at t0 stops in [t1, t2] at the smallest b/a of the grid.")
           .parameter("b_over_a", ba_min)
-          .evidence("q_points_above_threshold", n_above).evidence("failures", above_threshold_fail)
+          .evidence("q_points_above_threshold", n_above)
+          .evidence("failures", above_threshold_fail)
           .holds(above_threshold_fail == 0);
-      run.out.claim("lemma1.threshold_sharp", "Lemma 1, Eq. (9)", EvidenceKind::Sampled,
-                    "Below q/a = sin(vartheta0) Lemma 1 fails even for the smallest b/a: the threshold of (2) is sharp for this step of the proof.")
-          .ours().not_expected()
-          .evidence("q_points_below_threshold", n_below).evidence("q_points_below_threshold_where_it_holds", below_threshold_hold)
+      run.out
+          .claim("lemma1.threshold_sharp", "Lemma 1, Eq. (9)", EvidenceKind::Sampled,
+                 "Below q/a = sin(vartheta0) Lemma 1 fails even for the smallest b/a: the threshold of (2) is sharp for this step of the proof.")
+          .ours()
+          .not_expected()
+          .evidence("q_points_below_threshold", n_below)
+          .evidence("q_points_below_threshold_where_it_holds", below_threshold_hold)
           .holds(below_threshold_hold == 0);
-      run.out.claim("lemma1.b0_interval", "Lemma 1", EvidenceKind::Sampled,
-                    "At each q/a the b/a where Lemma 1 holds form an initial interval (0, b0): it never holds again above a failure.")
-          .ours().not_expected()
-          .evidence("q_points", nq).evidence("grid_points_above_a_failure", held_after_failure_checked).evidence("reentries", non_interval)
+      run.out
+          .claim("lemma1.b0_interval", "Lemma 1", EvidenceKind::Sampled,
+                 "At each q/a the b/a where Lemma 1 holds form an initial interval (0, b0): it never holds again above a failure.")
+          .ours()
+          .not_expected()
+          .evidence("q_points", nq)
+          .evidence("grid_points_above_a_failure", held_after_failure_checked)
+          .evidence("reentries", non_interval)
           .holds(non_interval == 0);
 
       // b0 at selected q/a, for the report.
@@ -115,7 +138,7 @@ const Experiment experiment{
       // The bisected threshold of the bound must reproduce it (a check of both).
       LatexTable tex("rrrrr", {"$q/a$", "$b_0/a$ (Lemma 1)", "$b_0/a$ (proof's bound)", "$(q/a-\\sin\\vartheta_0)/2$", "ratio"});
       double ratio_min = INFINITY, ratio_max = 0;  // b0 over the proof's bound, over the rows
-      double worst_formula = 0;                     // |bisected bound - (q/a - sin vartheta0)/2| over the rows
+      double worst_formula = 0;                    // |bisected bound - (q/a - sin vartheta0)/2| over the rows
       int formula_rows = 0;
       for (double qa : {0.73, 0.75, 0.8, 0.85, 0.9, 0.95, 0.99}) {
         const double hi = std::min(0.49, qa / 2);
@@ -130,15 +153,18 @@ const Experiment experiment{
           ratio_min = std::min(ratio_min, b0 / bb);
           ratio_max = std::max(ratio_max, b0 / bb);
         }
-        if (qa == 0.85) { run.out.macro("LemmaOneBzeroAtEightyFive", b0, 4); run.out.macro("LemmaOneBoundAtEightyFive", bb, 4);
+        if (qa == 0.85) {
+          run.out.macro("LemmaOneBzeroAtEightyFive", b0, 4);
+          run.out.macro("LemmaOneBoundAtEightyFive", bb, 4);
           run.out.macro("LemmaOneBoundFormulaAtEightyFive", formula, 4);
         }
       }
       run.latex("lemma1_b0", tex.render());
-      run.out.claim("lemma1.proof_bound_closed_form", "Lemma 1, Eq. (9), Eq. (1)", EvidenceKind::Sampled,
-                    "The largest b/a at which the proof's inequality (9) holds is exactly (q/a - sin(vartheta0))/2: (9) is "
-                    "cot(t0/2) < pi - t0, i.e. t0 > vartheta0, i.e. q - 2b > a sin(vartheta0). The bisected threshold agrees to {tol} "
-                    "at every q/a of the table.")
+      run.out
+          .claim("lemma1.proof_bound_closed_form", "Lemma 1, Eq. (9), Eq. (1)", EvidenceKind::Sampled,
+                 "The largest b/a at which the proof's inequality (9) holds is exactly (q/a - sin(vartheta0))/2: (9) is "
+                 "cot(t0/2) < pi - t0, i.e. t0 > vartheta0, i.e. q - 2b > a sin(vartheta0). The bisected threshold agrees to {tol} "
+                 "at every q/a of the table.")
           .ours()
           .evidence("q_points", formula_rows)
           .at_most("worst_difference", worst_formula, kBoundFormulaTolerance);

@@ -26,8 +26,7 @@ const Experiment experiment{
     .body = [](Run& run) {
       const int n = run.count_int("n"), ode_every = run.count_int("ode-every");
       constexpr double kSimulatorTolerance = 1e-10, kIntegrationTolerance = 1e-7;
-      Table summary({"b_over_a", "q_over_a", "lemma1_holds", "stop_fraction", "lemma3_violations", "max_sim_diff", "max_ode_diff",
-                     "ode_points"});
+      Table summary({"b_over_a", "q_over_a", "lemma1_holds", "stop_fraction", "lemma3_violations", "max_sim_diff", "max_ode_diff", "ode_points"});
       long long viol_with_lemma1 = 0, viol_without = 0, checked_with_lemma1 = 0, checked_without = 0;
       long long sim_compared = 0, ode_compared = 0;
       double sim_worst = 0, ode_worst = 0;
@@ -69,22 +68,30 @@ const Experiment experiment{
       }
       run.table("", summary);
 
-      run.out.claim("lemma3.dichotomy", "Lemma 3", EvidenceKind::Sampled,
-                    "Where Lemma 1 holds, T(theta) is the phase of theta2 if it lies in [t2, t3), and t2 otherwise.")
-          .evidence("checked", checked_with_lemma1).evidence("violations", viol_with_lemma1)
+      run.out
+          .claim("lemma3.dichotomy", "Lemma 3", EvidenceKind::Sampled,
+                 "Where Lemma 1 holds, T(theta) is the phase of theta2 if it lies in [t2, t3), and t2 otherwise.")
+          .evidence("checked", checked_with_lemma1)
+          .evidence("violations", viol_with_lemma1)
           .holds(viol_with_lemma1 == 0);
-      run.out.claim("lemma3.needs_lemma1", "Lemma 3", EvidenceKind::Sampled,
-                    "Where Lemma 1 fails, T also takes values that are neither theta2 mod 2pi nor t2 (scenario D): Lemma 3 depends on Lemma 1.")
-          .ours().not_expected()
-          .evidence("checked_where_lemma1_fails", checked_without).evidence("violations_where_lemma1_fails", viol_without)
-          .holds(viol_without > 0);
-      run.out.claim("lemma3.simulator_agrees", "Section 3, Lemma 3", EvidenceKind::Sampled,
-                    "The full simulator's first switch to free flight has the phase T(theta), to {tol}.")
+      run.out
+          .claim("lemma3.needs_lemma1", "Lemma 3", EvidenceKind::Sampled,
+                 "Where Lemma 1 fails, T also takes values that are neither theta2 mod 2pi nor t2 (scenario D): Lemma 3 depends on Lemma 1.")
           .ours()
-          .evidence("phases_compared", sim_compared).evidence("phases", 3LL * n)
+          .not_expected()
+          .evidence("checked_where_lemma1_fails", checked_without)
+          .evidence("violations_where_lemma1_fails", viol_without)
+          .holds(viol_without > 0);
+      run.out
+          .claim("lemma3.simulator_agrees", "Section 3, Lemma 3", EvidenceKind::Sampled,
+                 "The full simulator's first switch to free flight has the phase T(theta), to {tol}.")
+          .ours()
+          .evidence("phases_compared", sim_compared)
+          .evidence("phases", 3LL * n)
           .at_most("max_phase_difference", sim_worst, kSimulatorTolerance);
-      run.out.claim("lemma3.integration_agrees", "Lemma 3", EvidenceKind::Sampled,
-                    "Numerical integration of the equations of motion (GSL rk8pd, events to 1e-12) gives the same T, to {tol}.")
+      run.out
+          .claim("lemma3.integration_agrees", "Lemma 3", EvidenceKind::Sampled,
+                 "Numerical integration of the equations of motion (GSL rk8pd, events to 1e-12) gives the same T, to {tol}.")
           .ours()
           .evidence("phases_compared", ode_compared)
           .at_most("max_phase_difference", ode_worst, kIntegrationTolerance);

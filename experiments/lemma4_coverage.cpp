@@ -29,12 +29,14 @@ const Experiment experiment{
                 count("scan", 48, "least grid points per continuity branch of T1").range(2, 100000),
                 count("uniform", 8000, "least density, as points over [t2, 3pi/2]").range(0, 1'000'000)},
     .outputs = {data("grid", "Lemma 4 on a (q/a, b/a) grid: (a) the proof's steps, (b) the covering itself"),
-                data("", "per q/a: largest grid b/a below which (a) the proof's construction, (b) the covering, holds at every grid "
-                         "point, and each threshold bisected between that grid point and the next (relative width 1e-3); (b) is a "
-                         "sampled estimate: a covering is checked on a grid when found, and one whose T = t2 arc is narrower than "
-                         "the scan can be missed"),
+                data("",
+                     "per q/a: largest grid b/a below which (a) the proof's construction, (b) the covering, holds at every grid "
+                     "point, and each threshold bisected between that grid point and the next (relative width 1e-3); (b) is a "
+                     "sampled estimate: a covering is checked on a grid when found, and one whose T = t2 arc is narrower than "
+                     "the scan can be missed"),
                 latex("lemma4_b0", "b0 of the construction and of the covering per q/a"),
-                data("eq19", "the step of Lemma 4's proof through (19): discontinuity-free subsegments of L2 of length pi/500 and the drop of T1 on them")},
+                data("eq19",
+                     "the step of Lemma 4's proof through (19): discontinuity-free subsegments of L2 of length pi/500 and the drop of T1 on them")},
     .body = [](Run& run) {
       const int nq = run.count_int("nq"), nb = run.count_int("nb");
       const double ba_min = run.real("ba-min");
@@ -48,8 +50,8 @@ const Experiment experiment{
       const Axis q_axis = Axis::centres(s0, 1, nq), b_axis = Axis::log(ba_min, ba_max, nb);
       constexpr double kThresholdRelTol = 1e-3;  // thresholds are bisected to this relative width
 
-      Table grid({"q_over_a", "b_over_a", "literal_all", "L1_to_t2", "z_in_L2", "branches_cover", "covering_holds", "J0_lo", "J0_hi",
-                  "J1_lo", "J1_hi"});
+      Table grid(
+          {"q_over_a", "b_over_a", "literal_all", "L1_to_t2", "z_in_L2", "branches_cover", "covering_holds", "J0_lo", "J0_hi", "J1_lo", "J1_hi"});
       Table per_q({"q_over_a", "b0_literal_grid", "b0_covering_grid", "covering_some_max_b", "literal_some_max_b", "b0_literal", "b0_covering"});
       long long literal_without_covering = 0, points = 0;
       LatexTable tex("rrrrr", {"$q/a$", "$b_0/a$ (a) proof's steps", "$b_0/a$ (b) covering", "largest $b/a$ with (a)", "largest $b/a$ with (b)"});
@@ -67,8 +69,14 @@ const Experiment experiment{
           if (lit.all() && !cov.holds) ++literal_without_covering;
           if (lit.all()) some_lit = ba;
           if (cov.holds) some_cov = ba;
-          if (lit_run && lit.all()) b0_lit = ba; else lit_run = false;
-          if (cov_run && cov.holds) b0_cov = ba; else cov_run = false;
+          if (lit_run && lit.all())
+            b0_lit = ba;
+          else
+            lit_run = false;
+          if (cov_run && cov.holds)
+            b0_cov = ba;
+          else
+            cov_run = false;
           grid.row({qa, ba, static_cast<long long>(lit.all()), static_cast<long long>(lit.L1_to_t2), lit.discontinuities,
                     static_cast<long long>(lit.branches_cover), static_cast<long long>(cov.holds), cov.holds ? cov.J0.lo : NAN,
                     cov.holds ? cov.J0.hi : NAN, cov.holds ? cov.J1.lo : NAN, cov.holds ? cov.J1.hi : NAN});
@@ -145,12 +153,15 @@ const Experiment experiment{
       for (std::size_t k = 0; k + 1 < b19.size(); ++k)
         if (b19[k] == largest_b_premise)
           b19_threshold = bisect([&](double bb) { return min_abs_slope(Parameters(1.0, bb, 0.85)) >= steep; }, b19[k], b19[k + 1],
-                                 BisectStop{60, 0, kThresholdRelTol}).first;
-      run.out.claim("eq19.step", "Lemma 4, proof, Eq. (19)", EvidenceKind::Sampled,
-                    "For small b/a (here the smallest tried, q/a = 0.85) |T1'| is at least 2pi/(pi/500) on all of L2, so on any "
-                    "discontinuity-free subsegment of L2 of length pi/500 T1 mod 2pi would take every phase, as the step of the proof "
-                    "through (19) needs.")
-          .evidence("largest_b_over_a_tried_where_it_holds", largest_b_premise).evidence("threshold_b_over_a", b19_threshold)
+                                 BisectStop{60, 0, kThresholdRelTol})
+                              .first;
+      run.out
+          .claim("eq19.step", "Lemma 4, proof, Eq. (19)", EvidenceKind::Sampled,
+                 "For small b/a (here the smallest tried, q/a = 0.85) |T1'| is at least 2pi/(pi/500) on all of L2, so on any "
+                 "discontinuity-free subsegment of L2 of length pi/500 T1 mod 2pi would take every phase, as the step of the proof "
+                 "through (19) needs.")
+          .evidence("largest_b_over_a_tried_where_it_holds", largest_b_premise)
+          .evidence("threshold_b_over_a", b19_threshold)
           .evidence("required_slope", steep)
           .holds(premise_at_smallest);
       run.out.macro("EqNineteenThreshold", b19_threshold, 2);
@@ -161,10 +172,12 @@ const Experiment experiment{
       ex.parameter("a", 1.0).parameter("b", 1e-3).parameter("q", 0.85);
       if (c.holds) ex.evidence("J0", Json::array().push(c.J0.lo).push(c.J0.hi)).evidence("J1", Json::array().push(c.J1.lo).push(c.J1.hi));
       ex.holds(c.holds);
-      run.out.claim("lemma4.proof_implies_covering", "Lemma 4, proof", EvidenceKind::Sampled,
-                    "Wherever every step of the paper's construction goes through, the covering search finds J0, J1 too.")
+      run.out
+          .claim("lemma4.proof_implies_covering", "Lemma 4, proof", EvidenceKind::Sampled,
+                 "Wherever every step of the paper's construction goes through, the covering search finds J0, J1 too.")
           .ours()
-          .evidence("grid_points", points).evidence("construction_without_covering", literal_without_covering)
+          .evidence("grid_points", points)
+          .evidence("construction_without_covering", literal_without_covering)
           .holds(literal_without_covering == 0);
     }};
 

@@ -60,9 +60,10 @@ const Experiment experiment{
     .outputs = {data("line", "drilling rate against b/a at fixed q/a (mean, min and max over the initial phases)"),
                 data("plane", "drilling rate over the (q/a, b/a) plane, with the relative spread over initial phases"),
                 data("simulator-check", "rate from the map's fiber against the simulator's delimiter position, same time span"),
-                data("basins", "at the (up to) three b/a of the line with the largest spread: the rate, the Lyapunov exponent and the "
-                               "period of a superstable cycle through t2 (0: none) against the initial phase (200 cell centres of "
-                               "[t2, t3), 20 in --fast)")},
+                data("basins",
+                     "at the (up to) three b/a of the line with the largest spread: the rate, the Lyapunov exponent and the "
+                     "period of a superstable cycle through t2 (0: none) against the initial phase (200 cell centres of "
+                     "[t2, t3), 20 in --fast)")},
     .body = [](Run& run) {
       const int nb = run.count_int("nb"), plane_n = run.count_int("plane-n"), starts = run.count_int("starts");
       const long long steps = run.count("steps"), transient = run.count("transient");
@@ -88,8 +89,10 @@ const Experiment experiment{
         const Rate& r = rates[k].value;
         const bool failed = rates[k].failed;
         const double spread = failed ? NAN : (r.max - r.min) / std::max(1e-300, std::fabs(r.mean));
-        if (failed) ++failures;
-        else worst_spread = std::max(worst_spread, spread);
+        if (failed)
+          ++failures;
+        else
+          worst_spread = std::max(worst_spread, spread);
         if (k < static_cast<std::size_t>(nb))
           line.row({pts[k].first, pts[k].second, r.mean, r.min, r.max, r.mean / pts[k].first, static_cast<long long>(failed)});
         else
@@ -107,7 +110,8 @@ const Experiment experiment{
             const Rate& r = rates[static_cast<std::size_t>(j)].value;
             by_spread.push_back({(r.max - r.min) / std::max(1e-300, std::fabs(r.mean)), j});
           }
-        std::sort(by_spread.begin(), by_spread.end(), [](const auto& x, const auto& y) { return x.first > y.first || (x.first == y.first && x.second < y.second); });
+        std::sort(by_spread.begin(), by_spread.end(),
+                  [](const auto& x, const auto& y) { return x.first > y.first || (x.first == y.first && x.second < y.second); });
         if (by_spread.size() > 3) by_spread.resize(3);
         const int n_phases = run.fast() ? 20 : 200;
         std::vector<std::pair<double, double>> cells;  // (b/a, theta0)
@@ -117,7 +121,8 @@ const Experiment experiment{
           for (int k = 0; k < n_phases; ++k) cells.push_back({line_b[j], th[k]});
         }
         const auto basin = sweep_list<OrbitStatistics, std::pair<double, double>>(
-            cells, [&](const std::pair<double, double>& c) { return orbit_statistics(Parameters(1.0, c.first, q_fixed), c.second, transient, steps); },
+            cells,
+            [&](const std::pair<double, double>& c) { return orbit_statistics(Parameters(1.0, c.first, q_fixed), c.second, transient, steps); },
             "basins");
         Table basins({"b_over_a", "q_over_a", "theta0", "rate", "lyapunov", "flat_steps", "period_of_t2", "failed"});
         for (std::size_t k = 0; k < cells.size(); ++k) {
@@ -153,14 +158,19 @@ const Experiment experiment{
         run.out.macro("RateBasinCyclesResolved", std::to_string(resolved));
         run.out.macro("RateBasinCyclesLongest", std::to_string(longest));
         Claim& basin_cycles =
-            run.out.claim("rate.basin_cycles_resolved", "Section 8, Theorem 2 (beyond)", EvidenceKind::Sampled,
-                          "Where starts of the basin grids fall onto a cycle through t2, that cycle is a superstable cycle resolved in "
-                          "double precision (superstable.hpp, t2_cycle: every step with a stop is taken at least " +
-                              format_tolerance(kStopCycleSafety) + " times the propagated error inside its stop arc).")
+            run.out
+                .claim("rate.basin_cycles_resolved", "Section 8, Theorem 2 (beyond)", EvidenceKind::Sampled,
+                       "Where starts of the basin grids fall onto a cycle through t2, that cycle is a superstable cycle resolved in "
+                       "double precision (superstable.hpp, t2_cycle: every step with a stop is taken at least " +
+                           format_tolerance(kStopCycleSafety) + " times the propagated error inside its stop arc).")
                 .ours()
-                .parameter("safety", kStopCycleSafety).parameter("step_error", kStopCycleStepError)
-                .evidence("values", static_cast<long long>(by_spread.size())).evidence("values_with_a_cycle", cycles)
-                .evidence("resolved", resolved).evidence("failed", cycle_failed).evidence("longest_period", longest)
+                .parameter("safety", kStopCycleSafety)
+                .parameter("step_error", kStopCycleStepError)
+                .evidence("values", static_cast<long long>(by_spread.size()))
+                .evidence("values_with_a_cycle", cycles)
+                .evidence("resolved", resolved)
+                .evidence("failed", cycle_failed)
+                .evidence("longest_period", longest)
                 .evidence("worst_margin", cycles > cycle_failed ? worst_margin : 0.0);
         // With no cycle on the grids (a coarse run) there is nothing to assert: reported, not expected.
         if (cycles == 0) basin_cycles.not_expected();
@@ -189,24 +199,31 @@ const Experiment experiment{
         check.row({ba, qa, r_map, r_sim, rel});
       }
       run.table("simulator-check", check);
-      const Rate& at01 = rates[static_cast<std::size_t>(std::min(nb - 1, static_cast<int>(std::lround((nb - 1) * std::log(100.0) / std::log(3000.0)))))].value;
+      const Rate& at01 =
+          rates[static_cast<std::size_t>(std::min(nb - 1, static_cast<int>(std::lround((nb - 1) * std::log(100.0) / std::log(3000.0)))))].value;
       run.out.macro("RateWorstSpread", worst_spread, 2);
       run.out.macro("RateSimulatorDiff", worst_check, 2);
       run.out.macro("RateAtOneHundredth", at01.mean, 3);
       run.out.macro("RateFailures", std::to_string(failures));
 
-      run.out.claim("rate.simulator_agrees", "Section 3 (skew product, beyond)", EvidenceKind::Sampled,
-                    "The delimiter advance carried by the map (the fiber) equals the full simulator's, to {tol} relative, over the same span.")
+      run.out
+          .claim("rate.simulator_agrees", "Section 3 (skew product, beyond)", EvidenceKind::Sampled,
+                 "The delimiter advance carried by the map (the fiber) equals the full simulator's, to {tol} relative, over the same span.")
           .ours()
-          .evidence("parameter_sets", check_sets).evidence("map_steps", check_steps)
+          .evidence("parameter_sets", check_sets)
+          .evidence("map_steps", check_steps)
           .evidence("worst_relative_difference", worst_check)
           .tolerance(kSimulatorRelTol)
           .holds(worst_check < kSimulatorRelTol);
       // Not expected: a finding. Where orbits collapse onto the cycle of t2 the spread vanishes; elsewhere it need not.
-      run.out.claim("rate.independent_of_start", "beyond the paper", EvidenceKind::Sampled,
-                    "The drilling rate is a property of the parameters: its relative spread over initial phases stays below {tol}.")
-          .ours().not_expected()
-          .evidence("worst_relative_spread", worst_spread).evidence("parameter_values", static_cast<long long>(pts.size())).evidence("failed", failures)
+      run.out
+          .claim("rate.independent_of_start", "beyond the paper", EvidenceKind::Sampled,
+                 "The drilling rate is a property of the parameters: its relative spread over initial phases stays below {tol}.")
+          .ours()
+          .not_expected()
+          .evidence("worst_relative_spread", worst_spread)
+          .evidence("parameter_values", static_cast<long long>(pts.size()))
+          .evidence("failed", failures)
           .tolerance(kSpreadTol)
           .holds(worst_spread < kSpreadTol);
     }};

@@ -10,8 +10,8 @@
 /// steps, on a superstable cycle that double precision resolves; \f$\lambda > 0\f$ the expanding regime where
 /// Theorem 1's covering is found. Every cell is independent: the output does not depend on the
 /// number of threads, and equals the sweep tool's (tested by plane_lyapunov_vs_sweep).
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <string>
 #include <utility>
@@ -60,11 +60,21 @@ const Experiment experiment{
         const bool ok = !c.failed && c.value.status == sweep::CellStatus::Ok;
         const sweep::CellValues& v = c.value;
         t.row({v.q_over_a, v.b_over_a, std::string(ok ? "ok" : c.failed ? "error" : sweep::status_name(v.status)), v.lyapunov});
-        if (!ok) { ++n_err; continue; }
-        if (std::isinf(v.lyapunov) && v.lyapunov < 0) ++n_stop;
-        else if (v.lyapunov > 0) ++n_pos;
-        else ++n_neg;
-        if (v.lyapunov > lmax) { lmax = v.lyapunov; qmax = v.q_over_a; bmax = v.b_over_a; }
+        if (!ok) {
+          ++n_err;
+          continue;
+        }
+        if (std::isinf(v.lyapunov) && v.lyapunov < 0)
+          ++n_stop;
+        else if (v.lyapunov > 0)
+          ++n_pos;
+        else
+          ++n_neg;
+        if (v.lyapunov > lmax) {
+          lmax = v.lyapunov;
+          qmax = v.q_over_a;
+          bmax = v.b_over_a;
+        }
       }
       run.table("", t);
 
@@ -124,28 +134,42 @@ const Experiment experiment{
       }
       const long long n_cells = spec.cells();
       const long long n_no_return = n_stop - n_cycle_failed - n_resolved - n_unresolved_return;
-      run.out.claim("plane.lyapunov_both_regimes", "Theorems 1 and 2", EvidenceKind::Sampled,
-                    "Over the plane, orbits with a positive Lyapunov exponent (the expanding regime of Theorem 1) and orbits "
-                    "that meet a stop arc, where T' = 0 and lambda is minus infinity, both occur.")
+      run.out
+          .claim("plane.lyapunov_both_regimes", "Theorems 1 and 2", EvidenceKind::Sampled,
+                 "Over the plane, orbits with a positive Lyapunov exponent (the expanding regime of Theorem 1) and orbits "
+                 "that meet a stop arc, where T' = 0 and lambda is minus infinity, both occur.")
           .ours()
-          .evidence("cells", n_cells).evidence("positive", n_pos).evidence("stop", n_stop)
+          .evidence("cells", n_cells)
+          .evidence("positive", n_pos)
+          .evidence("stop", n_stop)
           .evidence("finite_nonpositive", n_neg)
-          .evidence("errors", n_err).evidence("max_lyapunov", lmax).evidence("max_at_q_over_a", qmax).evidence("max_at_b_over_a", bmax)
+          .evidence("errors", n_err)
+          .evidence("max_lyapunov", lmax)
+          .evidence("max_at_q_over_a", qmax)
+          .evidence("max_at_b_over_a", bmax)
           .holds(n_pos > 0 && n_stop > 0);
       // Not expected: a finding. An orbit that meets a stop goes on as the orbit of the stop's image,
       // which need not be periodic.
-      run.out.claim("plane.stop_cells_superstable", "Section 8, Theorem 2 (beyond)", EvidenceKind::Sampled,
-                    "In every cell whose orbit meets a stop, the orbit of the last stop's image closes, within " +
-                        std::to_string(kCycleMaxPeriod) +
-                        " steps, on a superstable cycle (followed by stop_cycle, superstable.hpp): there lambda = minus infinity marks "
-                        "an attracting cycle. A cell decides against it when its orbit keeps its propagated error small and does not close "
-                        "(or the search gives up); a cell whose error was lost, or whose stop arc is narrower than the safety margin, is "
-                        "undecided in double precision.")
-          .ours().not_expected()
-          .parameter("max_steps", kCycleMaxPeriod).parameter("safety", kStopCycleSafety).parameter("step_error", kStopCycleStepError)
-          .evidence("stop", n_stop).evidence("image_not_t2", n_not_t2).evidence("resolved_cycle", n_resolved)
-          .evidence("return_not_resolved", n_unresolved_return).evidence("return_not_resolved_error_lost", n_unresolved_lost)
-          .evidence("no_return", n_no_return).evidence("no_return_error_lost", n_no_return_lost).evidence("failed", n_cycle_failed)
+      run.out
+          .claim("plane.stop_cells_superstable", "Section 8, Theorem 2 (beyond)", EvidenceKind::Sampled,
+                 "In every cell whose orbit meets a stop, the orbit of the last stop's image closes, within " + std::to_string(kCycleMaxPeriod) +
+                     " steps, on a superstable cycle (followed by stop_cycle, superstable.hpp): there lambda = minus infinity marks "
+                     "an attracting cycle. A cell decides against it when its orbit keeps its propagated error small and does not close "
+                     "(or the search gives up); a cell whose error was lost, or whose stop arc is narrower than the safety margin, is "
+                     "undecided in double precision.")
+          .ours()
+          .not_expected()
+          .parameter("max_steps", kCycleMaxPeriod)
+          .parameter("safety", kStopCycleSafety)
+          .parameter("step_error", kStopCycleStepError)
+          .evidence("stop", n_stop)
+          .evidence("image_not_t2", n_not_t2)
+          .evidence("resolved_cycle", n_resolved)
+          .evidence("return_not_resolved", n_unresolved_return)
+          .evidence("return_not_resolved_error_lost", n_unresolved_lost)
+          .evidence("no_return", n_no_return)
+          .evidence("no_return_error_lost", n_no_return_lost)
+          .evidence("failed", n_cycle_failed)
           .evidence("counterexamples_q_b", counterexamples)
           // A cell decides against the claim only where its orbit kept its error small and still did not
           // close (no return within the bound, error not lost), or where the search gave up; a cycle seen
@@ -153,18 +177,22 @@ const Experiment experiment{
           // precision cannot decide.
           .cases(n_stop, n_no_return - n_no_return_lost + n_cycle_failed, n_stop - n_resolved - (n_no_return - n_no_return_lost) - n_cycle_failed)
           .holds(n_stop > 0 && n_resolved == n_stop);
-      Claim& nudged = run.out.claim("plane.stop_cycles_nudged", "Section 8 (beyond)", EvidenceKind::Sampled,
-                    "Second check of stop_cycle's verdicts: in every cell where it resolves the cycle, the orbit moved by " +
-                        format_tolerance(kNudge) + " after its first step closes the cycle at the same step (stop_cycle_survives_shift).")
-          .ours()
-          .evidence("resolved", n_resolved).evidence("resolved_nudged_same", n_resolved_nudged_same)
-          .evidence("not_resolved_returns", n_unresolved_return).evidence("not_resolved_nudged_same", n_unresolved_nudged_same);
+      Claim& nudged =
+          run.out
+              .claim("plane.stop_cycles_nudged", "Section 8 (beyond)", EvidenceKind::Sampled,
+                     "Second check of stop_cycle's verdicts: in every cell where it resolves the cycle, the orbit moved by " +
+                         format_tolerance(kNudge) + " after its first step closes the cycle at the same step (stop_cycle_survives_shift).")
+              .ours()
+              .evidence("resolved", n_resolved)
+              .evidence("resolved_nudged_same", n_resolved_nudged_same)
+              .evidence("not_resolved_returns", n_unresolved_return)
+              .evidence("not_resolved_nudged_same", n_unresolved_nudged_same);
       if (n_resolved == 0) nudged.not_expected();  // nothing resolved (a coarse grid): nothing to check
       nudged.holds(n_resolved > 0 && n_resolved_nudged_same == n_resolved);
-      run.out.claim("plane.lyapunov_computed", "Theorem 1", EvidenceKind::Sampled,
-                    "Every cell's orbit was followed without error.")
+      run.out.claim("plane.lyapunov_computed", "Theorem 1", EvidenceKind::Sampled, "Every cell's orbit was followed without error.")
           .ours()
-          .evidence("cells", n_cells).evidence("errors", n_err)
+          .evidence("cells", n_cells)
+          .evidence("errors", n_err)
           .holds(n_err == 0);
       run.out.macro("LyapN", std::to_string(n));
       run.out.macro("LyapCells", std::to_string(n_cells));

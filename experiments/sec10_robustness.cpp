@@ -32,15 +32,16 @@ const Experiment experiment{
     .title = "Section 10: the covering of Lemma 4 under a smooth perturbation of the force",
     .paper = {"Section 10", "Lemma 4", "Theorem 1"},
     .tests = {"test_perturbed", "test_beyond", "test_covering"},
-    .options = {real("b", 0.01, "b/a (a = 1); the perturbed map is integrated, at a cost growing like a/b").range(1e-3, 0.2).recorded_as("b_over_a"),
-                real("q", 0.95, "q/a; assumption (2) asks sin(vartheta0) < q/a < 1").range(1e-3, 1).recorded_as("q_over_a"),
-                count("global", 600, "grid points of [t2, 3pi/2) for the search of the perturbed covering anywhere").range(20, 100000).fast_value(150),
-                count("n", 400, "grid points per widened segment").range(20, 100000).fast_value(60),
-                count("n-check", 200, "phases of the eps = 0 validation").range(2, 100000).fast_value(20)},
-    .outputs = {data("", "covering by the perturbed map near J0, J1, per eps: u where T_eps = t2_eps, w where T_eps >= 3pi/2, continuity "
-                         "between; near_J_search says whether that search finished (otherwise u, w, covers are not known)"),
-                data("graph", "T_eps on the widened segments"),
-                data("validation", "eps = 0: the integrated perturbed map against the exact T"),
+    .options =
+        {real("b", 0.01, "b/a (a = 1); the perturbed map is integrated, at a cost growing like a/b").range(1e-3, 0.2).recorded_as("b_over_a"),
+         real("q", 0.95, "q/a; assumption (2) asks sin(vartheta0) < q/a < 1").range(1e-3, 1).recorded_as("q_over_a"),
+         count("global", 600, "grid points of [t2, 3pi/2) for the search of the perturbed covering anywhere").range(20, 100000).fast_value(150),
+         count("n", 400, "grid points per widened segment").range(20, 100000).fast_value(60),
+         count("n-check", 200, "phases of the eps = 0 validation").range(2, 100000).fast_value(20)},
+    .outputs = {data("",
+                     "covering by the perturbed map near J0, J1, per eps: u where T_eps = t2_eps, w where T_eps >= 3pi/2, continuity "
+                     "between; near_J_search says whether that search finished (otherwise u, w, covers are not known)"),
+                data("graph", "T_eps on the widened segments"), data("validation", "eps = 0: the integrated perturbed map against the exact T"),
                 data("global", "per eps: the perturbed covering searched on all of [t2, 3pi/2): segments found, integrations that gave up"),
                 latex("sec10_robustness", "per eps: t2_eps and whether the perturbed map covers [t2_eps, 3pi/2] near J0, J1 and anywhere")},
     .body = [](Run& run) {
@@ -65,14 +66,14 @@ const Experiment experiment{
 
       const Lemma4Covering c = lemma4_covering(p);
       if (!c.holds) throw InvalidParameter("b", "a parameter set where the covering of Lemma 4 holds (none found at " + p.describe() + ")");
-      const std::vector<double> epsilons = run.fast() ? std::vector<double>{0, 1e-3, 1e-1}
-                                                      : std::vector<double>{0, 1e-4, 3e-4, 1e-3, 3e-3, 1e-2, 3e-2, 1e-1, 3e-1};
+      const std::vector<double> epsilons =
+          run.fast() ? std::vector<double>{0, 1e-3, 1e-1} : std::vector<double>{0, 1e-4, 3e-4, 1e-3, 3e-3, 1e-2, 3e-2, 1e-1, 3e-1};
       PerturbedCoveringSearch search;
       search.grid = run.count_int("n");
       Table table({"eps", "t2_eps", "near_J_search", "J0_covers", "J0_u", "J0_w", "J1_covers", "J1_u", "J1_w"});
       Table graph({"eps", "segment", "theta", "T_eps"});
-      LatexTable tex("rrcrcrl", {"$\\varepsilon$", "$t_2^\\varepsilon$", "near $J_0$", "$u_0$", "near $J_1$", "$u_1$",
-                                  "covering (near $J_i$ or anywhere)"});
+      LatexTable tex("rrcrcrl",
+                     {"$\\varepsilon$", "$t_2^\\varepsilon$", "near $J_0$", "$u_0$", "near $J_1$", "$u_1$", "covering (near $J_i$ or anywhere)"});
       Table global({"eps", "t2_eps", "samples", "gave_up", "segments", "first_lo", "first_hi", "second_lo", "second_hi", "outcome"});
       double persists_up_to = -1, persists_near_up_to = -1, first_failure = NAN;
       std::string first_failure_outcome = "none";
@@ -108,10 +109,11 @@ const Experiment experiment{
           last_u0 = r.u[0];
         }
         for (const PerturbedSample& s : samples) graph.row({eps, static_cast<long long>(s.segment), s.theta, s.T});
-        if (unbroken_near && r.both()) persists_near_up_to = eps;
-        else unbroken_near = false;
-        table.row({eps, t2e, near_search, static_cast<long long>(r.covers[0]), r.u[0], r.w[0], static_cast<long long>(r.covers[1]), r.u[1],
-                   r.w[1]});
+        if (unbroken_near && r.both())
+          persists_near_up_to = eps;
+        else
+          unbroken_near = false;
+        table.row({eps, t2e, near_search, static_cast<long long>(r.covers[0]), r.u[0], r.w[0], static_cast<long long>(r.covers[1]), r.u[1], r.w[1]});
         // The same question without the restriction to the neighbourhood of J0, J1.
         std::string outcome, cell;
         PerturbedGlobalCovering gc;
@@ -137,7 +139,8 @@ const Experiment experiment{
           outcome = "stop release moved";
           cell = "no: a stop no longer ends near $t_2$";
         }
-        if (unbroken && covering) persists_up_to = eps;
+        if (unbroken && covering)
+          persists_up_to = eps;
         else if (unbroken) {
           unbroken = false;
           first_failure = eps;
@@ -171,18 +174,24 @@ const Experiment experiment{
       run.out.macro("SecTenUZeroBack", std::isfinite(first_u0_back) ? format_significant(first_u0_back, 2) : std::string("none"));
       run.out.macro("SecTenQ", q, 3);
 
-      run.out.claim("sec10.validation", "Section 10 (numerics)", EvidenceKind::Sampled,
-                    "At eps = 0 the integrated perturbed map agrees with the exact T to {tol} at every validation phase.")
+      run.out
+          .claim("sec10.validation", "Section 10 (numerics)", EvidenceKind::Sampled,
+                 "At eps = 0 the integrated perturbed map agrees with the exact T to {tol} at every validation phase.")
           .ours()
-          .parameter("b_over_a", b).parameter("q_over_a", q).parameter("phases", n_check)
+          .parameter("b_over_a", b)
+          .parameter("q_over_a", q)
+          .parameter("phases", n_check)
           .evidence("worst_difference", worst)
           .tolerance(kValidationTol)
           .holds(worst < kValidationTol);
-      run.out.claim("sec10.covering_persists", "Section 10", EvidenceKind::Sampled,
-                    "The covering of Lemma 4 persists under the perturbation for all eps up to some positive value (here: every tried eps "
-                    "up to the reported one).")
-          .parameter("b_over_a", b).parameter("q_over_a", q)
-          .evidence("largest_eps_with_covering", persists_up_to).evidence("largest_eps_with_covering_near_J", persists_near_up_to)
+      run.out
+          .claim("sec10.covering_persists", "Section 10", EvidenceKind::Sampled,
+                 "The covering of Lemma 4 persists under the perturbation for all eps up to some positive value (here: every tried eps "
+                 "up to the reported one).")
+          .parameter("b_over_a", b)
+          .parameter("q_over_a", q)
+          .evidence("largest_eps_with_covering", persists_up_to)
+          .evidence("largest_eps_with_covering_near_J", persists_near_up_to)
           .evidence("eps_tried", static_cast<long long>(epsilons.size()))
           .holds(persists_up_to > 0);
     }};

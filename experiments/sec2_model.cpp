@@ -46,11 +46,13 @@ const Experiment experiment{
           ++grid_points;
           if (!(p.assumptions().eq2 && p.t0() && p.t2() && *p.t0() < *p.t1() && *p.t2() < *p.t3() && p.c() < 0)) ++violations;
         }
-      run.out.claim("eq2.phases_and_progression_end", "Eq. (2)", EvidenceKind::Sampled,
-                    "Under (2) with b/a < sin(vartheta0)/2 (so that q > 2b), both F - q and F change sign (t0 < t1 and t2 < t3 "
-                    "exist) and c = b - q/2 < 0, so every progression ends: the map T is defined.")
+      run.out
+          .claim("eq2.phases_and_progression_end", "Eq. (2)", EvidenceKind::Sampled,
+                 "Under (2) with b/a < sin(vartheta0)/2 (so that q > 2b), both F - q and F change sign (t0 < t1 and t2 < t3 "
+                 "exist) and c = b - q/2 < 0, so every progression ends: the map T is defined.")
           .ours()
-          .evidence("grid_points", grid_points).evidence("violations", violations)
+          .evidence("grid_points", grid_points)
+          .evidence("violations", violations)
           .holds(violations == 0 && grid_points > 0);
 
       // Eqs. (3), (6), (7): closed forms against integration of x'' = a sin t + C.
@@ -65,8 +67,8 @@ const Experiment experiment{
         const ProgressionMotion g(p, Instant::from_time(t0), x0, std::fabs(v0));
         const auto [xf, vf] = integrate_forced_motion(1.0, 2 * b, t0, x0, v0, t0 + dt);
         const auto [xg, vg] = integrate_forced_motion(1.0, 2 * b - q, t0, x0, std::fabs(v0), t0 + dt);
-        for (auto [name, xc, xi, vc, vi] : {std::tuple{"free (3)", f.position(t), xf, f.velocity(t), vf},
-                                            std::tuple{"progression (6)", g.position(t), xg, g.velocity(t), vg}}) {
+        for (auto [name, xc, xi, vc, vi] :
+             {std::tuple{"free (3)", f.position(t), xf, f.velocity(t), vf}, std::tuple{"progression (6)", g.position(t), xg, g.velocity(t), vg}}) {
           worst = std::max({worst, std::fabs(xc - xi) / (1 + std::fabs(xi)), std::fabs(vc - vi) / (1 + std::fabs(vi))});
           if (k < 100) cf.row({std::string(name), b, q, t0, x0, v0, dt, xc, xi, vc, vi});
         }
@@ -83,11 +85,14 @@ const Experiment experiment{
         worst7 = std::max(worst7, std::fabs(v7 - v) / (1 + std::fabs(v)));
       }
       run.table("closed-forms", cf);
-      run.out.claim("eq3_7.closed_forms", "Eqs. (3)-(7)", EvidenceKind::Sampled,
-                    "The closed-form solutions of the free regime (3) and of the progression (6), and the velocity (7) from rest at t0, "
-                    "agree with numerical integration of the equations of motion (GSL rk8pd) to {tol} (relative to 1 + |value|) at "
-                    "random states and durations up to 50.")
-          .evidence("states", static_cast<long long>(n)).evidence("worst_eq3_eq6", worst).evidence("worst_eq7", worst7)
+      run.out
+          .claim("eq3_7.closed_forms", "Eqs. (3)-(7)", EvidenceKind::Sampled,
+                 "The closed-form solutions of the free regime (3) and of the progression (6), and the velocity (7) from rest at t0, "
+                 "agree with numerical integration of the equations of motion (GSL rk8pd) to {tol} (relative to 1 + |value|) at "
+                 "random states and durations up to 50.")
+          .evidence("states", static_cast<long long>(n))
+          .evidence("worst_eq3_eq6", worst)
+          .evidence("worst_eq7", worst7)
           .at_most("worst", std::max(worst, worst7), kClosedFormTol);
 
       // Eq. (5) and Eq. (10): from random initial states at parameters of (2), the simulated motion
@@ -120,11 +125,15 @@ const Experiment experiment{
         if (k < 200) reach.row({b, q, t0, gap, v0, first, phase, viol});
       }
       run.table("reach", reach);
-      run.out.claim("eq10.reached_from_any_state", "Section 3, Eq. (10)", EvidenceKind::Sampled,
-                    "Whatever the initial state, the motion reaches a start of free flight from rest at the delimiter (Eq. 10) at a phase of "
-                    "[t2, t3) (within 60 periods after the longest possible first flight), and every stop is at rest at the delimiter (Eq. 5).")
-          .evidence("initial_states", static_cast<long long>(n)).evidence("reached", reached).evidence("not_reached", not_reached)
-          .evidence("stops", stops).evidence("violations", stop_violations)
+      run.out
+          .claim("eq10.reached_from_any_state", "Section 3, Eq. (10)", EvidenceKind::Sampled,
+                 "Whatever the initial state, the motion reaches a start of free flight from rest at the delimiter (Eq. 10) at a phase of "
+                 "[t2, t3) (within 60 periods after the longest possible first flight), and every stop is at rest at the delimiter (Eq. 5).")
+          .evidence("initial_states", static_cast<long long>(n))
+          .evidence("reached", reached)
+          .evidence("not_reached", not_reached)
+          .evidence("stops", stops)
+          .evidence("violations", stop_violations)
           .holds(not_reached == 0 && stop_violations == 0);
       run.out.macro("SecTwoClosedFormWorst", std::max(worst, worst7), 2);
       run.out.macro("SecTwoStates", std::to_string(n));

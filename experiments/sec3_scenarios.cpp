@@ -44,8 +44,7 @@ const Experiment experiment{
                 latex("sec3_counts", "scenario counts per parameter set")},
     .body = [](Run& run) {
       const int n = run.count_int("n");
-      const std::vector<std::pair<double, double>> sets = {{0.01, 0.85}, {0.05, 0.85}, {0.1, 0.95},
-                                                           {0.002, 0.8}, {0.05, 0.7},  {0.01, 0.6}};
+      const std::vector<std::pair<double, double>> sets = {{0.01, 0.85}, {0.05, 0.85}, {0.1, 0.95}, {0.002, 0.8}, {0.05, 0.7}, {0.01, 0.6}};
       Table counts({"b_over_a", "q_over_a", "lemma1_holds", "A", "B", "C", "D", "G", "other"});
       Table arcs({"b_over_a", "q_over_a", "scenario", "theta_lo", "theta_hi", "points"});
       LatexTable counts_tex("rrcrrrrrr", {"$b/a$", "$q/a$", "Lemma 1", "A", "B", "C", "D", "grazing", "other"});
@@ -119,17 +118,23 @@ const Experiment experiment{
                       std::string(part) + " tail: rest at the delimiter at t3, " + p.describe());
       }
 
-      run.out.claim("sec3.no_stop_in_t0_t1", "Section 3", EvidenceKind::Sampled,
-                    "A progression never stops while the phase is inside (t0, t1), where F exceeds q.")
-          .evidence("progression_ends_examined", progression_ends).evidence("ends_inside", stops_inside)
+      run.out
+          .claim("sec3.no_stop_in_t0_t1", "Section 3", EvidenceKind::Sampled,
+                 "A progression never stops while the phase is inside (t0, t1), where F exceeds q.")
+          .evidence("progression_ends_examined", progression_ends)
+          .evidence("ends_inside", stops_inside)
           .holds(stops_inside == 0 && progression_ends > 0);
-      run.out.claim("sec3.scenarios_complete", "Section 3", EvidenceKind::Sampled,
-                    "Every step of T on the grids follows one of the listed scenarios (A, B, C, D, or a grazing touch).")
-          .evidence("steps_checked", steps_checked).evidence("other_chains", other)
+      run.out
+          .claim("sec3.scenarios_complete", "Section 3", EvidenceKind::Sampled,
+                 "Every step of T on the grids follows one of the listed scenarios (A, B, C, D, or a grazing touch).")
+          .evidence("steps_checked", steps_checked)
+          .evidence("other_chains", other)
           .holds(other == 0);
-      run.out.claim("sec3.lemma1_excludes_D", "Section 3, Lemma 1", EvidenceKind::Sampled,
-                    "Where Lemma 1's conclusion holds, scenario D does not occur.")
-          .evidence("steps_where_lemma1_holds", steps_where_lemma1_holds).evidence("D_steps_where_lemma1_holds", d_with_lemma1)
+      run.out
+          .claim("sec3.lemma1_excludes_D", "Section 3, Lemma 1", EvidenceKind::Sampled,
+                 "Where Lemma 1's conclusion holds, scenario D does not occur.")
+          .evidence("steps_where_lemma1_holds", steps_where_lemma1_holds)
+          .evidence("D_steps_where_lemma1_holds", d_with_lemma1)
           .holds(d_with_lemma1 == 0);
       run.out.macro("SecThreeScenariosMet", met);
 
@@ -162,12 +167,15 @@ const Experiment experiment{
               ++q_le_4b_eq7_negative;
             }
           }
-        run.out.claim("sec3.eq7_negative_at_t3", "Section 3, Eq. (7)", EvidenceKind::Analytic,
-                      "Under (2), cos t3 > cos t0 holds exactly when q > 4b (cos^2 t3 - cos^2 t0 = q(q - 4b)/a^2, both "
-                      "cosines non-negative), and then (7) is negative at t3: the paper's 'b << q' here means b < q/4. "
-                      "Checked against the library's t0, t3 on a grid of (q/a, b/a) over (2).")
-            .evidence("grid_points", points).evidence("points_within_tie_tolerance_skipped", ties)
-            .evidence("cos_order_mismatches", order_mismatch).evidence("points_with_q_gt_4b", q_gt_4b)
+        run.out
+            .claim("sec3.eq7_negative_at_t3", "Section 3, Eq. (7)", EvidenceKind::Analytic,
+                   "Under (2), cos t3 > cos t0 holds exactly when q > 4b (cos^2 t3 - cos^2 t0 = q(q - 4b)/a^2, both "
+                   "cosines non-negative), and then (7) is negative at t3: the paper's 'b << q' here means b < q/4. "
+                   "Checked against the library's t0, t3 on a grid of (q/a, b/a) over (2).")
+            .evidence("grid_points", points)
+            .evidence("points_within_tie_tolerance_skipped", ties)
+            .evidence("cos_order_mismatches", order_mismatch)
+            .evidence("points_with_q_gt_4b", q_gt_4b)
             .evidence("q_gt_4b_with_eq7_not_negative", eq7_not_negative)
             .evidence("q_le_4b_with_eq7_still_negative", q_le_4b_eq7_negative)
             .evidence("tie_tolerance", kTieTol)

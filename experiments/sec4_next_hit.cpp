@@ -27,7 +27,7 @@ const Experiment experiment{
       const double qa = 0.85;
       run.out.parameter("q_over_a", qa);
       constexpr double kClosedFormTolerance = 1e-10;  // |z (grazing search) - z (closed form)|
-      constexpr double kCosSumTolerance = 1e-12;       // |cos theta1 + cos theta| "zero to rounding"
+      constexpr double kCosSumTolerance = 1e-12;      // |cos theta1 + cos theta| "zero to rounding"
 
       // The graph of T1 at two values of b/a.
       for (double ba : {0.05, 0.01}) {
@@ -66,7 +66,10 @@ const Experiment experiment{
           if (std::cos(th) < 0) {
             const double C = flight / (std::fabs(std::cos(th)) / ba);
             ++phases_cos_negative;
-            if (C < Cmin) { Cmin = C; thmin = th; }
+            if (C < Cmin) {
+              Cmin = C;
+              thmin = th;
+            }
             Cmax = std::max(Cmax, C);
           } else if (th > 1.5 * pi) {
             ++phases_cos_positive;
@@ -81,25 +84,33 @@ const Experiment experiment{
       }
       run.table("asymptotics", asym);
 
-      run.out.claim("eq12.second_derivative", "Eq. (12)", EvidenceKind::Sampled,
-                    "At t = theta the right-hand side of (12) has the larger second derivative for every theta in [t2, t3): "
-                    "-sin(theta) >= 2b/a there (the paper's stated reason, sin(theta) <= -b/a, is not enough by itself).")
-          .evidence("phases_checked", phases_checked).evidence("b_over_a_values", static_cast<long long>(bas.size()))
+      run.out
+          .claim("eq12.second_derivative", "Eq. (12)", EvidenceKind::Sampled,
+                 "At t = theta the right-hand side of (12) has the larger second derivative for every theta in [t2, t3): "
+                 "-sin(theta) >= 2b/a there (the paper's stated reason, sin(theta) <= -b/a, is not enough by itself).")
+          .evidence("phases_checked", phases_checked)
+          .evidence("b_over_a_values", static_cast<long long>(bas.size()))
           .evidence("violations", second_violations)
           .holds(second_ok);
-      run.out.claim("eq12.flight_starts_below", "Eq. (12)", EvidenceKind::Sampled,
-                    "Just after theta (at t = theta + 1e-3) the mass is behind the delimiter (G1 < 0).")
-          .evidence("phases_checked", phases_checked).evidence("b_over_a_values", static_cast<long long>(bas.size()))
+      run.out
+          .claim("eq12.flight_starts_below", "Eq. (12)", EvidenceKind::Sampled,
+                 "Just after theta (at t = theta + 1e-3) the mass is behind the delimiter (G1 < 0).")
+          .evidence("phases_checked", phases_checked)
+          .evidence("b_over_a_values", static_cast<long long>(bas.size()))
           .evidence("violations", starts_above)
           .holds(starts_below);
-      run.out.claim("eq12.short_flight", "Section 4", EvidenceKind::Sampled,
-                    "For theta in (3pi/2, t3), where cos(theta) > 0, the flight lasts less than 2 pi.")
-          .evidence("phases_checked", phases_cos_positive).evidence("holds_for_all_b_over_a", short_ok)
+      run.out
+          .claim("eq12.short_flight", "Section 4", EvidenceKind::Sampled,
+                 "For theta in (3pi/2, t3), where cos(theta) > 0, the flight lasts less than 2 pi.")
+          .evidence("phases_checked", phases_cos_positive)
+          .evidence("holds_for_all_b_over_a", short_ok)
           .holds(short_ok);
-      run.out.claim("eq13.bound", "Eq. (13)", EvidenceKind::Sampled,
-                    "The flight time is at least C (a/b)|cos theta| with a C > 0 independent of theta and of small b/a "
-                    "(the paper writes cos theta, negative on this range; |cos theta| is meant).")
-          .evidence("phases_checked", phases_cos_negative).evidence("b_over_a_values", static_cast<long long>(bas.size()))
+      run.out
+          .claim("eq13.bound", "Eq. (13)", EvidenceKind::Sampled,
+                 "The flight time is at least C (a/b)|cos theta| with a C > 0 independent of theta and of small b/a "
+                 "(the paper writes cos theta, negative on this range; |cos theta| is meant).")
+          .evidence("phases_checked", phases_cos_negative)
+          .evidence("b_over_a_values", static_cast<long long>(bas.size()))
           .evidence("C_min_over_all_b_over_a", C_floor)
           .holds(C_floor > 0.5);
       run.out.macro("EqThirteenCfloor", C_floor, 4);
@@ -127,10 +138,12 @@ const Experiment experiment{
       }
       run.table("eq16", t16);
       run.table("eq16-summary", s16);
-      run.out.claim("eq16.bounded", "Eq. (16)", EvidenceKind::Sampled,
-                    "At every discontinuity cos(theta1) + cos(theta) = O(1/(theta1 - theta)); measured: the product stays below 4 "
-                    "(in fact the sum vanishes to rounding: see eq16.exact).")
-          .evidence("discontinuities", eq16_points).evidence("max_abs_product", worst)
+      run.out
+          .claim("eq16.bounded", "Eq. (16)", EvidenceKind::Sampled,
+                 "At every discontinuity cos(theta1) + cos(theta) = O(1/(theta1 - theta)); measured: the product stays below 4 "
+                 "(in fact the sum vanishes to rounding: see eq16.exact).")
+          .evidence("discontinuities", eq16_points)
+          .evidence("max_abs_product", worst)
           .holds(eq16_points > 0 && worst <= 4 + 1e-9);
       run.out.macro("EqSixteenMaxProduct", format_significant(worst, 2));
       // All discontinuities of T1 on [t2, t3): the numerical finder against the closed form.
@@ -143,23 +156,30 @@ const Experiment experiment{
         const auto z = grazing_points(p, *p.t2() + 1e-12, 1.5 * pi, scan);
         const auto c = symmetric_tangencies(p, *p.t2() + 1e-12, 1.5 * pi);
         closed_form_points += static_cast<long long>(c.size());
-        if (z.size() != c.size()) ++mismatch;
+        if (z.size() != c.size())
+          ++mismatch;
         else
           for (std::size_t k = 0; k < z.size(); ++k)
             if (std::fabs(z[k].z - c[k].z) > kClosedFormTolerance) ++mismatch;
       }
-      run.out.claim("t1.discontinuities_closed_form", "Section 4, Eq. (14) (beyond)", EvidenceKind::Sampled,
-                    "T1 is continuous on (3pi/2, t3); on [t2, 3pi/2] its discontinuities are exactly the solutions of "
-                    "2z - (a/b) cos z = (2k+1) pi.")
+      run.out
+          .claim("t1.discontinuities_closed_form", "Section 4, Eq. (14) (beyond)", EvidenceKind::Sampled,
+                 "T1 is continuous on (3pi/2, t3); on [t2, 3pi/2] its discontinuities are exactly the solutions of "
+                 "2z - (a/b) cos z = (2k+1) pi.")
           .ours()
-          .evidence("parameter_sets", closed_form_sets).evidence("closed_form_solutions", closed_form_points)
-          .evidence("discontinuities_right_of_3pi_2", right_of_three_halves).evidence("parameter_sets_with_mismatch", mismatch)
+          .evidence("parameter_sets", closed_form_sets)
+          .evidence("closed_form_solutions", closed_form_points)
+          .evidence("discontinuities_right_of_3pi_2", right_of_three_halves)
+          .evidence("parameter_sets_with_mismatch", mismatch)
           .evidence("z_tolerance", kClosedFormTolerance)
           .holds(right_of_three_halves == 0 && mismatch == 0);
-      run.out.claim("eq16.exact", "Eq. (16) (beyond)", EvidenceKind::Analytic,
-                    "At every discontinuity found on [t2, 3pi/2], cos(theta1) = -cos(theta) to rounding: the remainder in (16) is zero.")
+      run.out
+          .claim("eq16.exact", "Eq. (16) (beyond)", EvidenceKind::Analytic,
+                 "At every discontinuity found on [t2, 3pi/2], cos(theta1) = -cos(theta) to rounding: the remainder in (16) is zero.")
           .ours()
-          .evidence("discontinuities", eq16_points).evidence("max_abs_cos_sum", worst_sum).evidence("tolerance", kCosSumTolerance)
+          .evidence("discontinuities", eq16_points)
+          .evidence("max_abs_cos_sum", worst_sum)
+          .evidence("tolerance", kCosSumTolerance)
           .holds(eq16_points > 0 && worst_sum < kCosSumTolerance);
       run.out.macro("EqSixteenMaxCosSum", format_significant(worst_sum, 2));
 
@@ -209,14 +229,17 @@ const Experiment experiment{
         }
       }
       run.table("eq14-second-factor", t14);
-      run.out.claim("eq14.second_factor_not_first_contact", "Eq. (14), Eq. (16) (beyond)", EvidenceKind::Sampled,
-                    "The second factor of the elimination, s cos(s/2) = 2 sin(s/2), gives double roots of G1 at theta + s with "
-                    "F(theta + s) = -F(theta) > 0: for a start in (t2, t3) they are minima of G1 after an earlier contact, never "
-                    "T1(theta), so they are not discontinuities of T1. Checked: T1(theta) < theta + s and |F(theta) + F(theta + s)| "
-                    "below {tol} at every such start in (t2, t3).")
+      run.out
+          .claim("eq14.second_factor_not_first_contact", "Eq. (14), Eq. (16) (beyond)", EvidenceKind::Sampled,
+                 "The second factor of the elimination, s cos(s/2) = 2 sin(s/2), gives double roots of G1 at theta + s with "
+                 "F(theta + s) = -F(theta) > 0: for a start in (t2, t3) they are minima of G1 after an earlier contact, never "
+                 "T1(theta), so they are not discontinuities of T1. Checked: T1(theta) < theta + s and |F(theta) + F(theta + s)| "
+                 "below {tol} at every such start in (t2, t3).")
           .ours()
-          .evidence("starts_checked", second_cases).evidence("first_contacts", second_first_contact)
-          .evidence("max_abs_F_sum", second_worst_sum).evidence("min_theta_plus_s_minus_T1", second_min_gap)
+          .evidence("starts_checked", second_cases)
+          .evidence("first_contacts", second_first_contact)
+          .evidence("max_abs_F_sum", second_worst_sum)
+          .evidence("min_theta_plus_s_minus_T1", second_min_gap)
           .tolerance(kSecondFactorTolerance)
           .holds(second_cases > 0 && second_first_contact == 0 && second_worst_sum < kSecondFactorTolerance);
       run.out.macro("EqFourteenSecondFactorStarts", std::to_string(second_cases));

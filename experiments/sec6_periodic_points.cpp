@@ -18,21 +18,21 @@ using namespace dfchaos;
 using namespace dfchaos::kit;
 
 namespace {
-constexpr double kStepTol = 1e-10;        // |T(x_j) - x_{j+1}| and the literal |T^m(p) - p|
-constexpr double kDistinctTol = 1e-12;    // orbit points closer than this are not distinct doubles
+constexpr double kStepTol = 1e-10;      // |T(x_j) - x_{j+1}| and the literal |T^m(p) - p|
+constexpr double kDistinctTol = 1e-12;  // orbit points closer than this are not distinct doubles
 }  // namespace
 
 const Experiment experiment{
     .title = "Section 6: periodic points of every period with itinerary (0..01)",
     .paper = {"Section 6", "Eq. (20)", "Theorem 1", "Lemma 4", "Section 10"},
     .tests = {"test_symbolic", "test_covering"},
-    .options = {real("b", 0.01, "b/a (a = 1); below 1e-6 the orbits need more precision than the double-precision checks resolve, and the cost grows").range(1e-6, 0.5).recorded_as("b_over_a"),
+    .options = {real("b", 0.01, "b/a (a = 1); below 1e-6 the orbits need more precision than the double-precision checks resolve, and the cost grows")
+                    .range(1e-6, 0.5)
+                    .recorded_as("b_over_a"),
                 real("q", 0.95, "q/a; assumption (2) asks sin(vartheta0) < q/a < 1").range(1e-3, 1).recorded_as("q_over_a"),
                 count("m-max", 20, "largest period").range(1, 200).fast_value(6)},
-    .outputs = {data("", "periodic points of T with itinerary (0^(m-1) 1)^infinity"),
-                data("orbits", "their orbits"),
-                data("cobweb*", "cobweb path of the period-3 orbit (itinerary 001); only when m-max >= 3"),
-                data("graph", "T on [t2, t3)"),
+    .outputs = {data("", "periodic points of T with itinerary (0^(m-1) 1)^infinity"), data("orbits", "their orbits"),
+                data("cobweb*", "cobweb path of the period-3 orbit (itinerary 001); only when m-max >= 3"), data("graph", "T on [t2, t3)"),
                 data("segments", "the covering segments J0, J1 of Lemma 4 and the target [t2, 3pi/2] they cover"),
                 data("continuity", "the ends of K0, K1 (T(K_i) = [t2, 3pi/2]) at b/a (1 + delta): how far they move"),
                 latex("sec6_periodic", "per period: first point, step residual, expansion, closest points")},
@@ -69,9 +69,10 @@ const Experiment experiment{
           cobweb.row({orb.x[0], orb.x[0]});
         }
         for (int j = 0; j < m; ++j)
-          orbits.row({static_cast<long long>(m), static_cast<long long>(j), orb.x[static_cast<std::size_t>(j)], std::string(1, w[static_cast<std::size_t>(j)])});
-        tex.row({std::to_string(m), format_significant(orb.x[0], 16), format_significant(orb.max_step_residual, 2), format_significant(orb.log_expansion, 4),
-                 m == 1 ? std::string("---") : format_significant(orb.min_separation, 2)});
+          orbits.row({static_cast<long long>(m), static_cast<long long>(j), orb.x[static_cast<std::size_t>(j)],
+                      std::string(1, w[static_cast<std::size_t>(j)])});
+        tex.row({std::to_string(m), format_significant(orb.x[0], 16), format_significant(orb.max_step_residual, 2),
+                 format_significant(orb.log_expansion, 4), m == 1 ? std::string("---") : format_significant(orb.min_separation, 2)});
         if (!(orb.itinerary_ok && orb.max_step_residual < kStepTol && (std::isnan(literal) || literal < kStepTol))) ++bad;
         if (m == 1 || orb.min_separation > kDistinctTol) ++separated;
         worst_res = std::max(worst_res, orb.max_step_residual);
@@ -109,10 +110,13 @@ const Experiment experiment{
         image_error = std::max({image_error, circle_distance(T(p, gi.k_at_t2), t2), std::fabs(T(p, gi.k_at_top) - gi.top)});
         monotone = monotone && gi.monotone;
       }
-      run.out.claim("lemma4.remark_exact_image", "Lemma 4, Remark", EvidenceKind::Sampled,
-                    "Each J_i contains a segment K_i on which T is monotone with T(K_i) = [t2, 3pi/2] exactly: T = t2 at one end, "
-                    "T = 3pi/2 at the other to {tol}, monotone on a grid of K_i.")
-          .evidence("end_image_error", image_error).evidence("monotone_on_grid", monotone).tolerance(kStepTol)
+      run.out
+          .claim("lemma4.remark_exact_image", "Lemma 4, Remark", EvidenceKind::Sampled,
+                 "Each J_i contains a segment K_i on which T is monotone with T(K_i) = [t2, 3pi/2] exactly: T = t2 at one end, "
+                 "T = 3pi/2 at the other to {tol}, monotone on a grid of K_i.")
+          .evidence("end_image_error", image_error)
+          .evidence("monotone_on_grid", monotone)
+          .tolerance(kStepTol)
           .holds(image_error <= kStepTol && monotone);
 
       // Section 10: the segments can be chosen to depend continuously on the parameters. The ends of
@@ -155,33 +159,46 @@ const Experiment experiment{
       }
       run.out.macro("SecSixContLargestDelta", deltas.empty() ? 0.0 : deltas.front(), 1);
       run.out.macro("SecSixContSmallestDelta", deltas.empty() ? 0.0 : deltas.back(), 1);
-      run.out.claim("sec10.segments_continuous", "Section 10", EvidenceKind::Sampled,
-                    "The segments K0, K1 can be chosen to depend continuously on the parameters: when b/a changes by a factor 1 + delta, "
-                    "for the deltas among 1e-3 ... 1e-12 at which they still map exactly onto [t2, 3pi/2] (at least three), their ends "
-                    "move less and less, roughly in proportion to delta.")
+      run.out
+          .claim("sec10.segments_continuous", "Section 10", EvidenceKind::Sampled,
+                 "The segments K0, K1 can be chosen to depend continuously on the parameters: when b/a changes by a factor 1 + delta, "
+                 "for the deltas among 1e-3 ... 1e-12 at which they still map exactly onto [t2, 3pi/2] (at least three), their ends "
+                 "move less and less, roughly in proportion to delta.")
           .evidence("deltas_exact", static_cast<long long>(deltas.size()))
-          .evidence("shift_over_delta_min", ratio_lo).evidence("shift_over_delta_max", ratio_hi)
+          .evidence("shift_over_delta_min", ratio_lo)
+          .evidence("shift_over_delta_max", ratio_hi)
           .holds(cont_ok && ratio_hi < 100 * ratio_lo);
 
-      run.out.claim("sec6.periodic_points", "Section 6, Eq. (20), Theorem 1", EvidenceKind::Sampled,
-                    "For every m up to m-max there is a periodic orbit with itinerary (0^(m-1)1)^infinity: every point lies in its "
-                    "segment K_0 or K_1, and T sends each point to the next to within {tol}.")
-          .parameter("b_over_a", b).parameter("q_over_a", q).parameter("m_max", m_max)
-          .evidence("periods_checked", m_max).evidence("failures", bad).evidence("max_step_residual", worst_res)
+      run.out
+          .claim("sec6.periodic_points", "Section 6, Eq. (20), Theorem 1", EvidenceKind::Sampled,
+                 "For every m up to m-max there is a periodic orbit with itinerary (0^(m-1)1)^infinity: every point lies in its "
+                 "segment K_0 or K_1, and T sends each point to the next to within {tol}.")
+          .parameter("b_over_a", b)
+          .parameter("q_over_a", q)
+          .parameter("m_max", m_max)
+          .evidence("periods_checked", m_max)
+          .evidence("failures", bad)
+          .evidence("max_step_residual", worst_res)
           .evidence("gap_between_K0_and_K1", gap)
           .tolerance(kStepTol)
           .holds(bad == 0);
-      run.out.claim("sec6.minimal_period", "Section 6", EvidenceKind::Sampled,
-                    "Each of these orbits has minimal period m: K0 and K1 are disjoint (gap far above the residuals) and a shift of "
-                    "the word 0^(m-1)1 by 0 < j < m differs from it, so T^j(p) != p.")
-          .evidence("periods_checked", m_max).evidence("gap_between_K0_and_K1", gap).evidence("max_step_residual", worst_res)
+      run.out
+          .claim("sec6.minimal_period", "Section 6", EvidenceKind::Sampled,
+                 "Each of these orbits has minimal period m: K0 and K1 are disjoint (gap far above the residuals) and a shift of "
+                 "the word 0^(m-1)1 by 0 < j < m differs from it, so T^j(p) != p.")
+          .evidence("periods_checked", m_max)
+          .evidence("gap_between_K0_and_K1", gap)
+          .evidence("max_step_residual", worst_res)
           .holds(bad == 0 && gap > 1e3 * worst_res);
       // Not expected: the expansion |T'|^m puts the points of a long 0-run closer than double precision.
-      run.out.claim("sec6.numerically_distinct", "Section 6 (numerics)", EvidenceKind::Sampled,
-                    "The orbit points are also told apart in double precision (separation > {tol}) for every m; a period whose "
-                    "points come closer is one double precision cannot decide (their minimal period separates them), not a failure.")
-          .ours().not_expected()
-          .evidence("periods_separated", separated).evidence("periods", m_max)
+      run.out
+          .claim("sec6.numerically_distinct", "Section 6 (numerics)", EvidenceKind::Sampled,
+                 "The orbit points are also told apart in double precision (separation > {tol}) for every m; a period whose "
+                 "points come closer is one double precision cannot decide (their minimal period separates them), not a failure.")
+          .ours()
+          .not_expected()
+          .evidence("periods_separated", separated)
+          .evidence("periods", m_max)
           .tolerance(kDistinctTol)
           .cases(m_max, 0, m_max - separated);
       run.out.macro("SecSixPeriods", std::to_string(m_max));

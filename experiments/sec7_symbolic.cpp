@@ -25,7 +25,9 @@ const Experiment experiment{
     .title = "Section 7: symbolic dynamics on J0, J1",
     .paper = {"Section 7"},
     .tests = {"test_symbolic", "test_entropy"},
-    .options = {real("b", 0.01, "b/a (a = 1); below 1e-6 the orbits need more precision than the double-precision checks resolve, and the cost grows").range(1e-6, 0.5).recorded_as("b_over_a"),
+    .options = {real("b", 0.01, "b/a (a = 1); below 1e-6 the orbits need more precision than the double-precision checks resolve, and the cost grows")
+                    .range(1e-6, 0.5)
+                    .recorded_as("b_over_a"),
                 real("q", 0.95, "q/a; assumption (2) asks sin(vartheta0) < q/a < 1").range(1e-3, 1).recorded_as("q_over_a"),
                 count("n-max", 12, "longest word length").range(1, 20).fast_value(5),
                 count("lap-grid", 400000, "grid points for the lap counts of T^n").range(100, 100'000'000).fast_value(20000).unrecorded()},
@@ -51,8 +53,10 @@ const Experiment experiment{
         double res = 0, floor_n = 0;
         for_each_word(p, g, n, [&](const ItineraryOrbit& orb) {
           // H o T = S o H: the orbit of x0 visits K_{w_j} at step j, so T(x0) = x1 has itinerary S(w).
-          if (orb.itinerary_ok && orb.max_step_residual < kStepTol) ++realised;
-          else if (orb.itinerary_ok && orb.max_step_residual <= orb.precision_floor) ++undecided_n;
+          if (orb.itinerary_ok && orb.max_step_residual < kStepTol)
+            ++realised;
+          else if (orb.itinerary_ok && orb.max_step_residual <= orb.precision_floor)
+            ++undecided_n;
           res = std::max(res, orb.max_step_residual);
           floor_n = std::max(floor_n, orb.precision_floor);
         });
@@ -100,12 +104,17 @@ const Experiment experiment{
       }
       run.table("cylinders", cyl);
       run.out.macro("SecSevenCylinderShrink", worst_ratio > 0 ? 1.0 / worst_ratio : 0.0, 2);
-      auto& coding = run.out.claim("sec7.coding_continuous", "Section 7", EvidenceKind::Sampled,
-                    "The coding H is continuous on J: the widest set of points sharing an itinerary prefix of length k shrinks, with "
-                    "each added letter, to at most {tol} of its width (k up to 8), so nearby points of J share long prefixes.")
-          .evidence("widest_ratio", worst_ratio).evidence("k_max", k_max).evidence("widest_at_k_max", widest[static_cast<std::size_t>(k_max)])
-          .evidence("resolution", resolution).evidence("resolved_ratios", resolved_ratios).evidence("k_resolved", k_resolved)
-          .tolerance(0.5);
+      auto& coding = run.out
+                         .claim("sec7.coding_continuous", "Section 7", EvidenceKind::Sampled,
+                                "The coding H is continuous on J: the widest set of points sharing an itinerary prefix of length k shrinks, with "
+                                "each added letter, to at most {tol} of its width (k up to 8), so nearby points of J share long prefixes.")
+                         .evidence("widest_ratio", worst_ratio)
+                         .evidence("k_max", k_max)
+                         .evidence("widest_at_k_max", widest[static_cast<std::size_t>(k_max)])
+                         .evidence("resolution", resolution)
+                         .evidence("resolved_ratios", resolved_ratios)
+                         .evidence("k_resolved", k_resolved)
+                         .tolerance(0.5);
       if (resolved_ratios < 2)
         coding.inconclusive("only " + std::to_string(resolved_ratios) + " ratio(s) of cylinder widths lie above the resolution " +
                             format_double(resolution) + " of the inverse branches in double precision");
@@ -123,9 +132,14 @@ const Experiment experiment{
                               " but below what double precision resolves along their orbits (up to " + format_double(worst_floor) + ")";
       auto& all = run.out.claim("sec7.all_words", "Section 7", EvidenceKind::Sampled,
                                 "Every binary word of length n <= n-max is the itinerary of an orbit through K0, K1 (2^n words).");
-      all.parameter("b_over_a", b).parameter("q_over_a", q).parameter("n_max", n_max)
-          .evidence("missing_words", missing).evidence("undecided_words", undecided).evidence("max_step_residual", worst)
-          .evidence("max_precision_floor", worst_floor).evidence("words_checked", (1LL << (n_max + 1)) - 2);
+      all.parameter("b_over_a", b)
+          .parameter("q_over_a", q)
+          .parameter("n_max", n_max)
+          .evidence("missing_words", missing)
+          .evidence("undecided_words", undecided)
+          .evidence("max_step_residual", worst)
+          .evidence("max_precision_floor", worst_floor)
+          .evidence("words_checked", (1LL << (n_max + 1)) - 2);
       if (missing == 0 && undecided > 0) all.inconclusive(why);
       all.holds(missing == 0);
       auto& ent = run.out.claim("sec7.entropy_bound", "Section 7", EvidenceKind::Sampled,

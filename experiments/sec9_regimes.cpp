@@ -27,9 +27,9 @@ using EB = EventualBehaviour;
 constexpr double kInstantStopShare = 1e-8;  // at q = 2b: largest share of time stopped that counts as instantaneous stops
 
 struct Case {
-  std::string name;     ///< part name of the time-history table
-  double b, q;          ///< with a = 1
-  std::string remark;   ///< what the Remark predicts (LaTeX: the relations in math mode)
+  std::string name;         ///< part name of the time-history table
+  double b, q;              ///< with a = 1
+  std::string remark;       ///< what the Remark predicts (LaTeX: the relations in math mode)
   std::vector<EB> allowed;  ///< the behaviours that agree with it
 };
 
@@ -68,8 +68,8 @@ const Experiment experiment{
                 latex("sec9_regimes", "per case: what the Remark predicts, what is observed, agreement")},
     .body = [](Run& run) {
       const double periods = run.real("periods"), window = periods / 4;
-      Table t({"case", "b_over_a", "q_over_a", "v0", "t0", "behaviour", "fraction_free", "fraction_progression", "fraction_stop",
-               "events_in_window", "last_free_time", "stick_stop_from_t1_min", "stick_stop_from_t1_max"});
+      Table t({"case", "b_over_a", "q_over_a", "v0", "t0", "behaviour", "fraction_free", "fraction_progression", "fraction_stop", "events_in_window",
+               "last_free_time", "stick_stop_from_t1_min", "stick_stop_from_t1_max"});
       // Paragraph columns for the two texts, so that the table fits the text width.
       LatexTable tex("lrr>{\\raggedright\\arraybackslash}p{5.6cm}>{\\raggedright\\arraybackslash}p{3.2cm}l",
                      {"case", "$b/a$", "$q/a$", "the Remark predicts", "observed (all starts)", "agrees"});
@@ -84,11 +84,13 @@ const Experiment experiment{
           const auto [v0, t0] = starts[k];
           const EventualRegime r = eventual_regime(p, v0, t0, periods, window);
           const std::string name = eventual_behaviour_name(r.behaviour);
-          t.row({c.name, c.b, c.q, v0, t0, name, r.fraction_free, r.fraction_progression, r.fraction_stop,
-                 static_cast<long long>(r.events_in_window), r.last_free_time, r.stick_stop_phase_min, r.stick_stop_phase_max});
+          t.row({c.name, c.b, c.q, v0, t0, name, r.fraction_free, r.fraction_progression, r.fraction_stop, static_cast<long long>(r.events_in_window),
+                 r.last_free_time, r.stick_stop_phase_min, r.stick_stop_phase_max});
           if (std::find(c.allowed.begin(), c.allowed.end(), r.behaviour) == c.allowed.end()) ok = false;
-          if (k == 0) first = r.behaviour;
-          else if (r.behaviour != first) same = false;
+          if (k == 0)
+            first = r.behaviour;
+          else if (r.behaviour != first)
+            same = false;
           if (seen.find(name) == std::string::npos) seen += (seen.empty() ? "" : ", ") + name;
         }
         if (!ok) ++disagreements;
@@ -142,23 +144,29 @@ const Experiment experiment{
             }
           }
         }
-      run.out.claim("sec9.overlap", "Section 9, Remark", EvidenceKind::Sampled,
-                    "On (2b - a, 2b), where the Remark's ranges q <= 2b and (2b - a, a + 2b) overlap, the motion progresses for "
-                    "ever from every initial state tried, the one behaviour both cases allow: the overlap is harmless. At "
-                    "q = 2b it progresses for ever up to instantaneous stops (time stopped below a share {tol}).")
+      run.out
+          .claim("sec9.overlap", "Section 9, Remark", EvidenceKind::Sampled,
+                 "On (2b - a, 2b), where the Remark's ranges q <= 2b and (2b - a, a + 2b) overlap, the motion progresses for "
+                 "ever from every initial state tried, the one behaviour both cases allow: the overlap is harmless. At "
+                 "q = 2b it progresses for ever up to instantaneous stops (time stopped below a share {tol}).")
           .ours()
-          .parameter("b_over_a", Json::array().push(0.6).push(1.5)).parameter("q_points_per_b", static_cast<long long>(n_overlap))
+          .parameter("b_over_a", Json::array().push(0.6).push(1.5))
+          .parameter("q_points_per_b", static_cast<long long>(n_overlap))
           .parameter("periods", periods)
-          .evidence("runs_inside", overlap_runs).evidence("runs_inside_not_eternal_progression", overlap_other)
-          .evidence("runs_at_q_2b", edge_runs).evidence("runs_at_q_2b_failing", edge_other)
+          .evidence("runs_inside", overlap_runs)
+          .evidence("runs_inside_not_eternal_progression", overlap_other)
+          .evidence("runs_at_q_2b", edge_runs)
+          .evidence("runs_at_q_2b_failing", edge_other)
           .evidence("largest_stop_share_at_q_2b", edge_stop_share)
           .evidence("behaviours_of_failing_runs", overlap_seen.empty() ? std::string("none") : overlap_seen)
           .tolerance(kInstantStopShare)
           .holds(overlap_runs > 0 && edge_runs > 0 && overlap_other == 0 && edge_other == 0);
       run.out.macro("SecNineOverlapRuns", std::to_string(overlap_runs + edge_runs));
-      run.out.claim("sec9.independent_of_start", "Section 9, Remark", EvidenceKind::Sampled,
-                    "The eventual behaviour depends on the parameters but not on the initial state.")
-          .evidence("cases", static_cast<long long>(cases.size())).evidence("cases_with_one_behaviour", independent_of_start)
+      run.out
+          .claim("sec9.independent_of_start", "Section 9, Remark", EvidenceKind::Sampled,
+                 "The eventual behaviour depends on the parameters but not on the initial state.")
+          .evidence("cases", static_cast<long long>(cases.size()))
+          .evidence("cases_with_one_behaviour", independent_of_start)
           .holds(independent_of_start == static_cast<int>(cases.size()));
     }};
 

@@ -24,8 +24,8 @@ namespace {
 struct PlaneCell {
   int covering = 0, superstable = 0;
   double epsilon = 0, J0_lo = 0, J1_lo = 0;
-  int dense = -1;            ///< the dense search's verdict on the cross-check sub-grid (-1 elsewhere)
-  long long fallbacks = 0;   ///< the branchwise search fell back to the dense one
+  int dense = -1;           ///< the dense search's verdict on the cross-check sub-grid (-1 elsewhere)
+  long long fallbacks = 0;  ///< the branchwise search fell back to the dense one
 };
 }  // namespace
 
@@ -33,11 +33,10 @@ const Experiment experiment{
     .title = "Theorems 1 and 2 over the (q/a, b/a) plane",
     .paper = {"Theorem 1", "Theorem 2", "Section 8"},
     .tests = {"test_covering", "test_symbolic"},
-    .options = {count("nq", 400, "grid points of q/a in (sin vartheta0, 1)").range(1, 2000).fast_value(8),
-                count("nb", 400, "grid points of b/a, log-spaced in [1e-4, 0.1]").range(2, 2000).fast_value(8),
-                count("check-every", 16, "cross-check the covering against the dense search at every k-th cell of both axes")
-                    .range(1, 2000)
-                    .fast_value(2)},
+    .options =
+        {count("nq", 400, "grid points of q/a in (sin vartheta0, 1)").range(1, 2000).fast_value(8),
+         count("nb", 400, "grid points of b/a, log-spaced in [1e-4, 0.1]").range(2, 2000).fast_value(8),
+         count("check-every", 16, "cross-check the covering against the dense search at every k-th cell of both axes").range(1, 2000).fast_value(2)},
     .outputs = {data("", "class: 0 neither, 1 covering (Theorem 1), 2 t2 superstable (Theorem 2), 3 both, -1 error")},
     .body = [](Run& run) {
       const int nq = run.count_int("nq"), nb = run.count_int("nb"), every = run.count_int("check-every");
@@ -70,7 +69,7 @@ const Experiment experiment{
         for (int j = 0; j < nb; ++j) {
           const auto& c = cells[static_cast<std::size_t>(i) * nb + j];
           const double qa = q_axis[i], ba = b_axis[j];
-          const PlaneCell v = c.failed ? PlaneCell{} : c.value;  // a failed cell counts as neither, class -1
+          const PlaneCell v = c.failed ? PlaneCell{} : c.value;                  // a failed cell counts as neither, class -1
           const long long cls = c.failed ? -1 : v.covering + 2 * v.superstable;  // 0 neither, 1 covering, 2 superstable, 3 both
           t.row({qa, ba, static_cast<long long>(v.covering), static_cast<long long>(v.superstable), cls, v.epsilon, v.J0_lo, v.J1_lo});
           n_cov += v.covering;
@@ -81,12 +80,18 @@ const Experiment experiment{
           if (v.dense >= 0) {
             ++n_checked;
             if (v.dense != v.covering) {
-              if (n_differ++ == 0) { differ_q = qa; differ_b = ba; }
+              if (n_differ++ == 0) {
+                differ_q = qa;
+                differ_b = ba;
+              }
             }
           }
           if (v.covering && v.superstable) {
             ++n_both;
-            if (std::isnan(both_q)) { both_q = qa; both_b = ba; }
+            if (std::isnan(both_q)) {
+              both_q = qa;
+              both_b = ba;
+            }
           }
         }
       run.table("", t);
@@ -98,12 +103,17 @@ const Experiment experiment{
                                "Somewhere on the grid the chaotic covering and a superstable t2 coexist (a concrete example; the superstable "
                                "windows are narrower than the grid step, so the plane undercounts them).");
       co.not_expected()
-          .evidence("cells", n_cells).evidence("covering", n_cov).evidence("superstable", n_sup).evidence("both", n_both).evidence("errors", n_err);
+          .evidence("cells", n_cells)
+          .evidence("covering", n_cov)
+          .evidence("superstable", n_sup)
+          .evidence("both", n_both)
+          .evidence("errors", n_err);
       if (n_both > 0) co.evidence("example_q_over_a", both_q).evidence("example_b_over_a", both_b);
       co.holds(n_both > 0);
       run.out.claim("thm1.plane_computed", "Theorem 1", EvidenceKind::Sampled, "Every cell of the plane was classified without error.")
           .ours()
-          .evidence("cells", n_cells).evidence("errors", n_err)
+          .evidence("cells", n_cells)
+          .evidence("errors", n_err)
           .holds(n_err == 0);
       auto& bw = run.out.claim("plane.branchwise_vs_dense", "Lemma 4", EvidenceKind::Sampled,
                                "On the cross-check sub-grid the branch-by-branch covering search gives the same verdict as the dense "
@@ -122,7 +132,10 @@ const Experiment experiment{
       run.out.macro("PlaneCovering", std::to_string(n_cov));
       run.out.macro("PlaneSuperstable", std::to_string(n_sup));
       run.out.macro("PlaneBoth", std::to_string(n_both));
-      if (n_both > 0) { run.out.macro("PlaneBothQ", both_q, 4); run.out.macro("PlaneBothB", both_b, 4); }
+      if (n_both > 0) {
+        run.out.macro("PlaneBothQ", both_q, 4);
+        run.out.macro("PlaneBothB", both_b, 4);
+      }
     }};
 
 DFCHAOS_EXPERIMENT_MAIN(experiment)

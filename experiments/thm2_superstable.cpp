@@ -49,7 +49,8 @@ const Experiment experiment{
     .options = {count("samples", 5000, "samples of theta2(t2), uniform in a/b, for the window search").range(2, 10'000'000).fast_value(500),
                 count("grid", 20000, "independent grid points (uniform in a/b) for the cross-check").range(2, 10'000'000).fast_value(400),
                 reals("q", {0.85, 0.95, 0.6}, "values of q/a").range(0.003, 1.0 - 1e-12)},
-    .outputs = {data("windows", "every piece of b/a in [1e-3, 0.1] where (21) or (22) holds, with epsilon at its middle and the joined interval it belongs to"),
+    .outputs = {data("windows",
+                     "every piece of b/a in [1e-3, 0.1] where (21) or (22) holds, with epsilon at its middle and the joined interval it belongs to"),
                 data("", "per q/a: counts of joined intervals and of their (21), (22) pieces, the resolution check, and the independent grid check"),
                 data("theta2", "theta2(t2) mod 2pi against b/a (samples log-spaced in [1e-3, 0.1]) per q/a, with t0..t3 and the condition met")},
     .body = [](Run& run) {
@@ -79,9 +80,12 @@ const Experiment experiment{
           const JoinedInterval& J = joined[k];
           if (J.has21 && J.has22) ++n_joined;
           if (J.has21) ++all_21;
-          if (eq2) ++under_eq2;
-          else if (J.has21) ++remark23_windows;
-          else ++outside_hypotheses;
+          if (eq2)
+            ++under_eq2;
+          else if (J.has21)
+            ++remark23_windows;
+          else
+            ++outside_hypotheses;
           widest = std::max(widest, (J.b_hi - J.b_lo) / (0.5 * (J.b_lo + J.b_hi)));
           bool any_hypotheses = false;
           for (std::size_t i = J.first; i < J.last; ++i) {
@@ -112,17 +116,16 @@ const Experiment experiment{
           const int cond = c.eq21 ? 21 : (c.eq22 ? 22 : 0);
           if (cond == 0) continue;
           ++in_cond;
-          const bool inside = std::any_of(w.begin(), w.end(), [&](const SuperstableWindow& x) {
-            return ba >= x.b_lo && ba <= x.b_hi && x.condition == cond;
-          });
+          const bool inside =
+              std::any_of(w.begin(), w.end(), [&](const SuperstableWindow& x) { return ba >= x.b_lo && ba <= x.b_hi && x.condition == cond; });
           if (!inside) ++outside;
         }
         mismatch_grid += outside;
         grid_in_conditions += in_cond;
         total += static_cast<long long>(joined.size());
         smallest_eps = std::min(smallest_eps, eps_min);
-        summary.row({qa, static_cast<long long>(joined.size()), n_joined, n21, n22, static_cast<long long>(joined4.size()), in_cond, outside,
-                     eps_min, widest});
+        summary.row({qa, static_cast<long long>(joined.size()), n_joined, n21, n22, static_cast<long long>(joined4.size()), in_cond, outside, eps_min,
+                     widest});
         if (qa == 0.85) {
           run.out.macro("ThmTwoIntervalsEightyFive", std::to_string(joined.size()));
           run.out.macro("ThmTwoJoinedEightyFive", std::to_string(n_joined));
@@ -145,23 +148,32 @@ const Experiment experiment{
         }
       run.table("theta2", theta2);
 
-      run.out.claim("thm2.superstable", "Theorem 2", EvidenceKind::Sampled,
-                    "In every interval of b/a where the hypotheses ((2) and (22), or (21) and (23)) hold, T sends a whole interval "
-                    "[t2, t2 + epsilon) to t2 (checked at the middle of each (21) and (22) piece of it where the hypotheses hold).")
-          .evidence("intervals_found", total).evidence("intervals_under_eq2", under_eq2)
-          .evidence("intervals_under_eq2_without_hypotheses", eq2_without_hypotheses).evidence("intervals_under_hypotheses", intervals_checked)
-          .evidence("pieces_checked", pieces_checked).evidence("not_superstable", not_super).evidence("smallest_epsilon", smallest_eps)
+      run.out
+          .claim("thm2.superstable", "Theorem 2", EvidenceKind::Sampled,
+                 "In every interval of b/a where the hypotheses ((2) and (22), or (21) and (23)) hold, T sends a whole interval "
+                 "[t2, t2 + epsilon) to t2 (checked at the middle of each (21) and (22) piece of it where the hypotheses hold).")
+          .evidence("intervals_found", total)
+          .evidence("intervals_under_eq2", under_eq2)
+          .evidence("intervals_under_eq2_without_hypotheses", eq2_without_hypotheses)
+          .evidence("intervals_under_hypotheses", intervals_checked)
+          .evidence("pieces_checked", pieces_checked)
+          .evidence("not_superstable", not_super)
+          .evidence("smallest_epsilon", smallest_eps)
           .holds(pieces_checked > 0 && not_super == 0 && eq2_without_hypotheses == 0);
-      run.out.claim("thm2.grid_agrees", "Theorem 2 (numerics)", EvidenceKind::Sampled,
-                    "Every point of an independent grid where (21) or (22) holds lies inside a piece found, of the same condition.")
+      run.out
+          .claim("thm2.grid_agrees", "Theorem 2 (numerics)", EvidenceKind::Sampled,
+                 "Every point of an independent grid where (21) or (22) holds lies inside a piece found, of the same condition.")
           .ours()
           .evidence("grid_points", static_cast<long long>(grid_points) * static_cast<long long>(run.reals("q").size()))
-          .evidence("grid_points_in_conditions", grid_in_conditions).evidence("grid_points_outside_windows", mismatch_grid)
+          .evidence("grid_points_in_conditions", grid_in_conditions)
+          .evidence("grid_points_outside_windows", mismatch_grid)
           .holds(mismatch_grid == 0);
-      run.out.claim("thm2.windows_resolved", "Theorem 2 (numerics)", EvidenceKind::Sampled,
-                    "The number of pieces and of joined intervals is unchanged when the samples are quadrupled.")
+      run.out
+          .claim("thm2.windows_resolved", "Theorem 2 (numerics)", EvidenceKind::Sampled,
+                 "The number of pieces and of joined intervals is unchanged when the samples are quadrupled.")
           .ours()
-          .evidence("q_values", static_cast<long long>(run.reals("q").size())).evidence("q_values_with_a_different_count", unstable_count)
+          .evidence("q_values", static_cast<long long>(run.reals("q").size()))
+          .evidence("q_values_with_a_different_count", unstable_count)
           .holds(unstable_count == 0);
       // Remark (23): for condition (21) the paper drops q > a sin(vartheta0). Does any (21) window occur
       // there? Besides the windows above, a wide grid: q/a = 0.05 ... 0.70, b/a log-spaced in
@@ -183,19 +195,27 @@ const Experiment experiment{
           }
         }
       }
-      run.out.claim("thm2.remark23_no_instance", "Section 8, Remark (23)", EvidenceKind::Sampled,
-                    "Below q/a = sin(vartheta0), where (2) fails, condition (21) does not occur: every interval found there is of condition "
-                    "(22) alone, and a wide grid (q/a from 0.05 to 0.70, b/a from 1e-3 to 0.49) meets no point of (21). The Remark's relaxation "
-                    "of (2) to (23) for condition (21) has no instance found.")
-          .ours().not_expected()
-          .evidence("intervals_21_outside_eq2", remark23_windows).evidence("intervals_outside_eq2", remark23_windows + outside_hypotheses).evidence("wide_grid_points", wide_points)
-          .evidence("wide_grid_eq21", wide_21).evidence("wide_grid_eq22", wide_22).evidence("wide_grid_no_return", wide_no_return)
+      run.out
+          .claim("thm2.remark23_no_instance", "Section 8, Remark (23)", EvidenceKind::Sampled,
+                 "Below q/a = sin(vartheta0), where (2) fails, condition (21) does not occur: every interval found there is of condition "
+                 "(22) alone, and a wide grid (q/a from 0.05 to 0.70, b/a from 1e-3 to 0.49) meets no point of (21). The Remark's relaxation "
+                 "of (2) to (23) for condition (21) has no instance found.")
+          .ours()
+          .not_expected()
+          .evidence("intervals_21_outside_eq2", remark23_windows)
+          .evidence("intervals_outside_eq2", remark23_windows + outside_hypotheses)
+          .evidence("wide_grid_points", wide_points)
+          .evidence("wide_grid_eq21", wide_21)
+          .evidence("wide_grid_eq22", wide_22)
+          .evidence("wide_grid_no_return", wide_no_return)
           .holds(remark23_windows == 0 && wide_21 == 0);
-      run.out.claim("thm2.nondegenerate", "Section 8", EvidenceKind::Sampled,
-                    "The nondegeneracy conditions of Section 8 (read as: the impact velocity dG1/dt at T1(t2) and dG2/dtheta2 = F(theta2) - q "
-                    "at theta2(t2) are non-zero) hold at the middle of every (21) and (22) piece, so each piece is robust under small "
-                    "changes of the parameters (implicit function theorem).")
-          .evidence("pieces_nondegenerate", nondegenerate).evidence("pieces_degenerate", degenerate)
+      run.out
+          .claim("thm2.nondegenerate", "Section 8", EvidenceKind::Sampled,
+                 "The nondegeneracy conditions of Section 8 (read as: the impact velocity dG1/dt at T1(t2) and dG2/dtheta2 = F(theta2) - q "
+                 "at theta2(t2) are non-zero) hold at the middle of every (21) and (22) piece, so each piece is robust under small "
+                 "changes of the parameters (implicit function theorem).")
+          .evidence("pieces_nondegenerate", nondegenerate)
+          .evidence("pieces_degenerate", degenerate)
           .holds(degenerate == 0 && nondegenerate > 0);
       run.out.macro("ThmTwoIntervals", std::to_string(total));
       run.out.macro("ThmTwoIntervalsUnderTwo", std::to_string(under_eq2));

@@ -56,11 +56,12 @@ py::object to_python(const kit::Json::Value& v) {
 }
 
 py::object certify_py(const std::string& what, double a, std::optional<NumberOrBox> b, std::optional<NumberOrBox> q, int period,
-                    const std::string& segment, std::optional<std::pair<double, double>> window, std::optional<std::string> certificate) {
+                      const std::string& segment, std::optional<std::pair<double, double>> window, std::optional<std::string> certificate) {
   certify::check_statement(what);
   if (certificate && certificate->empty()) throw InvalidParameter("certificate", "a file name (got '')");
   if (certificate && !certify::has_certificate(what))
-    throw InvalidParameter("certificate", std::string("a statement with a certificate format: ") + certify::kCertificateStatements + " (not certify " + what + ")");
+    throw InvalidParameter("certificate",
+                           std::string("a statement with a certificate format: ") + certify::kCertificateStatements + " (not certify " + what + ")");
   certify::Request r;
   r.what = what;
   r.certificate = certificate.has_value();
@@ -77,7 +78,10 @@ py::object certify_py(const std::string& what, double a, std::optional<NumberOrB
   }
   if (certificate) {
     if (c.certificate.value().is_null()) {
-      c.record.set("certificate", kit::Json::object().set("written", false).set("reason", c.no_certificate.empty() ? std::string("not proved: no certificate") : "not written: " + c.no_certificate));
+      c.record.set("certificate",
+                   kit::Json::object()
+                       .set("written", false)
+                       .set("reason", c.no_certificate.empty() ? std::string("not proved: no certificate") : "not written: " + c.no_certificate));
     } else {
       try {
         c.record.set("certificate", certify::to_json(certify::write_certificate(*certificate, c.certificate)));
@@ -93,9 +97,8 @@ py::object certify_py(const std::string& what, double a, std::optional<NumberOrB
 }  // namespace
 
 void bind_certify(py::module_& m) {
-  m.def("certify", &certify_py, py::arg("what"), py::arg("a") = 1.0, py::arg("b") = py::none(), py::arg("q") = py::none(),
-        py::arg("period") = 0, py::arg("segment") = "L0", py::arg("window") = py::none(),
-        py::arg("certificate") = py::none(),
+  m.def("certify", &certify_py, py::arg("what"), py::arg("a") = 1.0, py::arg("b") = py::none(), py::arg("q") = py::none(), py::arg("period") = 0,
+        py::arg("segment") = "L0", py::arg("window") = py::none(), py::arg("certificate") = py::none(),
         R"doc(certify(what, a=1.0, b=None, q=None, period=0, segment='L0', window=None, certificate=None) -> dict
 
 A proof in ball arithmetic (Arb), as `dfchaos certify WHAT` gives it: `what` is one of vartheta0 (Eq. 1),

@@ -47,8 +47,7 @@ constexpr int kMinRefine = 1;
 /// v unless it lies outside [lo, hi]. @throws InvalidParameter naming `name` with the condition
 /// spelled as the CLI spells a count's ("4 <= recheck <= 100000000").
 int count_in(const char* name, int v, long long lo, long long hi) {
-  if (v < lo || v > hi)
-    throw InvalidParameter(name, std::to_string(lo) + " <= " + name + " <= " + std::to_string(hi), v);
+  if (v < lo || v > hi) throw InvalidParameter(name, std::to_string(lo) + " <= " + name + " <= " + std::to_string(hi), v);
   return v;
 }
 
@@ -57,8 +56,10 @@ int count_in(const char* name, int v, long long lo, long long hi) {
 CoveringSearch search_options(const std::string& method, int scan, int uniform, std::optional<int> recheck, int refine, bool descend,
                               int max_segments, long long max_branches) {
   CoveringSearch s;
-  if (method == "branchwise") s = CoveringSearch::branchwise();
-  else if (method != "dense") throw InvalidParameter("method", "'dense' or 'branchwise' (got '" + method + "')");
+  if (method == "branchwise")
+    s = CoveringSearch::branchwise();
+  else if (method != "dense")
+    throw InvalidParameter("method", "'dense' or 'branchwise' (got '" + method + "')");
   // scan and uniform: the library's lower bounds (checked by covering_segments), ours above.
   if (scan > kMaxElements) throw InvalidParameter("scan", "scan <= " + std::to_string(kMaxElements), scan);
   if (uniform > kMaxElements) throw InvalidParameter("uniform", "uniform <= " + std::to_string(kMaxElements), uniform);
@@ -118,10 +119,9 @@ void bind_covering(py::module_& m) {
   py::options options;
   options.disable_function_signatures();
   const CoveringSearch def;
-  m.def("covering_segments", &covering_segments_py, py::arg("p"), py::arg("lo") = py::none(), py::arg("hi") = py::none(),
-        py::arg("top") = py::none(), py::kw_only(), py::arg("method") = "dense", py::arg("scan") = def.scan,
-        py::arg("uniform") = def.uniform, py::arg("recheck") = py::none(), py::arg("refine") = def.refine,
-        py::arg("descend").noconvert() = def.descend, py::arg("max_segments") = def.max_segments,
+  m.def("covering_segments", &covering_segments_py, py::arg("p"), py::arg("lo") = py::none(), py::arg("hi") = py::none(), py::arg("top") = py::none(),
+        py::kw_only(), py::arg("method") = "dense", py::arg("scan") = def.scan, py::arg("uniform") = def.uniform, py::arg("recheck") = py::none(),
+        py::arg("refine") = def.refine, py::arg("descend").noconvert() = def.descend, py::arg("max_segments") = def.max_segments,
         py::arg("max_branches") = def.max_branches,
         R"doc(covering_segments(p, lo=t2, hi=3 pi/2, top=3 pi/2, *, method="dense", scan=48, uniform=8000, recheck=None,
                   refine=32, descend=True, max_segments=0, max_branches=1000000) -> list of dict
@@ -143,8 +143,8 @@ continuity branches of T1 in [lo, hi] (about 0.16 a/b) the search raises dfchaos
 work (docs/reliability.md).)doc");
   m.def("lemma4_covering", &lemma4_covering_py, py::arg("p"), py::kw_only(), py::arg("method") = "dense", py::arg("scan") = def.scan,
         py::arg("uniform") = def.uniform, py::arg("recheck") = py::none(), py::arg("refine") = def.refine,
-        py::arg("descend").noconvert() = def.descend, py::arg("max_segments") = def.max_segments,
-        py::arg("max_branches") = def.max_branches, R"doc(lemma4_covering(p, *, method="dense", scan=48, uniform=8000, recheck=None, refine=32, descend=True,
+        py::arg("descend").noconvert() = def.descend, py::arg("max_segments") = def.max_segments, py::arg("max_branches") = def.max_branches,
+        R"doc(lemma4_covering(p, *, method="dense", scan=48, uniform=8000, recheck=None, refine=32, descend=True,
                 max_segments=0, max_branches=1000000) -> dict
 
 Lemma 4's conclusion at one parameter set: two disjoint closed segments J0, J1 of [t2, 3 pi/2], each

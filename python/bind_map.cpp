@@ -86,8 +86,10 @@ py::dict orbit(const Parameters& p, double theta0, long long steps) {
   const Orbit orbit(p, theta0, steps);
   Orbit::iterator it;
   loop_without_gil(shape[0], [&](py::ssize_t n) {
-    if (n == 0) it = orbit.begin();
-    else ++it;
+    if (n == 0)
+      it = orbit.begin();
+    else
+      ++it;
     th[n] = it->theta;
     scenario.set(n, scenario_name(it->scenario));
     el[n] = it->elapsed;
@@ -127,8 +129,7 @@ void bind_map(py::module_& m) {
   py::options options;
   options.disable_function_signatures();
   py::tuple names(8);
-  const Scenario all[] = {Scenario::A, Scenario::B, Scenario::C, Scenario::D, Scenario::Cprime, Scenario::Dprime,
-                          Scenario::Grazing, Scenario::Other};
+  const Scenario all[] = {Scenario::A, Scenario::B, Scenario::C, Scenario::D, Scenario::Cprime, Scenario::Dprime, Scenario::Grazing, Scenario::Other};
   for (std::size_t k = 0; k < 8; ++k) names[k] = scenario_name(all[k]);
   m.attr("scenario_names") = names;
 

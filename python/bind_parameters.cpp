@@ -16,9 +16,7 @@ namespace {
 /// Shortest round-trip spelling of a double, as Python's repr.
 std::string py_repr(double x) { return py::repr(py::float_(x)).cast<std::string>(); }
 
-Parameters make_parameters(double a, double b, double q) {
-  return Parameters(finite("a", a), finite("b", b), finite("q", q));
-}
+Parameters make_parameters(double a, double b, double q) { return Parameters(finite("a", a), finite("b", b), finite("q", q)); }
 
 }  // namespace
 
@@ -76,11 +74,11 @@ function and method with a TypeError.)doc")
       .def_property_readonly("t0", &Parameters::t0, "t0 = asin((q - 2b)/a) in [0, 2 pi): F(t0) = q; None unless |q - 2b| < a")
       .def_property_readonly("t1", &Parameters::t1, "t1 = pi - asin((q - 2b)/a): F(t1) = q, F > q on (t0, t1); None unless |q - 2b| < a")
       .def_property_readonly("t2", &Parameters::t2, "t2 = pi + asin(2b/a): F(t2) = 0; None unless 2b < a")
-      .def_property_readonly("t3", &Parameters::t3,
-                             "t3 = 2 pi - asin(2b/a): F(t3) = 0, F < 0 on (t2, t3), the arc of the map T; None unless 2b < a")
-      .def_property_readonly("vartheta0", [](const Parameters&) { return vartheta0(); },
-                             "vartheta0 in (0, pi/2]: the root of pi - vartheta = cot(vartheta/2) (Eq. 1); assumption (2) "
-                             "is a sin(vartheta0) < q < a. The same for every parameter set (also dfchaos.vartheta0).")
+      .def_property_readonly("t3", &Parameters::t3, "t3 = 2 pi - asin(2b/a): F(t3) = 0, F < 0 on (t2, t3), the arc of the map T; None unless 2b < a")
+      .def_property_readonly(
+          "vartheta0", [](const Parameters&) { return vartheta0(); },
+          "vartheta0 in (0, pi/2]: the root of pi - vartheta = cot(vartheta/2) (Eq. 1); assumption (2) "
+          "is a sin(vartheta0) < q < a. The same for every parameter set (also dfchaos.vartheta0).")
       .def_property_readonly(
           "assumptions",
           [](const Parameters& p) {
@@ -96,12 +94,12 @@ function and method with a TypeError.)doc")
           },
           "Which of the paper's assumptions hold, as a dict: b_in_range (0 < b < a/2), q_above_threshold "
           "(a sin(vartheta0) < q < a), eq2 (all of Eq. 2), eq23 (Eq. 23), progression_ends (q > 2b), describe (one line).")
-      .def("F", [](const Parameters& p, double t) { return p.F(finite("t", t)); }, py::arg("t"),
-           "F(t) = a sin t + 2b (Eq. 3). Raises ValueError unless t is finite.")
+      .def(
+          "F", [](const Parameters& p, double t) { return p.F(finite("t", t)); }, py::arg("t"),
+          "F(t) = a sin t + 2b (Eq. 3). Raises ValueError unless t is finite.")
       .def("require_return_map", &Parameters::require_return_map,
            "Raises ValueError unless the return map T is defined here: b < a/2, q > 2b and b/a >= min_map_ratio.")
-      .def("require_eq2", &Parameters::require_eq2,
-           "Raises ValueError unless assumption (2) holds: 0 < b < a/2 and a sin(vartheta0) < q < a.")
+      .def("require_eq2", &Parameters::require_eq2, "Raises ValueError unless assumption (2) holds: 0 < b < a/2 and a sin(vartheta0) < q < a.")
       .def("describe", &Parameters::describe, "'a=... b=... q=...' with 17 significant digits")
       .def("__repr__",
            [](const py::handle& self) -> std::string {

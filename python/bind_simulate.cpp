@@ -16,12 +16,11 @@ namespace dfchaos::python {
 
 namespace {
 
-py::dict simulate_py(const Parameters& p, double x0, double y0, double v0, double t0, double t_end,
-                     const std::optional<double>& sample, long long max_events) {
+py::dict simulate_py(const Parameters& p, double x0, double y0, double v0, double t0, double t_end, const std::optional<double>& sample,
+                     long long max_events) {
   // The CLI's checks of its own options (the library checks the rest, with the CLI's messages).
   SimulationOptions so;
-  for (const auto& [name, v] : {std::pair{"x0", x0}, std::pair{"y0", y0}, std::pair{"v0", v0}, std::pair{"t0", t0},
-                                std::pair{"t-end", t_end}})
+  for (const auto& [name, v] : {std::pair{"x0", x0}, std::pair{"y0", y0}, std::pair{"v0", v0}, std::pair{"t0", t0}, std::pair{"t-end", t_end}})
     finite(name, v);
   if (sample) {
     so.sample_dt = finite("sample", *sample);
@@ -103,8 +102,9 @@ void bind_simulate(py::module_& m) {
   // Each docstring opens with its own signature line (with the result types pybind11 cannot name).
   py::options options;
   options.disable_function_signatures();
-  m.def("simulate", &simulate_py, py::arg("p"), py::arg("x0"), py::arg("y0"), py::arg("v0"), py::arg("t0"),
-        py::arg("t_end"), py::kw_only(), py::arg("sample") = py::none(), py::arg("max_events") = SimulationOptions{}.max_events, R"doc(simulate(p, x0, y0, v0, t0, t_end, *, sample=None, max_events=1000000) -> dict
+  m.def("simulate", &simulate_py, py::arg("p"), py::arg("x0"), py::arg("y0"), py::arg("v0"), py::arg("t0"), py::arg("t_end"), py::kw_only(),
+        py::arg("sample") = py::none(), py::arg("max_events") = SimulationOptions{}.max_events,
+        R"doc(simulate(p, x0, y0, v0, t0, t_end, *, sample=None, max_events=1000000) -> dict
 
 Event-driven simulation of the full system (Section 2) from x(t0) = x0 (mass), y(t0) = y0
 (delimiter), x'(t0) = v0 until t_end, in closed form between events. Any positive parameters (also

@@ -78,11 +78,42 @@ int lines(const std::string& s) {
 }
 
 /// Edge values for a, b, q: ordinary, tiny, subnormal, huge, and malformed texts.
-const std::vector<std::string> kNumbers = {
-    "1", "2", "0.5", "0.85", "0.01", "0.001", "1e-5", "1e-8", "1e-12", "1e-13", "1e-16", "1e-300", "4.9e-324", "1e-320",
-    "2.2250738585072014e-308", "1e100", "1e101", "1e300", "1.7976931348623157e308", "0", "-0", "-1", "nan", "inf", "-inf",
-    "1e999", "x", "0x1p-3", "1.5e", " 1", "+0.3", "0.49999999999999994", "0.5000000000000001", "0.7246113537767085",
-    "0.7246113537767086", "0.99999999999999989"};
+const std::vector<std::string> kNumbers = {"1",
+                                           "2",
+                                           "0.5",
+                                           "0.85",
+                                           "0.01",
+                                           "0.001",
+                                           "1e-5",
+                                           "1e-8",
+                                           "1e-12",
+                                           "1e-13",
+                                           "1e-16",
+                                           "1e-300",
+                                           "4.9e-324",
+                                           "1e-320",
+                                           "2.2250738585072014e-308",
+                                           "1e100",
+                                           "1e101",
+                                           "1e300",
+                                           "1.7976931348623157e308",
+                                           "0",
+                                           "-0",
+                                           "-1",
+                                           "nan",
+                                           "inf",
+                                           "-inf",
+                                           "1e999",
+                                           "x",
+                                           "0x1p-3",
+                                           "1.5e",
+                                           " 1",
+                                           "+0.3",
+                                           "0.49999999999999994",
+                                           "0.5000000000000001",
+                                           "0.7246113537767085",
+                                           "0.7246113537767086",
+                                           "0.99999999999999989"};
 const std::vector<std::string> kCounts = {"1", "2", "5", "1e1", "0", "-1", "1.5", "1e9", "1e300", "x", "nan", "3"};
 
 }  // namespace
@@ -113,8 +144,18 @@ int main(int argc, char** argv) {
     (void)q;
     const double s = std::asin(2 * b / a);
     const double t2 = 3.141592653589793 + s, t3 = 6.283185307179586 - s;
-    std::vector<double> v = {t2, std::nextafter(t2, 0.0), std::nextafter(t2, 10.0), t3, std::nextafter(t3, 0.0), std::nextafter(std::nextafter(t3, 0.0), 0.0),
-                             std::nextafter(t3, 10.0), t3 - 1e-13, 1.5 * 3.141592653589793, 0.5 * (t2 + t3), 1.0, 7.0};
+    std::vector<double> v = {t2,
+                             std::nextafter(t2, 0.0),
+                             std::nextafter(t2, 10.0),
+                             t3,
+                             std::nextafter(t3, 0.0),
+                             std::nextafter(std::nextafter(t3, 0.0), 0.0),
+                             std::nextafter(t3, 10.0),
+                             t3 - 1e-13,
+                             1.5 * 3.141592653589793,
+                             0.5 * (t2 + t3),
+                             1.0,
+                             7.0};
     (void)text_only;
     return v[std::uniform_int_distribution<std::size_t>(0, v.size() - 1)(rng)];
   };
@@ -126,7 +167,8 @@ int main(int argc, char** argv) {
     const char* subs[] = {"info", "map", "orbit", "simulate", "provenance", "nosuch", ""};
     if (sub < 6) args.push_back(subs[sub]);
     const bool valid_model = coin(0.6);
-    const double a = valid_model ? (coin(0.5) ? 1.0 : 2.0) : 1.0, b = valid_model ? (coin(0.5) ? 0.01 : 0.003) : 0.01, q = valid_model ? 0.85 * a : 0.85;
+    const double a = valid_model ? (coin(0.5) ? 1.0 : 2.0) : 1.0, b = valid_model ? (coin(0.5) ? 0.01 : 0.003) : 0.01,
+                 q = valid_model ? 0.85 * a : 0.85;
     auto model_arg = [&](const char* name, double v) {
       args.push_back(name);
       char buf[40];
@@ -141,9 +183,12 @@ int main(int argc, char** argv) {
     const std::string phase = coin(0.8) ? std::string(buf) : pick(kNumbers);
     switch (sub) {
       case 1:  // map
-        if (coin(0.6)) args.insert(args.end(), {"--theta", phase});
-        else if (coin(0.5)) args.insert(args.end(), {"--arc", coin(0.8) ? pick({"1", "2", "7", "10"}) : pick(kCounts)});
-        else args.insert(args.end(), {"--grid", phase, coin(0.5) ? "4.5" : pick(kNumbers), coin(0.8) ? "5" : pick(kCounts)});
+        if (coin(0.6))
+          args.insert(args.end(), {"--theta", phase});
+        else if (coin(0.5))
+          args.insert(args.end(), {"--arc", coin(0.8) ? pick({"1", "2", "7", "10"}) : pick(kCounts)});
+        else
+          args.insert(args.end(), {"--grid", phase, coin(0.5) ? "4.5" : pick(kNumbers), coin(0.8) ? "5" : pick(kCounts)});
         break;
       case 2:  // orbit
         args.insert(args.end(), {"--theta0", phase, "--steps", coin(0.8) ? pick({"1", "3", "10", "1e1"}) : pick(kCounts)});
@@ -154,8 +199,7 @@ int main(int argc, char** argv) {
         if (coin(0.3)) args.insert(args.end(), {"--sample", coin(0.7) ? "0.5" : pick(kNumbers)});
         if (coin(0.2)) args.insert(args.end(), {"--max-events", pick(kCounts)});
         break;
-      default:
-        break;
+      default: break;
     }
     if (coin(0.03)) args.insert(args.end(), {"--no-such-option", "1"});
     if (coin(0.02)) args.push_back("");
@@ -209,7 +253,8 @@ int main(int argc, char** argv) {
   }
   std::string cleanup = std::string("rm -rf ") + dir;
   if (std::system(cleanup.c_str()) != 0) std::fprintf(stderr, "robustness_harness: could not remove %s\n", dir);
-  std::printf("robustness_harness: %ld draws (seed %lu): tool %ld ok, %ld refused, %ld gave up; library %ld ok, %ld refused, %ld gave up; %ld failures\n",
-              draws, seed, ok, refused, gave_up, library_ok, library_refused, library_gave_up, failures);
+  std::printf(
+      "robustness_harness: %ld draws (seed %lu): tool %ld ok, %ld refused, %ld gave up; library %ld ok, %ld refused, %ld gave up; %ld failures\n",
+      draws, seed, ok, refused, gave_up, library_ok, library_refused, library_gave_up, failures);
   return failures == 0 ? 0 : 1;
 }

@@ -23,9 +23,9 @@ namespace {
 
 using namespace dfchaos;
 
-constexpr double kPerturbedAtZeroTol = 1e-8;   // integrated map at eps = 0 vs exact T
-constexpr double kDerivativeRelTol = 1e-4;     // implicit derivative vs central differences
-constexpr double kFiberRelTol = 1e-9;          // penetration carried by T vs simulator
+constexpr double kPerturbedAtZeroTol = 1e-8;  // integrated map at eps = 0 vs exact T
+constexpr double kDerivativeRelTol = 1e-4;    // implicit derivative vs central differences
+constexpr double kFiberRelTol = 1e-9;         // penetration carried by T vs simulator
 
 TEST(PerturbedMap, AgreesWithExactTAtZeroPerturbation) {
   for (double b : {0.05, 0.01}) {
@@ -101,11 +101,9 @@ TEST(EventualRegime, CasesOfTheRemarkOfSection9) {
     double b, q;
     EventualBehaviour expected;
   };
-  const Case cases[] = {{0.6, 2.5, EventualBehaviour::StaysStopped},
-                        {0.6, 1.0, EventualBehaviour::EternalProgression},
+  const Case cases[] = {{0.6, 2.5, EventualBehaviour::StaysStopped},        {0.6, 1.0, EventualBehaviour::EternalProgression},
                         {0.6, 1.15, EventualBehaviour::EternalProgression},  // 2b - a < q < 2b
-                        {0.6, 1.9, EventualBehaviour::PeriodicStickSlip},
-                        {0.7, 1.5, EventualBehaviour::PeriodicStickSlip},
+                        {0.6, 1.9, EventualBehaviour::PeriodicStickSlip},   {0.7, 1.5, EventualBehaviour::PeriodicStickSlip},
                         {0.01, 0.85, EventualBehaviour::FreeFlights}};
   for (const Case& k : cases) {
     const Parameters p(1.0, k.b, k.q);
@@ -243,7 +241,7 @@ TEST(StopCycle, RejectsBadBounds) {
   EXPECT_THROW(t2_cycle(p, 10, 0.0), InvalidParameter);
   EXPECT_THROW(t2_cycle(p, 10, 1.0), InvalidParameter);
   EXPECT_THROW(first_visit(p, *p.t2(), *p.t2(), 0), InvalidParameter);
-  EXPECT_THROW(first_visit(p, *p.t3(), *p.t2(), 5), InvalidParameter);  // theta outside [t2, t3)
+  EXPECT_THROW(first_visit(p, *p.t3(), *p.t2(), 5), InvalidParameter);               // theta outside [t2, t3)
   EXPECT_THROW(stop_cycle_survives_shift(p, StopCycle{}, 1e-12), InvalidParameter);  // period 0
   StopCycle five;
   five.image = *p.t2();

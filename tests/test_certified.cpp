@@ -35,9 +35,7 @@ constexpr double kPhaseAbsTol = 1e-9;
 constexpr int kPhases = 150;
 constexpr double kMinProvedShare = 0.9;
 
-bool within(const Ball& enclosure, double value, double tol) {
-  return enclosure.lower() - tol <= value && value <= enclosure.upper() + tol;
-}
+bool within(const Ball& enclosure, double value, double tol) { return enclosure.lower() - tol <= value && value <= enclosure.upper() + tol; }
 
 }  // namespace
 
@@ -63,7 +61,7 @@ TEST(CertifiedBisect, EnclosesTheSignChangeAndStopsWhereTheSignIsNotProved) {
   auto holds_root = [&f](const Ball& z) { return f(z.lower_ball()).is_positive() && f(z.upper_ball()).is_negative(); };
   const Ball z = enclose_sign_change(f, Ball(1.0), Ball(2.0), 200);
   EXPECT_TRUE(holds_root(z));
-  EXPECT_TRUE(lt(z.upper_ball() - z.lower_ball(), Ball(1e-30)));  // 128-bit arithmetic: far below a double's ulp
+  EXPECT_TRUE(lt(z.upper_ball() - z.lower_ball(), Ball(1e-30)));      // 128-bit arithmetic: far below a double's ulp
   const Ball z10 = enclose_sign_change(f, Ball(1.0), Ball(2.0), 10);  // 10 halvings of [1, 2]
   EXPECT_TRUE(holds_root(z10));
   EXPECT_NEAR(z10.upper() - z10.lower(), 1.0 / 1024, 1e-8);  // (a hull's radius is rounded up to 30 bits)

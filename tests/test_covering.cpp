@@ -107,8 +107,7 @@ TEST(Covering, AVerdictHoldsIsKeptUnderAFinerScan) {
   // guaranteed: an arc where T = t2 can be narrower than the grid (a false "fails"), which makes the
   // b0 estimates of lemma4_coverage lower bounds. (5e-4, 0.75) is such a case at the default scan.
   int default_holds = 0;
-  for (auto [ba, qa] : {std::pair{1e-3, 0.85}, std::pair{3e-3, 0.95}, std::pair{1e-2, 0.85}, std::pair{5e-4, 0.75},
-                        std::pair{1e-4, 0.8}}) {
+  for (auto [ba, qa] : {std::pair{1e-3, 0.85}, std::pair{3e-3, 0.95}, std::pair{1e-2, 0.85}, std::pair{5e-4, 0.75}, std::pair{1e-4, 0.8}}) {
     const Parameters p(1.0, ba, qa);
     CoveringSearch fine;
     fine.scan = 200;

@@ -69,7 +69,12 @@ TEST(LapCounts, FlatArcKeepsOneLapAndZeroEntropy) {
 TEST(LapCounts, GridIsTheCellCentres) {
   // The identity has one lap; the grid seen through a recording map is lo + (hi - lo)(i + 1/2)/N.
   std::vector<double> seen;
-  lap_counts([&](double x) { seen.push_back(x); return x; }, 2.0, 3.0, 4, 1);
+  lap_counts(
+      [&](double x) {
+        seen.push_back(x);
+        return x;
+      },
+      2.0, 3.0, 4, 1);
   ASSERT_EQ(seen.size(), 4u);
   for (int i = 0; i < 4; ++i) EXPECT_EQ(seen[static_cast<std::size_t>(i)], 2.0 + (3.0 - 2.0) * (i + 0.5) / 4);
 }

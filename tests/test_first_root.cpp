@@ -20,10 +20,10 @@ using namespace dfchaos;
 
 namespace {
 constexpr int kDraws = 10000;
-constexpr double kGridStep = 0.02;     // brute-force grid (the forcing period is 2 pi)
-constexpr double kMargin = 1e-6;       // points this close before T1 are not checked
-constexpr double kSignTol = 1e-9;      // G1 > kSignTol * scale before T1 would be a missed contact
-constexpr long kMaxPieces = 64;        // root-search work must not grow as b/a shrinks
+constexpr double kGridStep = 0.02;  // brute-force grid (the forcing period is 2 pi)
+constexpr double kMargin = 1e-6;    // points this close before T1 are not checked
+constexpr double kSignTol = 1e-9;   // G1 > kSignTol * scale before T1 would be a missed contact
+constexpr long kMaxPieces = 64;     // root-search work must not grow as b/a shrinks
 
 struct PlainG1 {  // Eq. (11), written out independently of the library, in s = t - theta
   double a, b, th;
@@ -35,7 +35,10 @@ struct PlainG1 {  // Eq. (11), written out independently of the library, in s = 
 double local_max(const PlainG1& f, double s0, double s1, double& where) {
   for (int i = 0; i < 60; ++i) {
     const double m = 0.5 * (s0 + s1);
-    if (f.dg(m) > 0) s0 = m; else s1 = m;
+    if (f.dg(m) > 0)
+      s0 = m;
+    else
+      s1 = m;
   }
   where = 0.5 * (s0 + s1);
   return f.g(where);
@@ -151,8 +154,7 @@ TEST(SolveIncreasing, HalleyWithAStartAndAJerkBoundKeepsTheRootAndSavesEvaluatio
     auto gd = [&](double x) {
       ++evaluations;
       const long double xl = x;
-      return std::tuple<long double, long double, long double>{xl - c + 0.3L * std::sin(xl), 1.0L + 0.3L * std::cos(xl),
-                                                               -0.3L * std::sin(xl)};
+      return std::tuple<long double, long double, long double>{xl - c + 0.3L * std::sin(xl), 1.0L + 0.3L * std::cos(xl), -0.3L * std::sin(xl)};
     };
     const double lo = 0, hi = 4;
     const long double g_lo = std::get<0>(gd(lo)), g_hi = std::get<0>(gd(hi));
@@ -175,7 +177,10 @@ TEST(SolveIncreasing, HalleyWithAStartAndAJerkBoundKeepsTheRootAndSavesEvaluatio
     for (int it = 0; it < 200 && b - a > 0; ++it) {
       const long double m = 0.5L * (a + b);
       if (m <= a || m >= b) break;
-      if (m - c + 0.3L * std::sin(m) < 0) a = m; else b = m;
+      if (m - c + 0.3L * std::sin(m) < 0)
+        a = m;
+      else
+        b = m;
     }
     const double tol = 4 * DBL_EPSILON * (hi + 1);  // the solver's stated tolerance
     for (double root : {plain, with_start, with_jerk, fast}) EXPECT_LE(std::fabs(root - static_cast<double>(b)), tol) << "c=" << c;
@@ -193,8 +198,7 @@ TEST(SolveIncreasing, TheJerkBoundKeepsAHalleyStepFromEndingTooEarlyWhereGppVani
   const long double c = 3.14159265358979323846L;
   auto gd = [&](double x) {
     const long double xl = x;
-    return std::tuple<long double, long double, long double>{xl - c + 0.9L * std::sin(xl), 1.0L + 0.9L * std::cos(xl),
-                                                             -0.9L * std::sin(xl)};
+    return std::tuple<long double, long double, long double>{xl - c + 0.9L * std::sin(xl), 1.0L + 0.9L * std::cos(xl), -0.9L * std::sin(xl)};
   };
   const double lo = 2, hi = 4, tol = 4 * DBL_EPSILON * (hi + 1);
   const double root = solve_increasing(gd, lo, hi, 0.0, std::get<0>(gd(lo)), std::get<0>(gd(hi)), 3.1416926535897933, 0.9);
@@ -223,7 +227,10 @@ TEST(SolveIncreasing, RegressionConvergedNewtonStopsWithoutBisecting) {
     for (int it = 0; it < 200 && b - a > 0; ++it) {
       const long double m = 0.5L * (a + b);
       if (m <= a || m >= b) break;
-      if (m - c + 0.3L * std::sin(static_cast<double>(m)) < 0) a = m; else b = m;
+      if (m - c + 0.3L * std::sin(static_cast<double>(m)) < 0)
+        a = m;
+      else
+        b = m;
     }
     EXPECT_NEAR(root, static_cast<double>(b), 4 * DBL_EPSILON * (hi + 1)) << "c=" << c;
   }

@@ -11,9 +11,9 @@
 
 #include "dfchaos/errors.hpp"
 #include "dfchaos/invariant_density.hpp"
-#include "dfchaos/superstable.hpp"
 #include "dfchaos/map_derivative.hpp"
 #include "dfchaos/return_map.hpp"
+#include "dfchaos/superstable.hpp"
 
 #include "test_support.hpp"
 
@@ -87,8 +87,10 @@ TEST(InvariantDensity, CountsTheOrbitThatIteratingTGives) {
   double theta = theta0;
   for (int n = 0; n < 5; ++n) theta = T(p, theta);
   for (int n = 0; n < 400; ++n) {
-    if (theta == t2) ++at_t2;
-    else ++by_hand[static_cast<std::size_t>(std::min(bins - 1, static_cast<int>((theta - t2) / (t3 - t2) * bins)))];
+    if (theta == t2)
+      ++at_t2;
+    else
+      ++by_hand[static_cast<std::size_t>(std::min(bins - 1, static_cast<int>((theta - t2) / (t3 - t2) * bins)))];
     theta = T(p, theta);
   }
   EXPECT_EQ(h.at_t2, at_t2);

@@ -10,10 +10,10 @@
 
 #include <cmath>
 #include <filesystem>
-#include <limits>
-#include <stdexcept>
 #include <fstream>
+#include <limits>
 #include <sstream>
+#include <stdexcept>
 
 #include "dfchaos/bisect.hpp"
 #include "dfchaos/errors.hpp"
@@ -49,7 +49,9 @@ TEST(Json, DumpWritesKeysInOrderDoublesWith17DigitsAndNonFiniteAsNull) {
   j.set("z", 1e-5);  // an existing key keeps its place
   const std::string want =
       "{\n"
-      "  \"z\": " + format_double(1e-5) + ",\n"
+      "  \"z\": " +
+      format_double(1e-5) +
+      ",\n"
       "  \"a\": 1,\n"
       "  \"n\": 3,\n"
       "  \"inf\": null,\n"
@@ -71,8 +73,7 @@ TEST(Options, ParseNumberAcceptsNumbersAndRejectsTheRest) {
   EXPECT_EQ(parse_number("n", "400", true), 400);
   EXPECT_EQ(parse_number("n", "1e8", true), 1e8);  // a count may be written in exponent form
   EXPECT_DOUBLE_EQ(parse_number("b", "2.5e-3", false), 2.5e-3);
-  for (const char* bad : {"", "x", "nan", "inf", "-inf", "1e999", "3x", " "})
-    EXPECT_THROW(parse_number("b", bad, false), InvalidParameter) << bad;
+  for (const char* bad : {"", "x", "nan", "inf", "-inf", "1e999", "3x", " "}) EXPECT_THROW(parse_number("b", bad, false), InvalidParameter) << bad;
   EXPECT_THROW(parse_number("n", "1.5", true), InvalidParameter);
 }
 
@@ -96,7 +97,7 @@ TEST(Options, RangeViolationsNameTheOptionAndTheCondition) {
   EXPECT_EQ(v.count("nq"), 100000);
   EXPECT_TRUE(v.given("nq"));
   EXPECT_FALSE(v.given("ba-min"));
-  EXPECT_THROW(v.real("nq"), std::logic_error);       // wrong type
+  EXPECT_THROW(v.real("nq"), std::logic_error);  // wrong type
   EXPECT_THROW(v.count("undeclared"), std::logic_error);
   EXPECT_EQ(specs[1].record_key(), "ba_min");
 }
@@ -267,7 +268,7 @@ TEST(Output, RejectsABadPathAndLeavesNothingBehind) {
   fs::create_directories(root);
   std::ofstream(root / "data") << "a regular file where the data folder should be";
   Output out("demo", root);
-  out.latex("first", "x\n");  // tables/ can be written ...
+  out.latex("first", "x\n");         // tables/ can be written ...
   out.table("", Table({"x"}), "t");  // ... data/ cannot
   out.claim("demo.one", "Lemma 1", EvidenceKind::Sampled, "s").holds(true);
   try {
@@ -292,7 +293,7 @@ TEST(Output, AFailedWriteLeavesNoPartialOutputSet) {
   ASSERT_GE(pid, 0);
   if (pid == 0) {
     ::signal(SIGXFSZ, SIG_IGN);
-    const struct rlimit limit{4096, 4096};
+    const struct rlimit limit { 4096, 4096 };
     ::setrlimit(RLIMIT_FSIZE, &limit);
     Output out("demo", root);
     out.latex("small", "fits\n");

@@ -78,9 +78,9 @@ TEST_P(LongOrbit, TenMillionStepsStayFiniteAndInTheArc) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Sets, LongOrbit,
-                         ::testing::Values(Set{0.01, 0.85},    // Lemma 1 holds, chaotic covering
-                                           Set{1e-4, 0.95},    // long flights (~10^4 time units)
-                                           Set{0.05, 0.7}),    // Lemma 1 fails: scenario D occurs
+                         ::testing::Values(Set{0.01, 0.85},  // Lemma 1 holds, chaotic covering
+                                           Set{1e-4, 0.95},  // long flights (~10^4 time units)
+                                           Set{0.05, 0.7}),  // Lemma 1 fails: scenario D occurs
                          set_name);
 
 }  // namespace

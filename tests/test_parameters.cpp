@@ -15,7 +15,7 @@
 using namespace dfchaos;
 
 namespace {
-constexpr double kResidualTol = 1e-15;   // |Eq. (1) residual| at the computed vartheta0
+constexpr double kResidualTol = 1e-15;       // |Eq. (1) residual| at the computed vartheta0
 constexpr double kUlpTol = 2 * DBL_EPSILON;  // relative distance to the long-double reference
 
 /// Independent reference: bisection in long double (64-bit mantissa) on pi - x - cot(x/2).
@@ -24,15 +24,16 @@ long double vartheta0_long_double() {
   long double lo = 0.1L, hi = pil / 2;
   for (int i = 0; i < 200; ++i) {
     const long double m = 0.5L * (lo + hi);
-    if (pil - m - 1.0L / std::tan(0.5L * m) < 0) lo = m; else hi = m;
+    if (pil - m - 1.0L / std::tan(0.5L * m) < 0)
+      lo = m;
+    else
+      hi = m;
   }
   return 0.5L * (lo + hi);
 }
 }  // namespace
 
-TEST(Vartheta0, ResidualOfEq1IsBelowTolerance) {
-  EXPECT_LT(std::fabs(eq1_residual(vartheta0())), kResidualTol);
-}
+TEST(Vartheta0, ResidualOfEq1IsBelowTolerance) { EXPECT_LT(std::fabs(eq1_residual(vartheta0())), kResidualTol); }
 
 TEST(Vartheta0, AgreesWithLongDoubleBisection) {
   const long double ref = vartheta0_long_double();
@@ -74,8 +75,8 @@ TEST(Phases, AreZerosOfTheForce) {
 }
 
 TEST(Phases, UndefinedOutsideTheirRange) {
-  EXPECT_FALSE(Parameters(1.0, 0.5, 0.5).t2());   // 2b = a: F >= 0
-  EXPECT_FALSE(Parameters(1.0, 0.1, 1.3).t0());   // q - 2b >= a: F never exceeds q
+  EXPECT_FALSE(Parameters(1.0, 0.5, 0.5).t2());  // 2b = a: F >= 0
+  EXPECT_FALSE(Parameters(1.0, 0.1, 1.3).t0());  // q - 2b >= a: F never exceeds q
   EXPECT_THROW(Parameters(1.0, 0.6, 0.8).t2_required(), InvalidParameter);
 }
 

@@ -19,11 +19,11 @@ using namespace dfchaos;
 
 namespace {
 
-constexpr double kAtZeroTol = 1e-8;          // integrated map at eps = 0 against the exact T
+constexpr double kAtZeroTol = 1e-8;              // integrated map at eps = 0 against the exact T
 constexpr double kReleaseClosedFormTol = 4e-15;  // t2^0 against pi + asin(2b/a)
 constexpr double kReleaseResidualTol = 1e-14;    // the force at t2^eps
-constexpr double kScanStep = 1e-5;           // dense scan of the force for its first zero
-constexpr double kDerivativeStep = 1e-6;     // finite differences of G
+constexpr double kScanStep = 1e-5;               // dense scan of the force for its first zero
+constexpr double kDerivativeStep = 1e-6;         // finite differences of G
 
 const double kTop = 1.5 * M_PI;
 

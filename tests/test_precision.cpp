@@ -18,15 +18,13 @@
 using namespace dfchaos;
 
 namespace {
-constexpr int kDoublesBelowT3 = 1200;         // > 1e-12 / ulp(t3) = 1124: all of [t3 - 1e-12, t3)
-constexpr double kReturnRelTol = 1e-3;        // T1 vs theta + 3 (t3 - theta) (t3 from asinl, error ~1e-19)
-constexpr double kReturnAbsTol = 4.45e-16;    //   plus the rounding of the phase of T1 (ulp(t3)/2)
-constexpr double kScaleTol = 1e-13;           // T at a = 1e-90 vs a = 1 (same b/a, q/a)
+constexpr int kDoublesBelowT3 = 1200;       // > 1e-12 / ulp(t3) = 1124: all of [t3 - 1e-12, t3)
+constexpr double kReturnRelTol = 1e-3;      // T1 vs theta + 3 (t3 - theta) (t3 from asinl, error ~1e-19)
+constexpr double kReturnAbsTol = 4.45e-16;  //   plus the rounding of the phase of T1 (ulp(t3)/2)
+constexpr double kScaleTol = 1e-13;         // T at a = 1e-90 vs a = 1 (same b/a, q/a)
 
 /// F(theta) = a sin(theta) + 2b in long double: its sign is exact for doubles near t3.
-long double F_ld(const Parameters& p, double theta) {
-  return p.a() * std::sin(static_cast<long double>(theta)) + 2.0L * p.b();
-}
+long double F_ld(const Parameters& p, double theta) { return p.a() * std::sin(static_cast<long double>(theta)) + 2.0L * p.b(); }
 }  // namespace
 
 // The t3 edge. Bug: every theta in [t3 - 3e-14, t3) gave scenario G with T = theta and elapsed
@@ -133,8 +131,7 @@ TEST(PrecisionRegression, SimulationTimesBeyondTheBoundAreRefused) {
   const auto near0 = simulate(p, 0, 0, 0, ph, ph + 200), far = simulate(p, 0, 0, 0, t0, t0 + 200);
   ASSERT_EQ(near0.events.size(), far.events.size());
   ASSERT_GT(far.events.size(), 3u);
-  for (std::size_t i = 0; i < near0.events.size(); ++i)
-    EXPECT_NEAR(far.events[i].when.phase, near0.events[i].when.phase, 1e-12);
+  for (std::size_t i = 0; i < near0.events.size(); ++i) EXPECT_NEAR(far.events[i].when.phase, near0.events[i].when.phase, 1e-12);
 }
 
 TEST(PrecisionRegression, PhaseOfLargeTimesIsExact) {
@@ -182,8 +179,7 @@ TEST(DoubleDouble, CosineTo1e31AgainstMpmath) {
   };
   constexpr double kRelTol = 1e-31;
   for (const Ref& r : {Ref{3.5, -0.9364566872907963, 3.5955391095995e-18}, Ref{4.0, -0.6536436208636119, 2.5846614087018284e-17},
-                       Ref{1.6, -0.029199522301288815, 4.155359463897964e-19},
-                       Ref{3.1431505650355778, -0.999998786456209, -7.071280470751749e-18}}) {
+                       Ref{1.6, -0.029199522301288815, 4.155359463897964e-19}, Ref{3.1431505650355778, -0.999998786456209, -7.071280470751749e-18}}) {
     const dd::DD c = dd::cos_dd(r.x);
     EXPECT_EQ(c.hi, r.hi) << "x=" << r.x;
     EXPECT_NEAR(c.lo, r.lo, kRelTol * std::fabs(r.hi)) << "x=" << r.x;

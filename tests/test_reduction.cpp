@@ -19,7 +19,6 @@ namespace {
 constexpr int kSteps = 150;
 constexpr double kPhaseTol = 1e-10;
 
-
 /// Simulates `steps` steps of T from rest at th0 and checks each free start of the simulator against
 /// one step of T from the previous simulated free start (one-step consistency: no chaotic
 /// amplification of rounding). Records the scenarios met.
@@ -56,8 +55,8 @@ void check_run(const Parameters& p, double th0, int steps, std::set<std::string>
 TEST(Reduction, SimulatorFreeStartsAreIteratesOfT) {
   std::set<std::string> seen;
   // Parameter sets chosen so that scenarios A, B, C (Lemma 1 holds) and D (it fails) all occur.
-  for (auto [ba, qa, th0] : {std::tuple{0.01, 0.85, 3.5}, std::tuple{0.05, 0.7, 4.0}, std::tuple{0.1, 0.95, 4.2},
-                             std::tuple{0.002, 0.8, 3.3}, std::tuple{0.05, 0.6, 5.0}}) {
+  for (auto [ba, qa, th0] : {std::tuple{0.01, 0.85, 3.5}, std::tuple{0.05, 0.7, 4.0}, std::tuple{0.1, 0.95, 4.2}, std::tuple{0.002, 0.8, 3.3},
+                             std::tuple{0.05, 0.6, 5.0}}) {
     const Parameters p(1.0, ba, qa);
     check_run(p, th0, kSteps, seen);  // a long orbit
     // Short runs started where each of B, C, D is the first step (these arcs lie near t3 and are
@@ -121,8 +120,8 @@ TEST(Simulator, BoundsAndBadInput) {
   SimulationOptions o;
   o.max_events = 5;
   EXPECT_THROW(simulate(p, 0, 0, 0, 4.0, 1e4, o), GaveUp);
-  EXPECT_THROW(simulate(p, 1.0, 0.0, 0, 0, 10), InvalidParameter);      // x0 > y0
-  EXPECT_THROW(simulate(p, 0, 0, 0, 10, 0), InvalidParameter);          // t_end < t0
+  EXPECT_THROW(simulate(p, 1.0, 0.0, 0, 0, 10), InvalidParameter);  // x0 > y0
+  EXPECT_THROW(simulate(p, 0, 0, 0, 10, 0), InvalidParameter);      // t_end < t0
   EXPECT_THROW(simulate(p, NAN, 0, 0, 0, 10), InvalidParameter);
   SimulationOptions many;
   many.sample_dt = 1e-9;

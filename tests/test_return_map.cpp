@@ -42,9 +42,8 @@ TEST_P(AgainstIntegration, TAgreesWithOdeivIntegratedMap) {
 }
 
 INSTANTIATE_TEST_SUITE_P(ParameterSets, AgainstIntegration,
-                         ::testing::Values(std::pair{0.2, 0.95}, std::pair{0.1, 0.95}, std::pair{0.05, 0.85},
-                                           std::pair{0.05, 0.7}, std::pair{0.02, 0.6}, std::pair{0.02, 0.85},
-                                           std::pair{0.1, 0.45}));
+                         ::testing::Values(std::pair{0.2, 0.95}, std::pair{0.1, 0.95}, std::pair{0.05, 0.85}, std::pair{0.05, 0.7},
+                                           std::pair{0.02, 0.6}, std::pair{0.02, 0.85}, std::pair{0.1, 0.45}));
 
 TEST(ReturnMap, AccurateTo1e9AgainstLongDoubleRefinement) {
   // Reference: Newton's method in long double on Eq. (11) for theta1 and on Eq. (17) for theta2,
@@ -203,5 +202,5 @@ TEST(Orbit, IsTheIterationOfTWithSummedTimeAndAdvance) {
   EXPECT_EQ(T_power(p, theta0, 0), theta0);
   EXPECT_TRUE(Orbit(p, theta0, 0).begin() == Orbit(p, theta0, 0).end());
   EXPECT_TRUE(Orbit(p, 1.0, 0).begin() == Orbit(p, 1.0, 0).end());  // nothing computed, nothing checked
-  EXPECT_THROW(Orbit(p, 1.0, 1).begin(), InvalidParameter);           // the first step checks theta0
+  EXPECT_THROW(Orbit(p, 1.0, 1).begin(), InvalidParameter);         // the first step checks theta0
 }

@@ -78,9 +78,8 @@ struct Recorder final : SimulationSink {
 bool same(double x, double y) { return std::bit_cast<std::uint64_t>(x) == std::bit_cast<std::uint64_t>(y); }
 
 void expect_same_event(const SimulationEvent& a, const SimulationEvent& b, std::size_t k) {
-  EXPECT_TRUE(same(a.t, b.t) && a.when.turn == b.when.turn && same(a.when.phase, b.when.phase) && a.before == b.before &&
-              a.after == b.after && a.kind == b.kind && same(a.x, b.x) && same(a.y, b.y) && same(a.v_before, b.v_before) &&
-              same(a.v_after, b.v_after))
+  EXPECT_TRUE(same(a.t, b.t) && a.when.turn == b.when.turn && same(a.when.phase, b.when.phase) && a.before == b.before && a.after == b.after &&
+              a.kind == b.kind && same(a.x, b.x) && same(a.y, b.y) && same(a.v_before, b.v_before) && same(a.v_after, b.v_after))
       << "event " << k << " at t=" << a.t << " / " << b.t;
 }
 
@@ -92,12 +91,9 @@ struct Case {
 // Inside and outside the paper's assumptions (b >= a/2, q <= 2b, q >= a + 2b), with and without
 // samples, a sample step that is a multiple of nothing in particular.
 const Case kCases[] = {
-    {Parameters(1.0, 0.01, 0.85), 0.0, 0.0, 0.0, 4.0, 300.0, 0.1},
-    {Parameters(1.0, 0.3, 0.85), 0.0, 0.0, 0.0, 0.0, 1000.0, 0.37},
-    {Parameters(1.0, 0.3, 0.5), -1.0, 0.0, 2.0, -3.0, 500.0, 1.0},
-    {Parameters(2.0, 1.5, 0.5), -1.0, 0.0, 2.0, -3.0, 500.0, 2.0},
-    {Parameters(1.0, 0.6, 1.5), -1.0, 0.0, 0.0, 0.0, 200.0, 0.0},
-    {Parameters(1.0, 0.1, 2.5), -0.5, 0.0, 0.3, 0.0, 300.0, 0.25},
+    {Parameters(1.0, 0.01, 0.85), 0.0, 0.0, 0.0, 4.0, 300.0, 0.1}, {Parameters(1.0, 0.3, 0.85), 0.0, 0.0, 0.0, 0.0, 1000.0, 0.37},
+    {Parameters(1.0, 0.3, 0.5), -1.0, 0.0, 2.0, -3.0, 500.0, 1.0}, {Parameters(2.0, 1.5, 0.5), -1.0, 0.0, 2.0, -3.0, 500.0, 2.0},
+    {Parameters(1.0, 0.6, 1.5), -1.0, 0.0, 0.0, 0.0, 200.0, 0.0},  {Parameters(1.0, 0.1, 2.5), -0.5, 0.0, 0.3, 0.0, 300.0, 0.25},
 };
 
 TEST(SimulateStreaming, SinkReceivesTheVectorFormsSimulationInTimeOrder) {
@@ -171,7 +167,7 @@ TEST(SimulateStreaming, RejectsBadInputBeforeAnyCallOfTheSink) {
   EXPECT_THROW(simulate(p, 1.0, 0.0, 0.0, 0.0, 10.0, o, r), InvalidParameter);  // x0 > y0
   EXPECT_THROW(simulate(p, 0.0, 0.0, 0.0, 10.0, 0.0, o, r), InvalidParameter);  // t_end < t0
   o.sample_dt = 1e-9;
-  EXPECT_THROW(simulate(p, 0.0, 0.0, 0.0, 0.0, 1e3, o, r), InvalidParameter);   // too many samples
+  EXPECT_THROW(simulate(p, 0.0, 0.0, 0.0, 0.0, 1e3, o, r), InvalidParameter);  // too many samples
   EXPECT_TRUE(r.calls.empty());
 }
 
@@ -295,8 +291,8 @@ TEST(SimulateStreaming, Regression_28_7_EventsStreamInFlatMemory) {
   EXPECT_EQ(r.lines, 2 + 1'000'000) << "initial regime, event header, the first 1e6 events";
   EXPECT_EQ(r.sample_header, -1);
   EXPECT_EQ(r.blank_lines, 0);
-  EXPECT_LT(r.maxrss_kib - ref.maxrss_kib, kFlatGrowthKiB) << "peak resident memory " << r.maxrss_kib << " KiB against "
-                                                           << ref.maxrss_kib << " KiB for 10 time units";
+  EXPECT_LT(r.maxrss_kib - ref.maxrss_kib, kFlatGrowthKiB)
+      << "peak resident memory " << r.maxrss_kib << " KiB against " << ref.maxrss_kib << " KiB for 10 time units";
 }
 
 TEST(SimulateStreaming, Regression_28_7_SamplesSpoolInFlatMemory) {
@@ -311,8 +307,8 @@ TEST(SimulateStreaming, Regression_28_7_SamplesSpoolInFlatMemory) {
   EXPECT_EQ(r.blank_lines, 2);
   EXPECT_EQ(r.lines - 1 - r.sample_header, 1'000'001) << "samples at t = 0, 1, ..., 1e6";
   EXPECT_EQ(r.last.substr(0, 8), "1000000\t");
-  EXPECT_LT(r.maxrss_kib - ref.maxrss_kib, kFlatGrowthKiB) << "peak resident memory " << r.maxrss_kib << " KiB against "
-                                                           << ref.maxrss_kib << " KiB for 10 time units";
+  EXPECT_LT(r.maxrss_kib - ref.maxrss_kib, kFlatGrowthKiB)
+      << "peak resident memory " << r.maxrss_kib << " KiB against " << ref.maxrss_kib << " KiB for 10 time units";
 }
 
 #endif

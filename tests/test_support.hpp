@@ -45,7 +45,6 @@ class Drawer {
 /// orbit of t2 that returns to t2 through the rounding (a cycle of the rounding, not of T): which
 /// b/a gives one changes with any ulp-level change of T, so those tests take the first of this list
 /// that qualifies, and fail (asking for a longer list) when none does.
-inline constexpr std::array<double, 10> kRoundingCycleCandidates = {0.0089, 0.0096, 0.0101, 0.0102, 0.0091,
-                                                                   0.0094, 0.0095, 0.0107, 0.0114, 0.0085};
+inline constexpr std::array<double, 10> kRoundingCycleCandidates = {0.0089, 0.0096, 0.0101, 0.0102, 0.0091, 0.0094, 0.0095, 0.0107, 0.0114, 0.0085};
 
 }  // namespace dfchaos::test_support

@@ -109,8 +109,8 @@ TEST(Range, ValuesAreThoseOfTheKitAxes) {
 }
 
 TEST(Range, RejectsMalformedOrEmptyRanges) {
-  for (const char* bad : {"", "1", "0:1", "0:1:3:log:x", "x:1:3", "0:nan:3", "0:inf:3", "0:1:0", "0:1:2.5", "0:1:-3", "1:0:3",
-                          "1:1:3", "0:1:1", "0.5:0.5:1:mid", "0:1:3:cubic", "0:1:3:log", "-1:1:3:log", "0:1:1e9", "0::3"}) {
+  for (const char* bad : {"", "1", "0:1", "0:1:3:log:x", "x:1:3", "0:nan:3", "0:inf:3", "0:1:0", "0:1:2.5", "0:1:-3", "1:0:3", "1:1:3", "0:1:1",
+                          "0.5:0.5:1:mid", "0:1:3:cubic", "0:1:3:log", "-1:1:3:log", "0:1:1e9", "0::3"}) {
     const std::string msg = rejection([&] { Range::parse("q-range", bad); });
     EXPECT_NE(msg.find("q-range"), std::string::npos) << "'" << bad << "' -> " << msg;
   }
@@ -121,7 +121,7 @@ TEST(Spec, RejectsInadmissibleAxesAndTooMuchWork) {
     const std::string msg = rejection([&] { s.validate(); });
     EXPECT_EQ(msg.rfind(option + ":", 0), 0u) << msg;
   };
-  expect_rejected(spec_of("0.5:1:3", "0.1:0.5:3", "covering"), "b-range");    // b/a = 1/2: no t2, t3
+  expect_rejected(spec_of("0.5:1:3", "0.1:0.5:3", "covering"), "b-range");  // b/a = 1/2: no t2, t3
   expect_rejected(spec_of("0.5:1:3", "0.1:0.6:3", "covering"), "b-range");
   expect_rejected(spec_of("-0.5:1:3", "0.1:0.2:3", "covering"), "q-range");
   expect_rejected(spec_of("0:1:3", "0.1:0.2:3", "covering"), "q-range");
@@ -134,7 +134,7 @@ TEST(Spec, RejectsInadmissibleAxesAndTooMuchWork) {
   expect_rejected(s, "theta0");
   s.orbit.theta0_fraction = 0.5;
   s.period.tol = 0;
-  expect_rejected(s, "period-tol");  // every option is checked, used or not
+  expect_rejected(s, "period-tol");                                             // every option is checked, used or not
   EXPECT_NO_THROW(spec_of("0:1:3:mid", "0:0.5:3:mid", "covering").validate());  // centres lie inside the open bounds
 }
 
@@ -243,20 +243,20 @@ TEST(Header, RowProblemChecksEveryField) {
   EXPECT_EQ(row_problem("12\t0.80000000000000004\t0.001\tinadmissible\tnan\tnan\t-", 12, cols), "");
   EXPECT_EQ(row_problem("12\t0.80000000000000004\t0.001\terror\tnan\tnan\tcovering: gave up", 12, cols), "");
   // One change in each field is refused.
-  for (const std::string& bad : std::vector<std::string>{
-           "13\t0.80000000000000004\t0.001\tok\t1\t3\t-",           // another index
-           "12\t0.8000000000000000x\t0.001\tok\t1\t3\t-",           // q/a not a number
-           "12\t0.800000000000000040\t0.001\tok\t1\t3\t-",          // q/a not as the sweep writes it
-           "12\t0.80000000000000004\t-0.001\tok\t1\t3\t-",          // negative b/a
-           "12\t0.80000000000000004\t0.001\tXX\t1\t3\t-",           // status
-           "12\t0.80000000000000004\t0.001\tok\t7\t3\t-",           // covering 7
-           "12\t0.80000000000000004\t0.001\tok\t1\t3.5\t-",         // period not a count
-           "12\t0.80000000000000004\t0.001\tok\t1\t3\tboom",        // a message in an ok cell
-           "12\t0.80000000000000004\t0.001\terror\tnan\tnan\t-",    // an error without message
-           "12\t0.80000000000000004\t0.001\tinadmissible\t1\tnan\t-",  // a value in an inadmissible cell
-           "12\t0.80000000000000004\t0.001\tok\t1\t3",               // a field missing
-           "12\t0.80000000000000004\t0.001\tok\t1\t3\t-\t-",       // a field too many
-           std::string("12\t0.80000000000000004\t0.0") + '\0' + "01\tok\t1\t3\t-"})  // a NUL byte
+  for (const std::string& bad :
+       std::vector<std::string>{"13\t0.80000000000000004\t0.001\tok\t1\t3\t-",                            // another index
+                                "12\t0.8000000000000000x\t0.001\tok\t1\t3\t-",                            // q/a not a number
+                                "12\t0.800000000000000040\t0.001\tok\t1\t3\t-",                           // q/a not as the sweep writes it
+                                "12\t0.80000000000000004\t-0.001\tok\t1\t3\t-",                           // negative b/a
+                                "12\t0.80000000000000004\t0.001\tXX\t1\t3\t-",                            // status
+                                "12\t0.80000000000000004\t0.001\tok\t7\t3\t-",                            // covering 7
+                                "12\t0.80000000000000004\t0.001\tok\t1\t3.5\t-",                          // period not a count
+                                "12\t0.80000000000000004\t0.001\tok\t1\t3\tboom",                         // a message in an ok cell
+                                "12\t0.80000000000000004\t0.001\terror\tnan\tnan\t-",                     // an error without message
+                                "12\t0.80000000000000004\t0.001\tinadmissible\t1\tnan\t-",                // a value in an inadmissible cell
+                                "12\t0.80000000000000004\t0.001\tok\t1\t3",                               // a field missing
+                                "12\t0.80000000000000004\t0.001\tok\t1\t3\t-\t-",                         // a field too many
+                                std::string("12\t0.80000000000000004\t0.0") + '\0' + "01\tok\t1\t3\t-"})  // a NUL byte
     EXPECT_NE(row_problem(bad, 12, cols), "") << bad;
 }
 
@@ -265,12 +265,11 @@ TEST(Header, RowProblemChecksTheCertifiedColumns) {
   EXPECT_EQ(row_problem("3\t0.84999999999999998\t0.01\tok\t0\t2\t-", 3, cols), "");
   EXPECT_EQ(row_problem("3\t0.84999999999999998\t0.01\tok\t1\t0\t-", 3, cols), "");
   EXPECT_EQ(row_problem("3\t0.84999999999999998\t0.01\terror\tnan\tnan\tcertified: x", 3, cols), "");
-  for (const std::string& bad : std::vector<std::string>{
-           "3\t0.84999999999999998\t0.01\tok\t2\t0\t-",     // certified 2
-           "3\t0.84999999999999998\t0.01\tok\t0\t7\t-",     // no step 7
-           "3\t0.84999999999999998\t0.01\tok\t0\t-1\t-",    // nor -1
-           "3\t0.84999999999999998\t0.01\tok\t0\t2.5\t-",   // a code is an integer
-           "3\t0.84999999999999998\t0.01\tinadmissible\tnan\t0\t-"})
+  for (const std::string& bad : std::vector<std::string>{"3\t0.84999999999999998\t0.01\tok\t2\t0\t-",    // certified 2
+                                                         "3\t0.84999999999999998\t0.01\tok\t0\t7\t-",    // no step 7
+                                                         "3\t0.84999999999999998\t0.01\tok\t0\t-1\t-",   // nor -1
+                                                         "3\t0.84999999999999998\t0.01\tok\t0\t2.5\t-",  // a code is an integer
+                                                         "3\t0.84999999999999998\t0.01\tinadmissible\tnan\t0\t-"})
     EXPECT_NE(row_problem(bad, 3, cols), "") << bad;
 }
 
@@ -297,8 +296,8 @@ TEST(Seal, ParsesExactlyWhatItWrites) {
 
 TEST(Header, RejectsATruncatedOrForeignHeader) {
   const std::string whole = header_text(cheap_spec(), std::nullopt);
-  for (const std::string& bad : {whole.substr(0, whole.size() - 1), whole.substr(0, whole.size() / 2), std::string("index\tx\n"),
-                                 "# something else\n" + whole}) {
+  for (const std::string& bad :
+       {whole.substr(0, whole.size() - 1), whole.substr(0, whole.size() / 2), std::string("index\tx\n"), "# something else\n" + whole}) {
     std::istringstream in(bad);
     EXPECT_NE(rejection([&] { read_header("sweep-merge", "f", in); }).find("sweep-merge"), std::string::npos);
   }
@@ -393,7 +392,7 @@ TEST(Cell, CertifiedStepCodesAreProveCoveringsStepNames) {
     EXPECT_NE(certified_step_legend().find(std::to_string(code) + " " + certified_step_name(c)), std::string::npos);
   }
   EXPECT_EQ(names.size(), std::size(kAllCertifiedSteps));  // one name per code
-  EXPECT_FALSE(certified_step_of("proved").has_value());  // not a step of a failed proof
+  EXPECT_FALSE(certified_step_of("proved").has_value());   // not a step of a failed proof
   EXPECT_FALSE(certified_step_of("covering: candidate").has_value());
   EXPECT_FALSE(certified_step_of("").has_value());
 }

@@ -14,10 +14,10 @@
 /// With `--time`: instead, the time of one evaluation of T at each b/a of `make bench`
 /// (1e-1 ... 1e-6, q/a = 0.85, the bench's 16 phases), one line `b/a microseconds` each: the
 /// fastest of 5 rounds of 3000 passes over the phases (steady_clock).
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <algorithm>
 #include <exception>
 #include <random>
 #include <string>

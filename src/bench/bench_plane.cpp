@@ -72,7 +72,7 @@ int main(int argc, char** argv) {
   const long long evaluations = T_evaluations() - before;
   long long errors = 0;
   for (const auto& r : rows) errors += r.find("\terror\t") != std::string::npos;
-  std::printf("cells %lld\nT_evaluations %lld\nseconds %.6f\ncpu_seconds %.6f\nthreads %d\nerrors %lld\n", spec.cells(), evaluations,
-              seconds, cpu, omp_get_max_threads(), errors);
+  std::printf("cells %lld\nT_evaluations %lld\nseconds %.6f\ncpu_seconds %.6f\nthreads %d\nerrors %lld\n", spec.cells(), evaluations, seconds, cpu,
+              omp_get_max_threads(), errors);
   return 0;
 }

@@ -40,13 +40,13 @@
 #include <vector>
 
 #include "dfchaos/errors.hpp"
-#include "dfchaos/parameters.hpp"
-#include "kit/output.hpp"
-#include "kit/json.hpp"
-#include "kit/format.hpp"
 #include "dfchaos/ode_map.hpp"
+#include "dfchaos/parameters.hpp"
 #include "dfchaos/phase.hpp"
 #include "dfchaos/return_map.hpp"
+#include "kit/format.hpp"
+#include "kit/json.hpp"
+#include "kit/output.hpp"
 
 namespace {
 
@@ -126,9 +126,9 @@ constexpr int kScalingRepeats = 2;
 
 /// What a child process printed on the stream asked for, and how it ended.
 struct ChildResult {
-  int status = -1;        ///< exit status (-1: did not exit normally)
-  std::string text;       ///< its stdout or stderr, as asked
-  double seconds = 0;     ///< wall time from start to end
+  int status = -1;     ///< exit status (-1: did not exit normally)
+  std::string text;    ///< its stdout or stderr, as asked
+  double seconds = 0;  ///< wall time from start to end
 };
 
 /// Runs argv[0] with `env` added to the environment, capturing its stdout (or stderr); the other
@@ -180,17 +180,22 @@ Json measure_plane(double sincos_cpu_seconds) {
   std::fflush(stdout);
   const ChildResult c = run_child({DFCHAOS_BENCH_PLANE}, {}, false);
   const double cells = value_after(c.text, "cells "), evaluations = value_after(c.text, "T_evaluations "),
-               seconds = value_after(c.text, "\nseconds "), threads = value_after(c.text, "threads "),
-               cpu = value_after(c.text, "cpu_seconds ");
+               seconds = value_after(c.text, "\nseconds "), threads = value_after(c.text, "threads "), cpu = value_after(c.text, "cpu_seconds ");
   Json j = Json::object();
   j.set("grid", "thm1_parameter_plane: q/a 100 cell centres of (sin vartheta0, 1), b/a 100 log-spaced in [1e-4, 0.1]")
-      .set("observables", "covering,superstable").set("cells", cells).set("T_evaluations_per_cell", evaluations / cells)
-      .set("cells_per_second", cells / seconds).set("seconds", seconds).set("threads", threads)
-      .set("cpu_seconds", cpu).set("cpu_seconds_per_cell", cpu / cells).set("cell_in_sincos", cpu / cells / sincos_cpu_seconds)
+      .set("observables", "covering,superstable")
+      .set("cells", cells)
+      .set("T_evaluations_per_cell", evaluations / cells)
+      .set("cells_per_second", cells / seconds)
+      .set("seconds", seconds)
+      .set("threads", threads)
+      .set("cpu_seconds", cpu)
+      .set("cpu_seconds_per_cell", cpu / cells)
+      .set("cell_in_sincos", cpu / cells / sincos_cpu_seconds)
       .set("errors", value_after(c.text, "errors "))
       .set("exit_status", c.status);
-  std::printf("bench: plane: %.0f cells, %.0f T evaluations per cell, %.1f cells/s on %.0f threads\n", cells, evaluations / cells,
-              cells / seconds, threads);
+  std::printf("bench: plane: %.0f cells, %.0f T evaluations per cell, %.1f cells/s on %.0f threads\n", cells, evaluations / cells, cells / seconds,
+              threads);
   return j;
 }
 
@@ -204,14 +209,14 @@ struct ScalingRun {
 
 ScalingRun scaling_run(int workers, const std::filesystem::path& file, bool mpi) {
   const std::string s0 = format_double(std::sin(vartheta0()));
-  const std::vector<std::string> spec = {"--q-range", s0 + ":1:" + std::to_string(kScalingSide) + ":mid", "--b-range",
-                                         "1e-4:0.1:" + std::to_string(kScalingSide) + ":log", "--out", file.string()};
+  const std::vector<std::string> spec = {"--q-range", s0 + ":1:" + std::to_string(kScalingSide) + ":mid",
+                                         "--b-range", "1e-4:0.1:" + std::to_string(kScalingSide) + ":log",
+                                         "--out",     file.string()};
   std::vector<std::string> argv, env = {"OMP_NUM_THREADS=" + std::string(mpi ? "1" : std::to_string(workers))};
 #ifdef DFCHAOS_BENCH_MPI_DRIVER
   if (mpi) {
     // --bind-to none: on a shared machine the ranks must be free to move to whichever core is idle.
-    argv = {DFCHAOS_BENCH_MPIEXEC, "--oversubscribe", "--bind-to", "none", "-np", std::to_string(workers), DFCHAOS_BENCH_MPI_DRIVER,
-            "--progress"};
+    argv = {DFCHAOS_BENCH_MPIEXEC, "--oversubscribe", "--bind-to", "none", "-np", std::to_string(workers), DFCHAOS_BENCH_MPI_DRIVER, "--progress"};
     if (::geteuid() == 0) env.insert(env.end(), {"OMPI_ALLOW_RUN_AS_ROOT=1", "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1"});
   }
 #endif
@@ -242,7 +247,8 @@ ScalingRun scaling_run(int workers, const std::filesystem::path& file, bool mpi)
     double busy_total = NAN;
     result.utilization = value_after(c.text, "utilization ");
     j.set("cpu_seconds_per_rank", list("cpu seconds per rank: ", result.cpu))
-        .set("busy_seconds_per_rank", list("busy seconds per rank: ", busy_total)).set("utilization", result.utilization);
+        .set("busy_seconds_per_rank", list("busy seconds per rank: ", busy_total))
+        .set("utilization", result.utilization);
   }
   std::printf("bench: scaling: %d %s: %.2f s\n", workers, mpi ? "rank(s)" : "thread(s)", c.seconds);
   std::fflush(stdout);
@@ -274,8 +280,10 @@ int main(int argc, char** argv) {
   std::vector<char*> args;
   for (int i = 0; i < argc; ++i) {
     const std::string a = argv[i];
-    if (a.rfind("--out=", 0) == 0) out = a.substr(6);
-    else args.push_back(argv[i]);
+    if (a.rfind("--out=", 0) == 0)
+      out = a.substr(6);
+    else
+      args.push_back(argv[i]);
   }
   if (std::find_if(args.begin(), args.end(), [](const char* a) { return std::string(a) == "--out"; }) != args.end()) {
     std::fprintf(stderr, "bench_return_map: error: out: write --out=DIR\n");
@@ -291,7 +299,9 @@ int main(int argc, char** argv) {
   for (int k = 0; k < static_cast<int>(kRatios.size()); ++k) {
     benchmark::RegisterBenchmark(("T_closed_form/" + std::to_string(k)).c_str(), bm_closed_form)->Arg(k)->Unit(benchmark::kMicrosecond);
     benchmark::RegisterBenchmark(("T_ode_baseline/" + std::to_string(k)).c_str(), bm_ode_baseline)
-        ->Arg(k)->Iterations(baseline_iterations[k])->Unit(benchmark::kMillisecond);
+        ->Arg(k)
+        ->Iterations(baseline_iterations[k])
+        ->Unit(benchmark::kMillisecond);
   }
   benchmark::RegisterBenchmark("sincos/last", bm_sincos)->Unit(benchmark::kNanosecond);
   int n = static_cast<int>(args.size());
@@ -308,16 +318,17 @@ int main(int argc, char** argv) {
   Json doc = Json::object();
   doc.set("q_over_a", kQ).set("phases", kPhases).set("sincos_seconds", sincos_seconds).set("sincos_cpu_seconds", sincos_cpu_seconds);
   Json rows = Json::array();
-  std::string tex = "% generated by bench_return_map (make bench); do not edit\n\\begin{tabular}{rrrrrrr}\n\\toprule\n"
-                    "$b/a$ & dfchaos [$\\mu$s] & ODE [ms] & speed-up & dfchaos evaluations/s & "
-                    "ODE gave up & $\\max|T_{\\mathrm{ODE}}-T|$\\\\\n\\midrule\n";
+  std::string tex =
+      "% generated by bench_return_map (make bench); do not edit\n\\begin{tabular}{rrrrrrr}\n\\toprule\n"
+      "$b/a$ & dfchaos [$\\mu$s] & ODE [ms] & speed-up & dfchaos evaluations/s & "
+      "ODE gave up & $\\max|T_{\\mathrm{ODE}}-T|$\\\\\n\\midrule\n";
   double ours_min = INFINITY, ours_max = 0;
   std::size_t rows_measured = 0;
   std::map<double, double> speedup;
   for (std::size_t k = 0; k < kRatios.size(); ++k) {
     const auto a = collector.seconds.find("T_closed_form/" + std::to_string(k) + "/" + std::to_string(k));
-    const auto b = collector.seconds.find("T_ode_baseline/" + std::to_string(k) + "/" + std::to_string(k) + "/iterations:" +
-                                          std::to_string(baseline_iterations[k]));
+    const auto b = collector.seconds.find("T_ode_baseline/" + std::to_string(k) + "/" + std::to_string(k) +
+                                          "/iterations:" + std::to_string(baseline_iterations[k]));
     if (a == collector.seconds.end()) continue;  // filtered out
     const double ours = a->second;
     const double base = b == collector.seconds.end() ? NAN : b->second / kPhases;
@@ -329,8 +340,10 @@ int main(int argc, char** argv) {
       const auto th = phases(p);
       max_diff = 0;
       for (std::size_t i = 0; i < th.size(); ++i) {
-        if (std::isnan(it->second[i])) ++gave_up;
-        else max_diff = std::max(max_diff, circle_distance(it->second[i], T(p, th[i])));
+        if (std::isnan(it->second[i]))
+          ++gave_up;
+        else
+          max_diff = std::max(max_diff, circle_distance(it->second[i], T(p, th[i])));
       }
     }
     const bool base_lower_bound = gave_up > 0;
@@ -339,16 +352,22 @@ int main(int argc, char** argv) {
     ours_max = std::max(ours_max, ours);
     speedup[kRatios[k]] = base / ours;
     Json r = Json::object();
-    r.set("b_over_a", kRatios[k]).set("dfchaos_seconds", ours).set("baseline_seconds", base).set("speedup", base / ours)
-        .set("dfchaos_evaluations_per_second", 1.0 / ours).set("baseline_gave_up", gave_up)
-        .set("baseline_seconds_is_lower_bound", base_lower_bound).set("max_abs_T_difference", max_diff)
+    r.set("b_over_a", kRatios[k])
+        .set("dfchaos_seconds", ours)
+        .set("baseline_seconds", base)
+        .set("speedup", base / ours)
+        .set("dfchaos_evaluations_per_second", 1.0 / ours)
+        .set("baseline_gave_up", gave_up)
+        .set("baseline_seconds_is_lower_bound", base_lower_bound)
+        .set("max_abs_T_difference", max_diff)
         .set("dfchaos_in_sincos", ours / sincos_seconds);
     rows.push(r);
     const std::string geq = base_lower_bound ? "$\\ge$" : "";
     tex += latex_number(format_significant(kRatios[k], 1)) + " & " + format_significant(ours * 1e6, 3) + " & " +
            (std::isnan(base) ? std::string("---") : geq + latex_number(format_significant(base * 1e3, 3))) + " & " +
-           (std::isnan(base) ? std::string("---") : geq + latex_number(format_significant(base / ours, 3))) + " & " + latex_number(format_significant(1.0 / ours, 3)) +
-           " & " + (std::isnan(base) ? std::string("---") : std::to_string(gave_up) + "/" + std::to_string(kPhases)) + " & " +
+           (std::isnan(base) ? std::string("---") : geq + latex_number(format_significant(base / ours, 3))) + " & " +
+           latex_number(format_significant(1.0 / ours, 3)) + " & " +
+           (std::isnan(base) ? std::string("---") : std::to_string(gave_up) + "/" + std::to_string(kPhases)) + " & " +
            (std::isnan(max_diff) ? std::string("---") : latex_number(format_significant(max_diff, 2))) + "\\\\\n";
   }
   tex += "\\bottomrule\n\\end{tabular}\n";
@@ -363,7 +382,8 @@ int main(int argc, char** argv) {
   Json targets = Json::array();
   if (speedup.count(1e-2)) targets.push(target("speed-up >= 100 at b/a = 1e-2", speedup[1e-2] >= 100, speedup[1e-2]));
   if (speedup.count(1e-4)) targets.push(target("speed-up >= 10^4 at b/a = 1e-4", speedup[1e-4] >= 1e4, speedup[1e-4]));
-  if (ours_max > 0 && rows_measured == kRatios.size()) targets.push(target("dfchaos cost varies < 3x over b/a in [1e-6, 1e-1]", ours_max / ours_min < 3, ours_max / ours_min));
+  if (ours_max > 0 && rows_measured == kRatios.size())
+    targets.push(target("dfchaos cost varies < 3x over b/a in [1e-6, 1e-1]", ours_max / ours_min < 3, ours_max / ours_min));
   const std::size_t benchmarks = 2 * kRatios.size() + 2;  // ours and the baseline per b/a, sincos twice
   const bool complete = rows_measured == kRatios.size() && collector.seconds.size() == benchmarks;
   if (out.empty()) {
@@ -371,8 +391,7 @@ int main(int argc, char** argv) {
     return 0;
   }
   if (!complete) {
-    std::printf("bench: %zu of %zu benchmarks measured (a filter or a listing): nothing written\n", collector.seconds.size(),
-                benchmarks);
+    std::printf("bench: %zu of %zu benchmarks measured (a filter or a listing): nothing written\n", collector.seconds.size(), benchmarks);
     return 0;
   }
   // The plane and the scaling sweep: child processes, measured only for a complete run.
@@ -414,21 +433,27 @@ int main(int argc, char** argv) {
     // estimate (it leaves out mpiexec's start-up), recorded apart from the measured efficiency.
     const double cpu_ratio = best_cpu[0] / best_cpu[1], utilization2 = best_utilization[1];
     const double idle_estimate = utilization2 * cpu_ratio;
-    doc.set("scaling", runs).set("scaling_mode", mpi ? "mpi: dfchaos-sweep-mpi, mpiexec --oversubscribe --bind-to none -np R, 1 thread per rank"
-                                                     : "openmp: dfchaos sweep, OMP_NUM_THREADS = 1 and 2 (no MPI driver built)")
-        .set("scaling_cells", kScalingCells).set("scaling_observables", "covering,superstable,lyapunov,rate,period")
-        .set("scaling_efficiency", efficiency).set("scaling_outputs_identical", identical).set("load_average_1min_before", load[0])
-        .set("scaling_cpu_ratio", cpu_ratio).set("scaling_efficiency_on_idle_cores_estimate", idle_estimate);
+    doc.set("scaling", runs)
+        .set("scaling_mode", mpi ? "mpi: dfchaos-sweep-mpi, mpiexec --oversubscribe --bind-to none -np R, 1 thread per rank"
+                                 : "openmp: dfchaos sweep, OMP_NUM_THREADS = 1 and 2 (no MPI driver built)")
+        .set("scaling_cells", kScalingCells)
+        .set("scaling_observables", "covering,superstable,lyapunov,rate,period")
+        .set("scaling_efficiency", efficiency)
+        .set("scaling_outputs_identical", identical)
+        .set("load_average_1min_before", load[0])
+        .set("scaling_cpu_ratio", cpu_ratio)
+        .set("scaling_efficiency_on_idle_cores_estimate", idle_estimate);
     if (load[0] > kBusyLoad)
-      std::printf("bench: the machine was busy (load average %.1f before the scaling runs): the measured efficiency understates;\n"
-                  "       on idle cores it would be about %.3f (utilization %.4f x CPU ratio %.3f)\n", load[0], idle_estimate,
-                  utilization2, cpu_ratio);
+      std::printf(
+          "bench: the machine was busy (load average %.1f before the scaling runs): the measured efficiency understates;\n"
+          "       on idle cores it would be about %.3f (utilization %.4f x CPU ratio %.3f)\n",
+          load[0], idle_estimate, utilization2, cpu_ratio);
     targets.push(target("2-rank efficiency t1/(2 t2) >= 0.9", efficiency >= 0.9 && identical, efficiency));
   }
   doc.set("targets", targets);
   try {
-    write_all_or_nothing({{std::filesystem::path(out) / "bench" / "bench.json", doc.dump()},
-                          {std::filesystem::path(out) / "bench" / "bench.tex", tex}});
+    write_all_or_nothing(
+        {{std::filesystem::path(out) / "bench" / "bench.json", doc.dump()}, {std::filesystem::path(out) / "bench" / "bench.tex", tex}});
   } catch (const OutputError& e) {
     std::fprintf(stderr, "bench_return_map: error: %s\n", e.what());
     return e.bad_path() ? 2 : 1;

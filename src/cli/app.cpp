@@ -57,11 +57,13 @@ int run_command(int argc, char** argv) {
   CLI::App app{"dfchaos: the dry-friction oscillator of Begun & Kryzhevich (return map T, simulator)"};
   app.set_version_flag("--version", std::string(dfchaos::kit::version()) + " (" + dfchaos::kit::git_hash() + ")");
   app.require_subcommand(1);
-  app.footer("Exit status: 0 success, 1 a bounded computation gave up or writing failed, 2 bad input,\n"
-             "3 a sweep stopped by --max-chunks before it was complete (rerun it to continue).\n"
-             "'dfchaos COMMAND --help' describes each command's options and output columns.");
-  const std::vector<Command> commands = {add_info(app), add_map(app), add_orbit(app), add_simulate(app), add_provenance(app),
-                                         add_certify_command(app), add_sweep(app), add_sweep_merge(app)};
+  app.footer(
+      "Exit status: 0 success, 1 a bounded computation gave up or writing failed, 2 bad input,\n"
+      "3 a sweep stopped by --max-chunks before it was complete (rerun it to continue).\n"
+      "'dfchaos COMMAND --help' describes each command's options and output columns.");
+  const std::vector<Command> commands = {add_info(app),     add_map(app),        add_orbit(app),
+                                         add_simulate(app), add_provenance(app), add_certify_command(app),
+                                         add_sweep(app),    add_sweep_merge(app)};
 
   if (argc > 1 && argv[1][0] != '-') {
     const std::string sub = argv[1];

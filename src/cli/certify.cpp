@@ -15,8 +15,8 @@
 #include "dfchaos/certified/ball.hpp"
 #include "dfchaos/errors.hpp"
 #include "kit/budget.hpp"
-#include "kit/output.hpp"
 #include "kit/options.hpp"
+#include "kit/output.hpp"
 
 namespace dfchaos::cli {
 
@@ -46,7 +46,8 @@ certify::SegmentEnds segment_ends(const std::string& name, const std::string& s)
 certify::Request request_from(const CertifyOptions& o) {
   certify::check_statement(o.what);
   if (!o.certificate.empty() && !certify::has_certificate(o.what))
-    throw InvalidParameter("certificate", std::string("a statement with a certificate format: ") + certify::kCertificateStatements + " (not certify " + o.what + ")");
+    throw InvalidParameter(
+        "certificate", std::string("a statement with a certificate format: ") + certify::kCertificateStatements + " (not certify " + o.what + ")");
   certify::Request r;
   r.what = o.what;
   r.certificate = !o.certificate.empty();
@@ -80,17 +81,21 @@ CLI::App* add_certify(CLI::App& app, CertifyOptions& o) {
   c->add_option("--period", o.period, "periodic: minimal period m, 1..64");
   c->add_option("--segment", o.segment, "discontinuities: L0 (default) or L2");
   c->add_option("--window", o.window, "superstable: certify the window LO:HI (floating estimate of b) and its edges");
-  c->add_option("--J0", o.J0, "covering: prove this segment J0, given as TOP:T2 (the phases where T >= 3pi/2 and T = t2; e.g. from "
-                              "certified_region's data), with --J1, instead of searching candidates");
+  c->add_option("--J0", o.J0,
+                "covering: prove this segment J0, given as TOP:T2 (the phases where T >= 3pi/2 and T = t2; e.g. from "
+                "certified_region's data), with --J1, instead of searching candidates");
   c->add_option("--J1", o.J1, "covering: the segment J1 (right of J0), as TOP:T2");
-  c->add_option("--certificate", o.certificate, "write the proof's certificate (JSON witnesses for dfchaos-recheck) to FILE, whole or not at all; vartheta0, lemma1, b0, covering, superstable, discontinuities")
+  c->add_option("--certificate", o.certificate,
+                "write the proof's certificate (JSON witnesses for dfchaos-recheck) to FILE, whole or not at all; vartheta0, lemma1, b0, covering, "
+                "superstable, discontinuities")
       ->type_name("FILE")
       ->check([](const std::string& s) { return s.empty() ? std::string("certificate: a file name (got '')") : std::string(); });
   c->add_option("--max-seconds", o.max_seconds, "time budget: give up (exit 1, one line) after S seconds, 0 < S <= 1e6 [default 60]")->type_name("S");
   c->add_option("--max-memory", o.max_memory, "memory budget: give up (exit 1, one line) beyond G GiB of address space, 0.25 <= G <= 1e4 [default 2]")
       ->type_name("G");
-  c->footer("A proof whose cost is not bounded by its input (a tiny b/a needs many branches of T1) gives up within the\n"
-            "budget: one line on stderr naming the budget that ran out, nothing on stdout, exit status 1.");
+  c->footer(
+      "A proof whose cost is not bounded by its input (a tiny b/a needs many branches of T1) gives up within the\n"
+      "budget: one line on stderr naming the budget that ran out, nothing on stdout, exit status 1.");
   return c;
 }
 
@@ -110,7 +115,10 @@ int run_certify(const CertifyOptions& o) {
   }
   if (!o.certificate.empty()) {
     if (c.certificate.value().is_null()) {
-      c.record.set("certificate", kit::Json::object().set("written", false).set("reason", c.no_certificate.empty() ? std::string("not proved: no certificate") : "not written: " + c.no_certificate));
+      c.record.set("certificate",
+                   kit::Json::object()
+                       .set("written", false)
+                       .set("reason", c.no_certificate.empty() ? std::string("not proved: no certificate") : "not written: " + c.no_certificate));
     } else {
       try {
         c.record.set("certificate", certify::to_json(certify::write_certificate(o.certificate, c.certificate)));

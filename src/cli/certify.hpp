@@ -30,16 +30,16 @@ namespace dfchaos::cli {
 
 /// The options of `certify`.
 struct CertifyOptions {
-  std::string what;          ///< vartheta0, lemma1, b0, discontinuities, covering, periodic, superstable
-  std::string a = "1";       ///< a (a number)
-  std::string b;             ///< b: a number or LO:HI
-  std::string q;             ///< q: a number or LO:HI
-  int period = 0;            ///< periodic: the minimal period m
-  std::string segment = "L0";  ///< discontinuities: L0 = [101pi/100, 3pi/2] or L2 = [101pi/100, 51pi/50]
-  std::string window;        ///< superstable: a window LO:HI in b (floating estimate) to certify with its edges
-  std::string J0;            ///< covering: the segment J0 as TOP:T2 (its candidate ends, as certified_region records them)
-  std::string J1;            ///< covering: the segment J1 as TOP:T2
-  std::string certificate;   ///< --certificate FILE: where to write the certificate (empty: none)
+  std::string what;                ///< vartheta0, lemma1, b0, discontinuities, covering, periodic, superstable
+  std::string a = "1";             ///< a (a number)
+  std::string b;                   ///< b: a number or LO:HI
+  std::string q;                   ///< q: a number or LO:HI
+  int period = 0;                  ///< periodic: the minimal period m
+  std::string segment = "L0";      ///< discontinuities: L0 = [101pi/100, 3pi/2] or L2 = [101pi/100, 51pi/50]
+  std::string window;              ///< superstable: a window LO:HI in b (floating estimate) to certify with its edges
+  std::string J0;                  ///< covering: the segment J0 as TOP:T2 (its candidate ends, as certified_region records them)
+  std::string J1;                  ///< covering: the segment J1 as TOP:T2
+  std::string certificate;         ///< --certificate FILE: where to write the certificate (empty: none)
   std::string max_seconds = "60";  ///< the time budget of the process (kit/budget.hpp)
   std::string max_memory = "2";    ///< the memory budget of the process in GiB (kit/budget.hpp)
 };

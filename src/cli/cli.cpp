@@ -14,7 +14,8 @@ void ModelOptions::add_to(CLI::App* app) {
   const std::string range = format_double(kMinParameter) + " <= X <= " + format_double(kMaxParameter);
   app->add_option("--a", a, "forcing amplitude a, " + range)->required()->type_name("FLOAT");
   app->add_option("--b", b, "half the constant force b, " + range + "; the return map needs b < a/2 and b/a >= " + format_double(kMinMapRatio))
-      ->required()->type_name("FLOAT");
+      ->required()
+      ->type_name("FLOAT");
   app->add_option("--q", q, "maximal dry-friction force q, " + range + "; the return map needs q > 2b")->required()->type_name("FLOAT");
 }
 
@@ -28,7 +29,6 @@ long long count(const std::string& name, const std::string& text, long long lo, 
     throw InvalidParameter(name, std::to_string(lo) + " <= " + name + " <= " + std::to_string(hi), v);
   return static_cast<long long>(v);
 }
-
 
 Writer::Writer() { buffer_.reserve(1 << 16); }
 Writer::~Writer() {

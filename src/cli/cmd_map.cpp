@@ -18,7 +18,8 @@ Command add_map(CLI::App& app) {
   o->m.add_to(cmd);
   auto* t = cmd->add_option("--theta", o->theta, "phases in [t2, t3), one or more")->type_name("FLOAT ...");
   auto* g = cmd->add_option("--grid", o->grid, "LO HI N: the N phases LO + (HI-LO) i/N, i = 0..N-1, with t2 <= LO < HI <= t3, 1 <= N <= 10^7")
-                ->expected(3)->type_name("LO HI N");
+                ->expected(3)
+                ->type_name("LO HI N");
   auto* a = cmd->add_option("--arc", o->arc, "N: the N phases t2 + (t3-t2) i/N, i = 0..N-1 (all of [t2, t3); 1 <= N <= 10^7)")->type_name("N");
   t->excludes(g)->excludes(a);
   g->excludes(a);
@@ -33,7 +34,9 @@ Command add_map(CLI::App& app) {
       "  elapsed      the time from theta to the next start of free flight\n"
       "  penetration  the advance of the delimiter during that time\n"
       "Accuracy (docs/accuracy.md; checked against a 40-digit reference by the test precision_reference):\n"
-      "  needs b/a >= " + format_double(kMinMapRatio) + " (refused below, exit 2).\n"
+      "  needs b/a >= " +
+      format_double(kMinMapRatio) +
+      " (refused below, exit 2).\n"
       "  T: within 1e-11 of the exact T(theta) (radians); within 1e-9 down to a relative distance of\n"
       "     1e-11 from a discontinuity of T1; at a discontinuity either one-sided value may be returned.\n"
       "  T1, elapsed: within 1e-11 plus the rounding of the printed double (relative 2.2e-16); near a\n"
@@ -66,7 +69,8 @@ Command add_map(CLI::App& app) {
             w.row({"theta", "T1", "T", "scenario", "elapsed", "penetration"});
             for (double x : th) {
               const auto s = return_map_step(p, x);
-              w.row({format_double(x), format_double(s.hit.theta1), format_double(s.T), scenario_name(s.scenario), format_double(s.elapsed), format_double(s.penetration)});
+              w.row({format_double(x), format_double(s.hit.theta1), format_double(s.T), scenario_name(s.scenario), format_double(s.elapsed),
+                     format_double(s.penetration)});
             }
             w.flush();
             return 0;

@@ -5,8 +5,8 @@
 #include <cmath>
 
 #include "cli.hpp"
-#include "dfchaos/limits.hpp"
 #include "dfchaos/errors.hpp"
+#include "dfchaos/limits.hpp"
 #include "dfchaos/orbit.hpp"
 
 namespace dfchaos::cli {
@@ -33,7 +33,9 @@ Command add_orbit(CLI::App& app) {
       "Memory does not grow with the number of steps; progress goes to stderr when it is a terminal.\n"
       "Rows are streamed as computed: a step at which the computation gives up (exit 1, one line on stderr) ends\n"
       "the output after the rows of the steps before it.\n"
-      "Accuracy (docs/accuracy.md): needs b/a >= " + format_double(kMinMapRatio) + ". Each step is one evaluation of T with the\n"
+      "Accuracy (docs/accuracy.md): needs b/a >= " +
+      format_double(kMinMapRatio) +
+      ". Each step is one evaluation of T with the\n"
       "accuracy stated by 'dfchaos map --help'; along an orbit these errors are amplified by |T'| (large for small b/a),\n"
       "so a long orbit is a faithful pseudo-orbit, not the exact orbit of theta0. time and y sum elapsed and penetration\n"
       "in long double.");
@@ -50,8 +52,8 @@ Command add_orbit(CLI::App& app) {
             const Orbit orbit(p, theta0, steps);
             for (auto it = orbit.begin(); it != orbit.end(); ++it) {
               const long long n = it.n();
-              w.row({std::to_string(n), format_double(it->theta), scenario_name(it->scenario), format_double(it->elapsed), format_double(it->penetration),
-                     format_double(static_cast<double>(it.time())), format_double(static_cast<double>(it.y()))});
+              w.row({std::to_string(n), format_double(it->theta), scenario_name(it->scenario), format_double(it->elapsed),
+                     format_double(it->penetration), format_double(static_cast<double>(it.time())), format_double(static_cast<double>(it.y()))});
               if (progress && (n + 1) % 100000 == 0) {
                 const double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
                 std::fprintf(stderr, "\rorbit: %lld/%lld steps, about %.0f s left   ", n + 1, steps, sec / (n + 1) * (steps - n - 1));

@@ -7,8 +7,8 @@
 #include <string>
 
 #include "cli.hpp"
-#include "dfchaos/limits.hpp"
 #include "dfchaos/errors.hpp"
+#include "dfchaos/limits.hpp"
 #include "dfchaos/simulator.hpp"
 
 namespace dfchaos::cli {
@@ -27,16 +27,15 @@ class SampleSpool {
 
   /// One row t x y v regime, as Writer::row writes it. @throws WriteFailed
   void row(const Sample& s) {
-    line_ = format_double(s.t) + '\t' + format_double(s.x) + '\t' + format_double(s.y) + '\t' + format_double(s.v) + '\t' + regime_code(s.regime) + '\n';
-    if (std::fwrite(line_.data(), 1, line_.size(), file_.get()) != line_.size())
-      fail("cannot write the samples to a temporary file");
+    line_ =
+        format_double(s.t) + '\t' + format_double(s.x) + '\t' + format_double(s.y) + '\t' + format_double(s.v) + '\t' + regime_code(s.regime) + '\n';
+    if (std::fwrite(line_.data(), 1, line_.size(), file_.get()) != line_.size()) fail("cannot write the samples to a temporary file");
   }
 
   /// Copies every spooled row to stdout, after what `w` holds. @throws WriteFailed
   void copy_to_stdout(Writer& w) {
     w.flush();
-    if (std::fflush(file_.get()) != 0 || std::fseek(file_.get(), 0, SEEK_SET) != 0)
-      fail("cannot read back the samples from their temporary file");
+    if (std::fflush(file_.get()) != 0 || std::fseek(file_.get(), 0, SEEK_SET) != 0) fail("cannot read back the samples from their temporary file");
     std::unique_ptr<char[]> chunk(new char[kChunk]);
     std::size_t n;
     while ((n = std::fread(chunk.get(), 1, kChunk, file_.get())) > 0)
@@ -67,8 +66,8 @@ class Printer final : public SimulationSink {
     if (sampled_) spool_.emplace();
   }
   void event(const SimulationEvent& e) override {
-    w_.row({format_double(e.t), format_double(e.when.phase), regime_code(e.before), regime_code(e.after), transition_code(e.kind), format_double(e.x), format_double(e.y),
-            format_double(e.v_before), format_double(e.v_after)});
+    w_.row({format_double(e.t), format_double(e.when.phase), regime_code(e.before), regime_code(e.after), transition_code(e.kind), format_double(e.x),
+            format_double(e.y), format_double(e.v_before), format_double(e.v_after)});
   }
   void sample(const Sample& s) override { spool_->row(s); }
 
@@ -122,7 +121,9 @@ Command add_simulate(CLI::App& app) {
       "spooled to an unnamed temporary file (std::tmpfile, in /tmp: up to about 100 bytes a sample) and copied after the events.\n"
       "More than --max-events events before t-end: exit status 1, one 'gave up' line on stderr; stdout keeps the rows\n"
       "already streamed (the initial regime, the event header and the first --max-events events; no samples).\n"
-      "Accuracy (docs/accuracy.md): |t0|, |t-end| <= " + format_double(kMaxSimulationTime) + " (refused beyond, exit 2); any b/a (no floor:\n"
+      "Accuracy (docs/accuracy.md): |t0|, |t-end| <= " +
+      format_double(kMaxSimulationTime) +
+      " (refused beyond, exit 2); any b/a (no floor:\n"
       "flights end at t-end). Events are found by the root isolation of 'map' (phases agree with T to 1e-10,\n"
       "test_reduction); the t column is a double, the phase column is exact.");
   return {cmd, [o] {

@@ -32,12 +32,15 @@ Command add_sweep_merge(CLI::App& app) {
   auto o = std::make_shared<Opts>();
   cmd->add_option("files", o->files, "the shard files (from dfchaos sweep --shard i/N), each once")->required()->type_name("FILE ...");
   cmd->add_option("--out", o->out, "write to FILE (atomically) instead of stdout")->type_name("FILE");
-  cmd->footer("Prints exactly what the unsharded sweep prints. Refused (exit 2, nothing written): a missing or duplicate\n"
-              "shard, shards of different sweeps (spec or build), an incomplete or damaged shard file.");
+  cmd->footer(
+      "Prints exactly what the unsharded sweep prints. Refused (exit 2, nothing written): a missing or duplicate\n"
+      "shard, shards of different sweeps (spec or build), an incomplete or damaged shard file.");
   return {cmd, [o] {
             std::unique_ptr<sweep::Stream> out;
-            if (o->out.empty()) out = std::make_unique<sweep::StdoutStream>();
-            else out = std::make_unique<sweep::AtomicFile>(o->out);
+            if (o->out.empty())
+              out = std::make_unique<sweep::StdoutStream>();
+            else
+              out = std::make_unique<sweep::AtomicFile>(o->out);
             sweep::merge_shards(o->files, *out);
             out->commit();
             return 0;

@@ -98,8 +98,8 @@ std::vector<double> branch_cuts(const Parameters& p, double lo, double hi, long 
   const long long branches = symmetric_tangency_count(p, lo, hi) + 1;
   if (branches > max_branches)
     throw GaveUp("work budget: [" + format_double(lo) + ", " + format_double(hi) + "] holds " + std::to_string(branches) +
-                 " branches of T1 at b/a = " + format_double(p.b() / p.a()) + ", more than this search's budget of " +
-                 std::to_string(max_branches) + " (max_branches; docs/reliability.md)");
+                 " branches of T1 at b/a = " + format_double(p.b() / p.a()) + ", more than this search's budget of " + std::to_string(max_branches) +
+                 " (max_branches; docs/reliability.md)");
   std::vector<double> cuts{lo};
   for (const auto& z : symmetric_tangencies(p, lo, hi))
     if (z.z > lo && z.z < hi) cuts.push_back(z.z);
@@ -135,9 +135,9 @@ std::vector<CoveringSegment> dense_segments(const Parameters& p, double lo, doub
   // The arc where T = t2 often sits at an end of a run, where T plunges to t2 within a small
   // fraction of a grid step just before the label changes (or rises from it just after). When a
   // run has reached the top but not t2, those end gaps are searched by descent (once each).
-  double prev_th = NAN;               // the previous sample
-  double gap_start_lo = NAN;          // the gap before the current run's first sample
-  bool start_gap_open = false;        // that gap not yet searched, and no segment formed in this run
+  double prev_th = NAN;         // the previous sample
+  double gap_start_lo = NAN;    // the gap before the current run's first sample
+  bool start_gap_open = false;  // that gap not yet searched, and no segment formed in this run
   for (std::size_t c = 0; c + 1 < cuts.size(); ++c) {
     // At least search.scan points per branch, and at least the density of a uniform grid of
     // search.uniform points on [lo, hi] (wide branches near t2 hold narrow arcs where T = t2).
@@ -229,8 +229,7 @@ std::optional<BranchSample> seek(const Parameters& p, BranchSample below, Branch
 }
 
 /// CoveringMethod::Branchwise; nullopt when a branch does not show the structure it relies on.
-std::optional<std::vector<CoveringSegment>> branchwise_segments(const Parameters& p, double lo, double hi, double top,
-                                                                const CoveringSearch& search) {
+std::optional<std::vector<CoveringSegment>> branchwise_segments(const Parameters& p, double lo, double hi, double top, const CoveringSearch& search) {
   const double t2 = *p.t2(), t3 = *p.t3();
   const std::vector<double> cuts = branch_cuts(p, lo, hi, search.max_branches);
   std::vector<CoveringSegment> out;

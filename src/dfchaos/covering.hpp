@@ -40,8 +40,8 @@ struct ContinuityLabel {
 
 /// The label together with the map step it was computed from.
 struct LabelledStep {
-  MapStep step;            ///< one step of \f$T\f$ from \f$\theta\f$
-  ContinuityLabel label;   ///< the continuity label of that step
+  MapStep step;           ///< one step of \f$T\f$ from \f$\theta\f$
+  ContinuityLabel label;  ///< the continuity label of that step
 };
 
 /// The continuity label at \f$\theta\f$.
@@ -49,13 +49,13 @@ LabelledStep continuity_label(const Parameters& p, double theta);
 
 /// A closed segment on which \f$T\f$ is continuous and whose image contains \f$[t_2, \text{top}]\f$.
 struct CoveringSegment {
-  double lo = 0;                ///< left end of the segment
-  double hi = 0;                ///< right end of the segment
-  double theta_at_t2 = 0;       ///< an end where \f$T = t_2\f$
-  double theta_at_top = 0;      ///< an end where \f$T \ge\f$ top
-  double T_at_top = 0;          ///< \f$T\f$ at theta_at_top (at least top)
-  ContinuityLabel label;        ///< the continuity label shared by the whole segment
-  bool rechecked = false;        ///< labels constant, and no T-jump on the fine grid inside
+  double lo = 0;            ///< left end of the segment
+  double hi = 0;            ///< right end of the segment
+  double theta_at_t2 = 0;   ///< an end where \f$T = t_2\f$
+  double theta_at_top = 0;  ///< an end where \f$T \ge\f$ top
+  double T_at_top = 0;      ///< \f$T\f$ at theta_at_top (at least top)
+  ContinuityLabel label;    ///< the continuity label shared by the whole segment
+  bool rechecked = false;   ///< labels constant, and no T-jump on the fine grid inside
 };
 
 /// How covering_segments looks for covering segments.
@@ -95,12 +95,12 @@ inline constexpr long long kDenseCostFactor = 12;
 
 /// Options of the covering search.
 struct CoveringSearch {
-  int scan = 48;                ///< at least this many grid points per continuity branch of T1
-  int uniform = 8000;           ///< and at least the density of this many points spread over [lo, hi]
-  int recheck = 400;             ///< fine-grid points inside each segment found (both methods)
-  int refine = 32;              ///< local points on each side where T comes within 5% of t2 (narrow B arcs)
-  bool descend = true;          ///< descend T into the end gaps of runs that reach the top without t2
-  int max_segments = 0;         ///< stop after this many rechecked segments (0: find all; both methods)
+  int scan = 48;                                  ///< at least this many grid points per continuity branch of T1
+  int uniform = 8000;                             ///< and at least the density of this many points spread over [lo, hi]
+  int recheck = 400;                              ///< fine-grid points inside each segment found (both methods)
+  int refine = 32;                                ///< local points on each side where T comes within 5% of t2 (narrow B arcs)
+  bool descend = true;                            ///< descend T into the end gaps of runs that reach the top without t2
+  int max_segments = 0;                           ///< stop after this many rechecked segments (0: find all; both methods)
   CoveringMethod method = CoveringMethod::Dense;  ///< how to search (the fields above are for Dense unless noted)
   /// The work budget: most continuity branches of \f$T_1\f$ in [lo, hi] (symmetric_tangency_count
   /// + 1) that the search takes on (the Dense fallback of a Branchwise search: max_branches /
@@ -120,16 +120,16 @@ struct CoveringSearchStats {
 /// Disjoint covering segments of \f$[t_2, \text{top}]\f$ inside \f$[lo, hi]\f$, in ascending order.
 /// @throws InvalidParameter unless the map is defined and \f$t_2 \le lo < hi < t_3\f$.
 /// When `stats` is given, a fallback of the Branchwise method to Dense is counted in it.
-std::vector<CoveringSegment> covering_segments(const Parameters& p, double lo, double hi, double top,
-                                               const CoveringSearch& search = {}, CoveringSearchStats* stats = nullptr);
+std::vector<CoveringSegment> covering_segments(const Parameters& p, double lo, double hi, double top, const CoveringSearch& search = {},
+                                               CoveringSearchStats* stats = nullptr);
 
 /// Lemma 4's conclusion at one parameter set: two disjoint closed segments of \f$[t_2, 3\pi/2]\f$,
 /// each with \f$T\f$ continuous and \f$T(J_i) \supseteq [t_2, 3\pi/2]\f$.
 struct Lemma4Covering {
-  bool holds = false;           ///< whether two disjoint rechecked covering segments were found
-  CoveringSegment J0;           ///< the leftmost rechecked segment (when holds)
-  CoveringSegment J1;           ///< the next rechecked segment, disjoint from J0 (when holds)
-  int segments_found = 0;       ///< rechecked segments found (at most search.max_segments if set)
+  bool holds = false;      ///< whether two disjoint rechecked covering segments were found
+  CoveringSegment J0;      ///< the leftmost rechecked segment (when holds)
+  CoveringSegment J1;      ///< the next rechecked segment, disjoint from J0 (when holds)
+  int segments_found = 0;  ///< rechecked segments found (at most search.max_segments if set)
 };
 Lemma4Covering lemma4_covering(const Parameters& p, const CoveringSearch& search = {}, CoveringSearchStats* stats = nullptr);
 

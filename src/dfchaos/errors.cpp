@@ -9,8 +9,7 @@
 namespace dfchaos {
 
 InvalidParameter::InvalidParameter(const std::string& parameter, const std::string& condition, double value)
-    : std::invalid_argument(parameter + ": must satisfy " + condition + " (got " + format_double(value) + ")"),
-      parameter_(parameter) {}
+    : std::invalid_argument(parameter + ": must satisfy " + condition + " (got " + format_double(value) + ")"), parameter_(parameter) {}
 
 InvalidParameter::InvalidParameter(const std::string& parameter, const std::string& condition)
     : std::invalid_argument(parameter + ": " + condition), parameter_(parameter) {}

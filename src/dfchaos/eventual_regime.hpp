@@ -24,14 +24,14 @@ const char* eventual_behaviour_name(EventualBehaviour b);  ///< "free flights", 
 /// What a long simulation shows over its final window.
 struct EventualRegime {
   EventualBehaviour behaviour = EventualBehaviour::Undetermined;  ///< the classification
-  double fraction_free = 0;         ///< share of the final window in free flight
-  double fraction_progression = 0;  ///< share in progression
-  double fraction_stop = 0;         ///< share in stop
-  long long events_in_window = 0;   ///< regime changes inside the final window
-  double last_free_time = -1;       ///< end of the last free flight (-1 if none after the start)
-  double stick_start_phase_max_error = 0;  ///< PeriodicStickSlip: max |start phase - t0| (wrapped)
-  double stick_stop_phase_min = 0;  ///< PeriodicStickSlip: earliest stop phase, measured from t1 (in [0, 2pi))
-  double stick_stop_phase_max = 0;  ///< and the latest
+  double fraction_free = 0;                                       ///< share of the final window in free flight
+  double fraction_progression = 0;                                ///< share in progression
+  double fraction_stop = 0;                                       ///< share in stop
+  long long events_in_window = 0;                                 ///< regime changes inside the final window
+  double last_free_time = -1;                                     ///< end of the last free flight (-1 if none after the start)
+  double stick_start_phase_max_error = 0;                         ///< PeriodicStickSlip: max |start phase - t0| (wrapped)
+  double stick_stop_phase_min = 0;                                ///< PeriodicStickSlip: earliest stop phase, measured from t1 (in [0, 2pi))
+  double stick_stop_phase_max = 0;                                ///< and the latest
 };
 
 /// Simulates from \f$x = y = 0\f$, \f$\dot x = v_0\f$ at \f$t_0\f$ for `periods` forcing periods and

@@ -42,8 +42,10 @@ OrbitHistogram orbit_histogram(const Parameters& p, double theta0, long long tra
   // theta is the point with index n from theta0: noted if it is t2, counted from index `transient` on
   auto visit = [&](long long n, double theta) {
     if (theta == t2) {
-      if (visits == 0) h.first_t2 = n;
-      else if (visits == 1) h.t2_return = n - h.first_t2;
+      if (visits == 0)
+        h.first_t2 = n;
+      else if (visits == 1)
+        h.t2_return = n - h.first_t2;
       ++visits;
     }
     if (n < transient) return;

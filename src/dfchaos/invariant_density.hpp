@@ -39,10 +39,10 @@ struct OrbitHistogram {
   /// a long period says nothing about whether the exact orbit of \f$t_2\f$ is periodic.
   long long t2_return = 0;
 
-  double bin_width() const;        ///< \f$h = (t_3 - t_2)/K\f$
-  double bin_lo(int k) const;      ///< left end of bin k
-  double density(int k) const;     ///< \f$f_k = \mathrm{counts}_k/(N h)\f$
-  double atom_mass() const;        ///< \f$N_{t_2}/N\f$
+  double bin_width() const;     ///< \f$h = (t_3 - t_2)/K\f$
+  double bin_lo(int k) const;   ///< left end of bin k
+  double density(int k) const;  ///< \f$f_k = \mathrm{counts}_k/(N h)\f$
+  double atom_mass() const;     ///< \f$N_{t_2}/N\f$
   /// \f$\sum_k f_k h + N_{t_2}/N\f$, summed in long double: 1 up to rounding when outside is 0.
   double total_mass() const;
 };

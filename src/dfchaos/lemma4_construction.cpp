@@ -19,7 +19,10 @@ Lemma4Construction lemma4_construction(const Parameters& p, int l1_points) {
   r.L1_to_t2 = true;
   for (int i = 0; i < l1_points; ++i) {  // L1 = [197pi/100, t3): every phase is sent to t2
     const double th = L1lo + (t3 - L1lo) * i / l1_points;
-    if (T(p, th) != t2) { r.L1_to_t2 = false; break; }
+    if (T(p, th) != t2) {
+      r.L1_to_t2 = false;
+      break;
+    }
   }
   const auto z = symmetric_tangencies(p, L2lo, L2hi);
   r.discontinuities = static_cast<long long>(z.size());

@@ -17,17 +17,15 @@ namespace dfchaos {
 
 /// The outcome of each step of the paper's construction at one parameter set.
 struct Lemma4Construction {
-  bool arcs_defined = false;       ///< \f$197\pi/100 < t_3\f$ and \f$t_2 < 101\pi/100\f$: \f$L_1, L_2\f$ make sense
-  bool L1_to_t2 = false;           ///< step (i), on `l1_points` phases of \f$L_1\f$
-  long long discontinuities = 0;   ///< number of discontinuities of \f$T_1\f$ in \f$L_2\f$ (closed form, next_hit.hpp)
+  bool arcs_defined = false;           ///< \f$197\pi/100 < t_3\f$ and \f$t_2 < 101\pi/100\f$: \f$L_1, L_2\f$ make sense
+  bool L1_to_t2 = false;               ///< step (i), on `l1_points` phases of \f$L_1\f$
+  long long discontinuities = 0;       ///< number of discontinuities of \f$T_1\f$ in \f$L_2\f$ (closed form, next_hit.hpp)
   bool three_discontinuities = false;  ///< step (ii): at least three
-  bool images_in_L1 = false;       ///< step (iii): \f$T(z_i)\f$ and \f$T\f$ just right of \f$z_i\f$ lie in \f$L_1\f$
-  bool branches_cover = false;     ///< step (iv): a covering segment on every interior branch \f$[z_i, z_{i+1})\f$
-  bool left_of_z_to_t2 = false;    ///< step (v): \f$T = t_2\f$ just left of every interior \f$z_{i+1}\f$
+  bool images_in_L1 = false;           ///< step (iii): \f$T(z_i)\f$ and \f$T\f$ just right of \f$z_i\f$ lie in \f$L_1\f$
+  bool branches_cover = false;         ///< step (iv): a covering segment on every interior branch \f$[z_i, z_{i+1})\f$
+  bool left_of_z_to_t2 = false;        ///< step (v): \f$T = t_2\f$ just left of every interior \f$z_{i+1}\f$
   /// Every step went through.
-  bool all() const {
-    return arcs_defined && L1_to_t2 && three_discontinuities && images_in_L1 && branches_cover && left_of_z_to_t2;
-  }
+  bool all() const { return arcs_defined && L1_to_t2 && three_discontinuities && images_in_L1 && branches_cover && left_of_z_to_t2; }
 };
 
 /// Checks the paper's construction of Lemma 4 at `p`, with `l1_points` sample phases on \f$L_1\f$.

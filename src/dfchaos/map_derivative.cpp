@@ -45,15 +45,17 @@ OrbitStatistics orbit_statistics(const Parameters& p, double theta0, long long t
     const MapStep& s = *it;
     const long long n = it.n();
     if (s.theta == t2) {
-      if (first_t2 < 0) first_t2 = n;
-      else if (st.period_of_t2 == 0) st.period_of_t2 = n - first_t2;
+      if (first_t2 < 0)
+        first_t2 = n;
+      else if (st.period_of_t2 == 0)
+        st.period_of_t2 = n - first_t2;
     }
     const MapDerivative d = map_derivative(p, s);
     if (d.flat) {
       ++st.flat_steps;
       st.last_stop_image = s.T;
-    }
-    else if (std::isfinite(d.dT)) log_sum += std::log(std::fabs(d.dT));
+    } else if (std::isfinite(d.dT))
+      log_sum += std::log(std::fabs(d.dT));
     st.elapsed += s.elapsed;
     st.penetration += s.penetration;
     if (n >= steps - keep) st.tail.push_back(s.theta);

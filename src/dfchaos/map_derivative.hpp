@@ -25,9 +25,9 @@ namespace dfchaos {
 
 /// \f$T'\f$ at one phase.
 struct MapDerivative {
-  double dT = 0;          ///< \f$T'(\theta)\f$ (0 on flat steps; NaN at a grazing, where T is not differentiable)
-  double dtheta1 = 0;     ///< \f$T_1'(\theta)\f$
-  bool flat = false;      ///< the step contains a stop: \f$T' = 0\f$ exactly
+  double dT = 0;                        ///< \f$T'(\theta)\f$ (0 on flat steps; NaN at a grazing, where T is not differentiable)
+  double dtheta1 = 0;                   ///< \f$T_1'(\theta)\f$
+  bool flat = false;                    ///< the step contains a stop: \f$T' = 0\f$ exactly
   Scenario scenario = Scenario::Other;  ///< the scenario of the step
 };
 
@@ -39,19 +39,19 @@ MapDerivative map_derivative(const Parameters& p, double theta);
 
 /// Statistics of an orbit of \f$T\f$ after a transient.
 struct OrbitStatistics {
-  long long steps = 0;            ///< steps averaged over (after the transient)
-  double lyapunov = 0;            ///< \f$\frac1N\sum\ln|T'|\f$ over steps without a stop; -inf if any step is flat
-  long long flat_steps = 0;       ///< steps with \f$T' = 0\f$ (a stop)
-  double elapsed = 0;             ///< total time of the averaged steps
-  double penetration = 0;         ///< total advance of the delimiter over them
-  double penetration_rate = 0;    ///< penetration / elapsed: mean drilling speed (units of a per unit time)
+  long long steps = 0;          ///< steps averaged over (after the transient)
+  double lyapunov = 0;          ///< \f$\frac1N\sum\ln|T'|\f$ over steps without a stop; -inf if any step is flat
+  long long flat_steps = 0;     ///< steps with \f$T' = 0\f$ (a stop)
+  double elapsed = 0;           ///< total time of the averaged steps
+  double penetration = 0;       ///< total advance of the delimiter over them
+  double penetration_rate = 0;  ///< penetration / elapsed: mean drilling speed (units of a per unit time)
   /// If the computed orbit reaches t2 and returns to it: the return time, else 0. A cycle of the
   /// computed orbit; whether it is a superstable cycle of T: superstable.hpp, t2_cycle.
   long long period_of_t2 = 0;
   /// T of the last averaged step with a stop (the fixed phase it sends its arc to: t2 in scenarios
   /// B and C), NaN if none: the orbit goes on as the orbit of this phase.
   double last_stop_image = std::numeric_limits<double>::quiet_NaN();
-  std::vector<double> tail;       ///< the last phases of the orbit (as many as asked)
+  std::vector<double> tail;  ///< the last phases of the orbit (as many as asked)
 };
 
 /// Iterates \f$T\f$ from \f$\theta_0\f$: `transient` steps discarded, then `steps` steps averaged;

@@ -12,16 +12,10 @@
 
 namespace dfchaos {
 
-QuadraticPlusHarmonic G1_function(const Parameters& p, double theta) {
-  return FreeMotion(p, Instant::at_phase(theta), 0.0, 0.0).gap(0.0);
-}
+QuadraticPlusHarmonic G1_function(const Parameters& p, double theta) { return FreeMotion(p, Instant::at_phase(theta), 0.0, 0.0).gap(0.0); }
 
-double G1(const Parameters& p, double theta, const Instant& t) {
-  return static_cast<double>(G1_function(p, theta).value(t));
-}
-double dG1_dt(const Parameters& p, double theta, const Instant& t) {
-  return static_cast<double>(G1_function(p, theta).slope(t));
-}
+double G1(const Parameters& p, double theta, const Instant& t) { return static_cast<double>(G1_function(p, theta).value(t)); }
+double dG1_dt(const Parameters& p, double theta, const Instant& t) { return static_cast<double>(G1_function(p, theta).slope(t)); }
 double dG1_dtheta(const Parameters& p, double theta, const Instant& t) {
   return static_cast<double>(-p.F(theta) * elapsed(Instant::at_phase(theta), t));
 }
@@ -35,7 +29,7 @@ long long maxima_between(const Parameters& p, double theta, const Instant& t) {
   const long long k_last = (t.phase >= t3) ? rel_turn : rel_turn - 1;
   if (k_last < 1) return 0;
   const double kappa = std::sqrt(1.0 - (2 * b / a) * (2 * b / a));  // cos t3 = -cos t2
-  const long double offset = static_cast<long double>(t2) - theta;     // s_k = 2 pi k + offset
+  const long double offset = static_cast<long double>(t2) - theta;  // s_k = 2 pi k + offset
   // The velocity dG1/dt (model::dG1_dt_from_start) at the ends of the piece, with cos t2 = -kappa and
   // cos t3 = kappa, solved for the elapsed time s_k (hence written out here, not evaluated).
   // Velocity at the piece start positive:  2b s_k + a cos(theta) + a kappa > 0.
@@ -85,7 +79,10 @@ std::vector<GrazingPoint> grazing_points(const Parameters& p, double lo, double 
         self(self, m, h, lm, lh);
         return;
       }
-      if (lm == ll) l = m; else h = m;
+      if (lm == ll)
+        l = m;
+      else
+        h = m;
     }
     for (long long k = 0; k < std::llabs(ll - lh); ++k) brackets.emplace_back(l, h);
   };
@@ -123,7 +120,10 @@ std::vector<GrazingPoint> grazing_points(const Parameters& p, double lo, double 
       if (!d.allFinite()) break;
       z += d(0);
       t = advance(t, d(1));  // d(1) may be negative; advance handles any sign
-      if (std::fabs(d(0)) <= 4 * DBL_EPSILON * std::fabs(z) && std::fabs(d(1)) <= 1e-12) { ok = true; break; }
+      if (std::fabs(d(0)) <= 4 * DBL_EPSILON * std::fabs(z) && std::fabs(d(1)) <= 1e-12) {
+        ok = true;
+        break;
+      }
     }
     const double tol = 1e-9;
     if (!ok || !std::isfinite(z) || z < bl - tol || z > bh + tol) {

@@ -31,10 +31,10 @@ double dG1_dtheta(const Parameters& p, double theta, const Instant& t);
 
 /// The first return of the mass to the delimiter after a start at rest at \f$\theta\f$.
 struct FirstHit {
-  Instant t1;             ///< \f$T_1(\theta)\f$ as turn and phase (turn 0 is \f$\theta\f$'s period)
-  double theta1 = 0;      ///< \f$T_1(\theta)\f$ as a real number (for output)
-  double hit_velocity = 0;///< \f$\partial G_1/\partial t\f$ at \f$T_1\f$; 0 at a grazing (tangential) contact
-  long pieces = 0;        ///< monotone pieces examined by the root search
+  Instant t1;               ///< \f$T_1(\theta)\f$ as turn and phase (turn 0 is \f$\theta\f$'s period)
+  double theta1 = 0;        ///< \f$T_1(\theta)\f$ as a real number (for output)
+  double hit_velocity = 0;  ///< \f$\partial G_1/\partial t\f$ at \f$T_1\f$; 0 at a grazing (tangential) contact
+  long pieces = 0;          ///< monotone pieces examined by the root search
 };
 
 /// The first return with the label of its continuity branch of \f$T_1\f$ (next_hit()).
@@ -57,18 +57,18 @@ long long maxima_between(const Parameters& p, double theta, const Instant& t);
 /// (\f$G_1 = \partial_t G_1 = 0\f$, Eq. 14). \f$T_1\f$ is decreasing; \f$T_1(z) = T_1(z+0)\f$ is the
 /// tangency and \f$T_1(z-0)\f$ the later hit of a flight that just misses.
 struct GrazingPoint {
-  double z = 0;                ///< the discontinuity
-  double bracket_lo = 0;       ///< left end of the bisection bracket before the Newton polish
-  double bracket_hi = 0;       ///< right end of that bracket
-  Instant tangency;            ///< \f$T_1(z)\f$
-  double t1_left = 0;          ///< \f$T_1(z - 0)\f$ (value), evaluated at bracket_lo
-  double t1_right = 0;         ///< \f$T_1(z)\f$ (value)
-  double jump = 0;             ///< \f$T_1(z-0) - T_1(z+0) > 0\f$
-  double residual_G1 = 0;      ///< \f$G_1(z, T_1(z))\f$ after the polish
-  double residual_dG1 = 0;     ///< \f$\partial_t G_1(z, T_1(z))\f$ (Eq. 14) after the polish
+  double z = 0;                   ///< the discontinuity
+  double bracket_lo = 0;          ///< left end of the bisection bracket before the Newton polish
+  double bracket_hi = 0;          ///< right end of that bracket
+  Instant tangency;               ///< \f$T_1(z)\f$
+  double t1_left = 0;             ///< \f$T_1(z - 0)\f$ (value), evaluated at bracket_lo
+  double t1_right = 0;            ///< \f$T_1(z)\f$ (value)
+  double jump = 0;                ///< \f$T_1(z-0) - T_1(z+0) > 0\f$
+  double residual_G1 = 0;         ///< \f$G_1(z, T_1(z))\f$ after the polish
+  double residual_dG1 = 0;        ///< \f$\partial_t G_1(z, T_1(z))\f$ (Eq. 14) after the polish
   bool newton_converged = false;  ///< whether 2D Newton (Eigen) refined the bisection result
-  long long maxima_left = 0;   ///< branch label (maxima of the gap before the hit) left of z
-  long long maxima_right = 0;  ///< the same right of z
+  long long maxima_left = 0;      ///< branch label (maxima of the gap before the hit) left of z
+  long long maxima_right = 0;     ///< the same right of z
 };
 
 /// All discontinuities of \f$T_1\f$ in \f$[lo, hi] \subset [t_2, t_3)\f$, ascending. The branch label

@@ -40,8 +40,7 @@ void integrate_to(System& sys, double& t, double t_target, double y[2], const Od
   if (t_target <= t) return;
   gsl_odeiv2_system ode{rhs, nullptr, 2, &sys};
   std::unique_ptr<gsl_odeiv2_driver, decltype(&gsl_odeiv2_driver_free)> d(
-      gsl_odeiv2_driver_alloc_y_new(&ode, gsl_odeiv2_step_rk8pd, std::min(o.max_step, t_target - t), o.eps_abs, o.eps_rel),
-      &gsl_odeiv2_driver_free);
+      gsl_odeiv2_driver_alloc_y_new(&ode, gsl_odeiv2_step_rk8pd, std::min(o.max_step, t_target - t), o.eps_abs, o.eps_rel), &gsl_odeiv2_driver_free);
   gsl_odeiv2_driver_set_hmax(d.get(), o.max_step);
   if (gsl_odeiv2_driver_apply(d.get(), &t, t_target, y) != GSL_SUCCESS) throw GaveUp("ode_return_map_step: integration failed");
 }
@@ -51,10 +50,9 @@ void integrate_to(System& sys, double& t, double t_target, double y[2], const Od
 template <class Event>
 void integrate_until(System& sys, double& t, double y[2], Event event, long& steps, const OdeMapOptions& o) {
   gsl_odeiv2_system ode{rhs, nullptr, 2, &sys};
-  std::unique_ptr<gsl_odeiv2_step, decltype(&gsl_odeiv2_step_free)> st(gsl_odeiv2_step_alloc(gsl_odeiv2_step_rk8pd, 2),
-                                                                       &gsl_odeiv2_step_free);
+  std::unique_ptr<gsl_odeiv2_step, decltype(&gsl_odeiv2_step_free)> st(gsl_odeiv2_step_alloc(gsl_odeiv2_step_rk8pd, 2), &gsl_odeiv2_step_free);
   std::unique_ptr<gsl_odeiv2_control, decltype(&gsl_odeiv2_control_free)> ctl(gsl_odeiv2_control_y_new(o.eps_abs, o.eps_rel),
-                                                                             &gsl_odeiv2_control_free);
+                                                                              &gsl_odeiv2_control_free);
   std::unique_ptr<gsl_odeiv2_evolve, decltype(&gsl_odeiv2_evolve_free)> ev(gsl_odeiv2_evolve_alloc(2), &gsl_odeiv2_evolve_free);
   double h = o.max_step * 0.1;
   while (true) {
@@ -105,21 +103,29 @@ OdeMapStep ode_return_map_step(const Parameters& p, double theta, const OdeMapOp
   for (int n = 0; n < 8; ++n) {
     if (regime == 'f') {
       sys.progression = false;
-      integrate_until(sys, t, y, [&](double, const double* yy) { return yy[0] - delimiter; }, out.steps, o);
-      if (out.chain == "f") { out.T1 = t; out.hit_velocity = y[1]; }
+      integrate_until(
+          sys, t, y, [&](double, const double* yy) { return yy[0] - delimiter; }, out.steps, o);
+      if (out.chain == "f") {
+        out.T1 = t;
+        out.hit_velocity = y[1];
+      }
       y[0] = delimiter;
       regime = y[1] > 0 ? 'p' : (contact_force(t) < 0 ? 'f' : 's');
     } else if (regime == 'p') {
       sys.progression = true;
       const double x_start = y[0];
-      integrate_until(sys, t, y, [&](double, const double* yy) { return -yy[1]; }, out.steps, o);
+      integrate_until(
+          sys, t, y, [&](double, const double* yy) { return -yy[1]; }, out.steps, o);
       out.penetration += y[0] - x_start;
       delimiter = y[0];
       y[1] = 0;
       regime = contact_force(t) < 0 ? 'f' : 's';
     } else {
       // Stop: scan the contact force for leaving [0, q], then bisect.
-      auto leaves = [&](double tt) { const double f = contact_force(tt); return f < 0 || f > p.q(); };
+      auto leaves = [&](double tt) {
+        const double f = contact_force(tt);
+        return f < 0 || f > p.q();
+      };
       double lo = t, hi = t;
       long scans = 0;
       do {
@@ -131,7 +137,8 @@ OdeMapStep ode_return_map_step(const Parameters& p, double theta, const OdeMapOp
       t = bisect([&](double mid) { return !leaves(mid); }, lo, hi, {.abs_tol = o.event_tol}).second;
       y[0] = delimiter;
       y[1] = 0;
-      if (contact_force(t) < 0) regime = 'f';
+      if (contact_force(t) < 0)
+        regime = 'f';
       else {
         regime = 'p';
         if (++restarts >= 2) throw GaveUp("ode_return_map_step: no return to free flight");
@@ -163,8 +170,8 @@ std::pair<double, double> integrate_forced_motion(double a, double C, double t0,
     return GSL_SUCCESS;
   };
   gsl_odeiv2_system sys{rhs, nullptr, 2, &force};
-  std::unique_ptr<gsl_odeiv2_driver, decltype(&gsl_odeiv2_driver_free)> d(
-      gsl_odeiv2_driver_alloc_y_new(&sys, gsl_odeiv2_step_rk8pd, 1e-3, eps, eps), &gsl_odeiv2_driver_free);
+  std::unique_ptr<gsl_odeiv2_driver, decltype(&gsl_odeiv2_driver_free)> d(gsl_odeiv2_driver_alloc_y_new(&sys, gsl_odeiv2_step_rk8pd, 1e-3, eps, eps),
+                                                                          &gsl_odeiv2_driver_free);
   gsl_odeiv2_driver_set_nmax(d.get(), 100'000'000);
   double t = t0, y[2] = {x0, v0};
   if (t1 > t0 && gsl_odeiv2_driver_apply(d.get(), &t, t1, y) != GSL_SUCCESS)

@@ -21,10 +21,10 @@ namespace dfchaos {
 
 /// Options of the integrated map.
 struct OdeMapOptions {
-  double max_step = 0.05;     ///< largest integration step (time units)
-  double eps_abs = 1e-13;     ///< absolute error target per step
-  double eps_rel = 1e-13;     ///< relative error target per step
-  double event_tol = 1e-12;   ///< width in time of the final event bracket
+  double max_step = 0.05;        ///< largest integration step (time units)
+  double eps_abs = 1e-13;        ///< absolute error target per step
+  double eps_rel = 1e-13;        ///< relative error target per step
+  double event_tol = 1e-12;      ///< width in time of the final event bracket
   long max_steps = 100'000'000;  ///< give up after this many accepted steps
   /// Additional force \f$G(t, x, \dot x)\f$ of Section 10 (free and progression regimes); none if empty.
   std::function<double(double, double, double)> perturbation;
@@ -32,14 +32,14 @@ struct OdeMapOptions {
 
 /// One step of the integrated map.
 struct OdeMapStep {
-  double T1 = 0;          ///< the first contact instant
-  double hit_velocity = 0; ///< impact velocity at T1
-  double T = 0;           ///< phase of the next switch to free flight
-  double elapsed = 0;     ///< its instant minus theta
-  double penetration = 0; ///< advance of the delimiter
-  std::string chain;      ///< regimes visited, as in MapStep::chain
-  long steps = 0;         ///< accepted integration steps
-  long rhs_evaluations = 0; ///< evaluations of the right-hand side
+  double T1 = 0;             ///< the first contact instant
+  double hit_velocity = 0;   ///< impact velocity at T1
+  double T = 0;              ///< phase of the next switch to free flight
+  double elapsed = 0;        ///< its instant minus theta
+  double penetration = 0;    ///< advance of the delimiter
+  std::string chain;         ///< regimes visited, as in MapStep::chain
+  long steps = 0;            ///< accepted integration steps
+  long rhs_evaluations = 0;  ///< evaluations of the right-hand side
 };
 
 /// Position and velocity at \f$t_1\f$ of \f$\ddot x = a\sin t + C\f$ from \f$x(t_0) = x_0\f$,

@@ -39,7 +39,7 @@ class Orbit {
 
     iterator() = default;  ///< the end of every orbit
 
-    const MapStep& operator*() const { return step_; }   ///< the step from \f$\theta_n\f$
+    const MapStep& operator*() const { return step_; }    ///< the step from \f$\theta_n\f$
     const MapStep* operator->() const { return &step_; }  ///< the step from \f$\theta_n\f$
     long long n() const { return n_; }                    ///< the index \f$n\f$ of the current step
     /// The instant at which \f$\theta_n\f$ starts: \f$\theta_0\f$ plus the elapsed times of the

@@ -4,8 +4,8 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_roots.h>
 
-#include <cfloat>
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -35,8 +35,8 @@ long double vartheta0_l() {
     gsl_function f;
     f.function = [](double x, void*) { return eq1_residual(x); };
     f.params = nullptr;
-    std::unique_ptr<gsl_root_fsolver, decltype(&gsl_root_fsolver_free)> solver(
-        gsl_root_fsolver_alloc(gsl_root_fsolver_brent), &gsl_root_fsolver_free);
+    std::unique_ptr<gsl_root_fsolver, decltype(&gsl_root_fsolver_free)> solver(gsl_root_fsolver_alloc(gsl_root_fsolver_brent),
+                                                                               &gsl_root_fsolver_free);
     // eq1_residual(0.1) < 0 < eq1_residual(pi/2): the root is bracketed and unique there.
     gsl_root_fsolver_set(solver.get(), &f, 0.1, pi / 2);
     double lo = 0.1, hi = pi / 2;
@@ -98,16 +98,15 @@ double Parameters::t3_required() const {
 
 void Parameters::require_in_map_domain(double theta, const std::string& name) const {
   const double t2 = t2_required(), t3 = t3_required();
-  if (!in_map_domain(theta))
-    throw InvalidParameter(name, "t2 <= " + name + " < t3 = [" + format_double(t2) + ", " + format_double(t3) + ")", theta);
+  if (!in_map_domain(theta)) throw InvalidParameter(name, "t2 <= " + name + " < t3 = [" + format_double(t2) + ", " + format_double(t3) + ")", theta);
 }
 
 void Parameters::require_return_map() const {
   if (!(2 * b_ < a_)) throw InvalidParameter("b", "0 < b < a/2 for the return map T (Eq. 2)", b_);
   if (!(q_ > 2 * b_)) throw InvalidParameter("q", "q > 2b for the return map T (otherwise progression need not stop)", q_);
   if (!(b_ >= kMinMapRatio * a_))
-    throw InvalidParameter("b", "b/a >= 1e-12 for the return map T (its accuracy floor, docs/accuracy.md; here b/a = " +
-                                    format_double(b_ / a_) + ")", b_);
+    throw InvalidParameter("b", "b/a >= 1e-12 for the return map T (its accuracy floor, docs/accuracy.md; here b/a = " + format_double(b_ / a_) + ")",
+                           b_);
 }
 
 void Parameters::require_eq2() const {
@@ -129,15 +128,15 @@ Assumptions Parameters::assumptions() const {
 
 std::string Assumptions::describe() const {
   std::string out = eq2 ? "(2) holds" : "(2) fails";
-  if (!b_in_range) out += " [b >= a/2]";
-  else if (!q_above_threshold) out += " [q outside (a sin(vartheta0), a)]";
+  if (!b_in_range)
+    out += " [b >= a/2]";
+  else if (!q_above_threshold)
+    out += " [q outside (a sin(vartheta0), a)]";
   out += eq23 ? "; (23) holds" : "; (23) fails [q >= a]";
   if (!progression_ends) out += "; q <= 2b: progression need not stop";
   return out;
 }
 
-std::string Parameters::describe() const {
-  return "a=" + format_shortest(a_) + " b=" + format_shortest(b_) + " q=" + format_shortest(q_);
-}
+std::string Parameters::describe() const { return "a=" + format_shortest(a_) + " b=" + format_shortest(b_) + " q=" + format_shortest(q_); }
 
 }  // namespace dfchaos

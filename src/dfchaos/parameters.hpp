@@ -47,11 +47,11 @@ inline constexpr double kMinMapRatio = 1e-12;
 
 /// Which of the paper's standing assumptions a parameter set satisfies.
 struct Assumptions {
-  bool b_in_range;            ///< \f$0 < b < a/2\f$ (Eq. 2): the free regime exists (\f$t_2, t_3\f$ defined)
-  bool q_above_threshold;     ///< \f$a \sin\vartheta_0 < q < a\f$ (Eq. 2)
-  bool eq2;                   ///< all of Eq. (2)
-  bool eq23;                  ///< \f$a > 0, b > 0, 0 < q < a\f$ (Eq. 23, Remark of Section 8)
-  bool progression_ends;      ///< \f$q > 2b\f$, i.e. \f$c < 0\f$: every progression stops (Section 3)
+  bool b_in_range;               ///< \f$0 < b < a/2\f$ (Eq. 2): the free regime exists (\f$t_2, t_3\f$ defined)
+  bool q_above_threshold;        ///< \f$a \sin\vartheta_0 < q < a\f$ (Eq. 2)
+  bool eq2;                      ///< all of Eq. (2)
+  bool eq23;                     ///< \f$a > 0, b > 0, 0 < q < a\f$ (Eq. 23, Remark of Section 8)
+  bool progression_ends;         ///< \f$q > 2b\f$, i.e. \f$c < 0\f$: every progression stops (Section 3)
   std::string describe() const;  ///< one line, e.g. "(2) holds; (23) holds"
 };
 

@@ -18,8 +18,7 @@ double perturbation_G(double eps, double t, double /*x*/, double v) { return eps
 double perturbed_stop_release(const Parameters& p, double eps) {
   auto force = [&](double t) { return p.a() * std::sin(t) + 2 * p.b() + perturbation_G(eps, t, 0, 0); };
   const double lo = pi - 0.5, hi = 1.5 * pi;
-  if (!(force(lo) > 0 && force(hi) < 0))
-    throw InvalidParameter("eps", "a perturbation small enough that the stop-release phase stays near t2", eps);
+  if (!(force(lo) > 0 && force(hi) < 0)) throw InvalidParameter("eps", "a perturbation small enough that the stop-release phase stays near t2", eps);
   const auto [l, h] = bisect([&](double t) { return force(t) > 0; }, lo, hi, BisectStop{.max_iterations = 200, .abs_tol = 1e-15});
   return 0.5 * (l + h);
 }
@@ -110,8 +109,7 @@ PerturbedCovering perturbed_covering(const Parameters& p, const Lemma4Covering& 
   return r;
 }
 
-PerturbedGlobalCovering perturbed_covering_global(const Parameters& p, double eps, int grid, const PerturbedCoveringSearch& s,
-                                                  int max_gave_up) {
+PerturbedGlobalCovering perturbed_covering_global(const Parameters& p, double eps, int grid, const PerturbedCoveringSearch& s, int max_gave_up) {
   if (grid < 2) throw InvalidParameter("grid", "at least 2 points for the global search", grid);
   PerturbedGlobalCovering r;
   r.t2_eps = perturbed_stop_release(p, eps);

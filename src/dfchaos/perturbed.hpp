@@ -62,21 +62,21 @@ double perturbed_T(const Parameters& p, double eps, double theta, long max_steps
 
 /// One sampled value of \f$T_\varepsilon\f$ (the graph drawn by the continuity check).
 struct PerturbedSample {
-  int segment = 0;     ///< which covering segment (0: near \f$J_0\f$, 1: near \f$J_1\f$)
-  double theta = 0;    ///< the phase
-  double T = 0;        ///< \f$T_\varepsilon(\theta)\f$
+  int segment = 0;   ///< which covering segment (0: near \f$J_0\f$, 1: near \f$J_1\f$)
+  double theta = 0;  ///< the phase
+  double T = 0;      ///< \f$T_\varepsilon(\theta)\f$
 };
 
 /// Thresholds of the persistence search. The defaults are those of the sec10_robustness experiment.
 struct PerturbedCoveringSearch {
-  int grid = 400;                 ///< grid points of the continuity check between u and w (at least 2)
-  double margin = 0.25;           ///< u and w are searched within margin * |J_i| of the ends of J_i
-  int ladder = 200;               ///< steps of the outward search on each side, up to that distance
-  double release_match = 1e-9;    ///< \f$|T_\varepsilon(u) - t_2^\varepsilon|\f$ below this: u is on a stop arc
-  double suspect_jump = 0.05;     ///< neighbours whose values differ by more are bisected
-  int jump_halvings = 50;         ///< halvings of a suspect interval at most
-  double jump_width = 1e-13;      ///< ... or until it is this narrow
-  double jump = 1e-6;             ///< a difference above this left over the final interval is a jump
+  int grid = 400;               ///< grid points of the continuity check between u and w (at least 2)
+  double margin = 0.25;         ///< u and w are searched within margin * |J_i| of the ends of J_i
+  int ladder = 200;             ///< steps of the outward search on each side, up to that distance
+  double release_match = 1e-9;  ///< \f$|T_\varepsilon(u) - t_2^\varepsilon|\f$ below this: u is on a stop arc
+  double suspect_jump = 0.05;   ///< neighbours whose values differ by more are bisected
+  int jump_halvings = 50;       ///< halvings of a suspect interval at most
+  double jump_width = 1e-13;    ///< ... or until it is this narrow
+  double jump = 1e-6;           ///< a difference above this left over the final interval is a jump
 };
 
 /// Whether \f$T_\varepsilon\f$ is continuous on \f$[x_0, x_1]\f$ as seen on a grid of `search.grid`
@@ -91,12 +91,12 @@ bool perturbed_continuous_between(const Parameters& p, double eps, double x0, do
 /// The perturbed covering near \f$J_0\f$ and \f$J_1\f$ (see the file comment).
 struct PerturbedCovering {
   static constexpr double nan = std::numeric_limits<double>::quiet_NaN();  ///< "not computed"
-  double t2_eps = nan;               ///< \f$t_2^\varepsilon\f$ (NaN when the search did not get that far)
-  bool covers[2] = {false, false};   ///< \f$T_\varepsilon([u_i, w_i]) \supseteq [t_2^\varepsilon, 3\pi/2]\f$ (u, w found, continuous between)
+  double t2_eps = nan;                                                     ///< \f$t_2^\varepsilon\f$ (NaN when the search did not get that far)
+  bool covers[2] = {false, false};  ///< \f$T_\varepsilon([u_i, w_i]) \supseteq [t_2^\varepsilon, 3\pi/2]\f$ (u, w found, continuous between)
   /// the edge, on the side of w, of the stop arc (\f$T_\varepsilon = t_2^\varepsilon\f$) met nearest the \f$T = t_2\f$ end of
   /// \f$J_i\f$ (NaN: no such phase within the margin)
   double u[2] = {nan, nan};
-  double w[2] = {nan, nan};          ///< the phase with \f$T_\varepsilon \ge 3\pi/2\f$ nearest the other end (NaN: none)
+  double w[2] = {nan, nan};                             ///< the phase with \f$T_\varepsilon \ge 3\pi/2\f$ nearest the other end (NaN: none)
   bool both() const { return covers[0] && covers[1]; }  ///< the covering persists
 };
 
@@ -115,8 +115,8 @@ PerturbedCovering perturbed_covering(const Parameters& p, const Lemma4Covering& 
 /// The perturbed covering searched over the whole target arc, not only near \f$J_0, J_1\f$.
 struct PerturbedGlobalCovering {
   double t2_eps = PerturbedCovering::nan;  ///< \f$t_2^\varepsilon\f$
-  int samples = 0;                 ///< grid phases of \f$[t_2, 3\pi/2)\f$ where \f$T_\varepsilon\f$ was evaluated
-  int gave_up = 0;                 ///< of which the integration gave up (no next free flight within its bound)
+  int samples = 0;                         ///< grid phases of \f$[t_2, 3\pi/2)\f$ where \f$T_\varepsilon\f$ was evaluated
+  int gave_up = 0;                         ///< of which the integration gave up (no next free flight within its bound)
   /// Disjoint segments \f$[lo, hi]\f$ with \f$T_\varepsilon = t_2^\varepsilon\f$ at one end, \f$\ge 3\pi/2\f$ at
   /// the other, and no jump between them (sampled check), in ascending order.
   std::vector<std::pair<double, double>> segments;

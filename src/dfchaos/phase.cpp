@@ -39,23 +39,25 @@ Instant Instant::from_time(double t) {
     return dd::add(dd::two_sum(t, 0.0), dd::neg(dd::add(dd::two_prod(kk, dd::kTwoPi.hi), dd::DD{kk * dd::kTwoPi.lo, 0.0})));
   };
   dd::DD r = reduce(k);
-  if (r.hi < 0 || (r.hi == 0 && r.lo < 0)) r = reduce(--k);
-  else if (r.hi >= two_pi) r = reduce(++k);
+  if (r.hi < 0 || (r.hi == 0 && r.lo < 0))
+    r = reduce(--k);
+  else if (r.hi >= two_pi)
+    r = reduce(++k);
   double ph = r.hi;
   std::int64_t turn = static_cast<std::int64_t>(k);
   if (ph < 0) ph = 0.0;
-  if (ph >= two_pi) { ph = 0.0; ++turn; }
+  if (ph >= two_pi) {
+    ph = 0.0;
+    ++turn;
+  }
   return Instant{turn, ph};
 }
 
 long double elapsed(const Instant& from, const Instant& to) {
-  return static_cast<long double>(to.turn - from.turn) * two_pi_l +
-         (static_cast<long double>(to.phase) - static_cast<long double>(from.phase));
+  return static_cast<long double>(to.turn - from.turn) * two_pi_l + (static_cast<long double>(to.phase) - static_cast<long double>(from.phase));
 }
 
-bool before(const Instant& x, const Instant& y) {
-  return x.turn < y.turn || (x.turn == y.turn && x.phase < y.phase);
-}
+bool before(const Instant& x, const Instant& y) { return x.turn < y.turn || (x.turn == y.turn && x.phase < y.phase); }
 
 Instant advance(const Instant& t, long double delta) {
   const long double total = static_cast<long double>(t.phase) + delta;
@@ -73,9 +75,15 @@ Instant advance(const Instant& t, long double delta) {
   const long double k = std::floor(total / two_pi_l);
   long double r = total - k * two_pi_l;
   std::int64_t turn = t.turn + static_cast<std::int64_t>(k);
-  if (r < 0) { r += two_pi_l; --turn; }
+  if (r < 0) {
+    r += two_pi_l;
+    --turn;
+  }
   double ph = static_cast<double>(r);
-  if (ph >= two_pi) { ph = 0.0; ++turn; }
+  if (ph >= two_pi) {
+    ph = 0.0;
+    ++turn;
+  }
   return Instant{turn, ph};
 }
 

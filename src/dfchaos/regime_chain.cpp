@@ -79,10 +79,16 @@ std::optional<Transition> next_transition(const Parameters& p, const MechanicalS
     case Regime::Stop: {
       std::optional<Instant> best;
       Regime to = Regime::Stop;
-      if (p.t2()) { best = next_at_phase(s.t, *p.t2()); to = Regime::Free; }
+      if (p.t2()) {
+        best = next_at_phase(s.t, *p.t2());
+        to = Regime::Free;
+      }
       if (p.t0()) {
         const Instant c = next_at_phase(s.t, *p.t0());
-        if (!best || before(c, *best)) { best = c; to = Regime::Progression; }
+        if (!best || before(c, *best)) {
+          best = c;
+          to = Regime::Progression;
+        }
       }
       if (!best || elapsed(s.t, *best) > limits.horizon) return std::nullopt;
       tr.t = *best;

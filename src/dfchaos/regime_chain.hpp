@@ -44,16 +44,16 @@ const char* transition_code(TransitionKind k);  ///< "fp" or "is"
 
 /// One regime change.
 struct Transition {
-  Instant t;                     ///< the instant of the change
-  Regime from = Regime::Free;    ///< regime before
-  Regime to = Regime::Free;      ///< regime after
+  Instant t;                                                ///< the instant of the change
+  Regime from = Regime::Free;                               ///< regime before
+  Regime to = Regime::Free;                                 ///< regime after
   TransitionKind kind = TransitionKind::InstantaneousStop;  ///< fp or is
-  double x = 0;         ///< position of the mass at the transition
-  double y = 0;         ///< position of the delimiter (x = y: always at the contact)
-  double v_before = 0;  ///< velocity just before (the impact velocity for fp)
-  double v_after = 0;   ///< velocity just after
-  bool grazing = false; ///< a free flight touched the delimiter with zero velocity and flew on
-  long pieces = 0;      ///< root-search work
+  double x = 0;                                             ///< position of the mass at the transition
+  double y = 0;                                             ///< position of the delimiter (x = y: always at the contact)
+  double v_before = 0;                                      ///< velocity just before (the impact velocity for fp)
+  double v_after = 0;                                       ///< velocity just after
+  bool grazing = false;                                     ///< a free flight touched the delimiter with zero velocity and flew on
+  long pieces = 0;                                          ///< root-search work
   /// The state just after the transition.
   MechanicalState after() const { return MechanicalState{t, to, x, y, v_after}; }
 };

@@ -36,7 +36,10 @@ namespace {
 /// `after_flight[0..n)`.
 Scenario scenario_of(const Regime* after_flight, int n) {
   using R = Regime;
-  struct Row { Scenario scenario; std::initializer_list<Regime> chain; };
+  struct Row {
+    Scenario scenario;
+    std::initializer_list<Regime> chain;
+  };
   static const Row rows[] = {
       {Scenario::A, {R::Progression, R::Free}},
       {Scenario::B, {R::Progression, R::Stop, R::Free}},
@@ -92,7 +95,8 @@ MapStep return_map_step(const Parameters& p, double theta) {
       return step;
     }
   }
-  throw GaveUp("return map at theta=" + format_double(theta) + ": no return to free flight within " + std::to_string(kMaxTransitions) + " regime changes");
+  throw GaveUp("return map at theta=" + format_double(theta) + ": no return to free flight within " + std::to_string(kMaxTransitions) +
+               " regime changes");
 }
 
 long long t1_branch(const Parameters& p, const MapStep& step) { return maxima_between(p, step.theta, step.hit.t1); }
@@ -103,9 +107,8 @@ double G2(const Parameters& p, double theta, const Instant& theta1, const Instan
   const Instant start = Instant::at_phase(theta);
   // In long double, with the elapsed times of the instants and the cosines at their phases.
   const long double a = p.a(), b = p.b(), q = p.q();
-  return static_cast<double>(model::G2_from_start(a, b, model::two_c(b, q), std::cos(static_cast<long double>(theta)),
-                                                  elapsed(start, theta1), elapsed(theta1, theta2),
-                                                  static_cast<long double>(theta2.phase)));
+  return static_cast<double>(model::G2_from_start(a, b, model::two_c(b, q), std::cos(static_cast<long double>(theta)), elapsed(start, theta1),
+                                                  elapsed(theta1, theta2), static_cast<long double>(theta2.phase)));
 }
 
 }  // namespace dfchaos

@@ -29,19 +29,19 @@ const char* scenario_name(Scenario s);  ///< "A", "B", "C", "D", "C'", "D'", "G"
 
 /// One application of \f$T\f$.
 struct MapStep {
-  double theta = 0;            ///< the argument, a phase in \f$[t_2, t_3)\f$
-  FirstHit hit;                ///< \f$T_1(\theta)\f$ and the impact velocity (Eq. 11); its branch label: t1_branch()
+  double theta = 0;  ///< the argument, a phase in \f$[t_2, t_3)\f$
+  FirstHit hit;      ///< \f$T_1(\theta)\f$ and the impact velocity (Eq. 11); its branch label: t1_branch()
   /// \f$\theta_2\f$: where the first progression stops (first zero of \f$G_2\f$, Eq. 17); equal
   /// to the hit instant for a grazing or a zero-velocity touch (no progression).
   Instant theta2;
-  double T = 0;                ///< \f$T(\theta) \in [t_2, t_3)\f$
-  Instant end;                 ///< \f$\widehat T(\theta)\f$: the instant of the switch to free flight
-  double elapsed = 0;          ///< \f$\widehat T(\theta) - \theta\f$
-  double penetration = 0;      ///< advance of the delimiter during the step (sum over progressions)
+  double T = 0;                         ///< \f$T(\theta) \in [t_2, t_3)\f$
+  Instant end;                          ///< \f$\widehat T(\theta)\f$: the instant of the switch to free flight
+  double elapsed = 0;                   ///< \f$\widehat T(\theta) - \theta\f$
+  double penetration = 0;               ///< advance of the delimiter during the step (sum over progressions)
   Scenario scenario = Scenario::Other;  ///< the scenario of Section 3 this step followed
-  std::string chain;           ///< the regimes visited, e.g. "f>p>s>f"
-  int progressions = 0;        ///< number of progression phases
-  long pieces = 0;             ///< root-search work (monotone pieces examined)
+  std::string chain;                    ///< the regimes visited, e.g. "f>p>s>f"
+  int progressions = 0;                 ///< number of progression phases
+  long pieces = 0;                      ///< root-search work (monotone pieces examined)
 };
 
 /// One step of \f$T\f$ from \f$\theta\f$.

@@ -20,15 +20,14 @@ using namespace roots_detail;
 /// The piece that starts at the cursor: it ends at the next break (an inflection of f), or earlier
 /// at the search's limit or at the start of the skip window.
 struct Piece {
-  Instant end;             ///< where it ends
-  long double s_end = 0;   ///< elapsed time from the origin there
-  double L = 0;            ///< its length
-  bool end_trig = false;   ///< it ends at a break whose sine and cosine are known:
+  Instant end;                    ///< where it ends
+  long double s_end = 0;          ///< elapsed time from the origin there
+  double L = 0;                   ///< its length
+  bool end_trig = false;          ///< it ends at a break whose sine and cosine are known:
   double end_sn = 0, end_cs = 0;  ///< (end_trig) they
 };
 
-Piece next_piece(const QuadraticPlusHarmonic& f, const PieceBreaks& breaks, const SearchBounds& bounds, long double limit,
-                 const Cursor& cursor) {
+Piece next_piece(const QuadraticPlusHarmonic& f, const PieceBreaks& breaks, const SearchBounds& bounds, long double limit, const Cursor& cursor) {
   Piece p;
   int end_break = 0;
   p.end = breaks.next_after(cursor.t, end_break);
@@ -71,8 +70,7 @@ std::optional<UpCrossing> first_upcrossing(const QuadraticPlusHarmonic& f, const
   const long double R = amplitude(f.A, f.B);
   const SearchBounds bounds = search_bounds(f, R, limits.horizon);
   if (bounds.no_root) return std::nullopt;
-  if (!std::isfinite(static_cast<double>(bounds.limit)))
-    throw GaveUp("first_upcrossing: no horizon and no root bound; the search would not end");
+  if (!std::isfinite(static_cast<double>(bounds.limit))) throw GaveUp("first_upcrossing: no horizon and no root bound; the search would not end");
   const long double limit = bounds.limit;
   // 2. The breaks between pieces: the inflections of f, in closed form.
   const PieceBreaks breaks = piece_breaks(f);
@@ -92,11 +90,9 @@ std::optional<UpCrossing> first_upcrossing(const QuadraticPlusHarmonic& f, const
   long pieces = 0;
   Recentring recentring;
   while (true) {
-    if (bounds.in_window(cursor.s))
-      cursor = Cursor::unknown_at(f, std::min(bounds.we, limit));  // (a window may reach far beyond a horizon)
+    if (bounds.in_window(cursor.s)) cursor = Cursor::unknown_at(f, std::min(bounds.we, limit));  // (a window may reach far beyond a horizon)
     if (cursor.s >= limit) break;
-    if (++pieces > limits.max_pieces)
-      throw GaveUp("first_upcrossing: gave up after " + std::to_string(limits.max_pieces) + " monotone pieces");
+    if (++pieces > limits.max_pieces) throw GaveUp("first_upcrossing: gave up after " + std::to_string(limits.max_pieces) + " monotone pieces");
     const Piece piece = next_piece(f, breaks, bounds, limit, cursor);
     PieceFunction pf(f, cursor.t.phase);
     // The harmonic part at a break end, and at an uncarried start whose phase has a known sine and
@@ -112,8 +108,7 @@ std::optional<UpCrossing> first_upcrossing(const QuadraticPlusHarmonic& f, const
     if (pf.base == 0) recentring.carry(f, cursor.t, piece.end, pf.c0, pf.c1);  // re-centred: carry P0, P1 over
     cursor = after(cursor, piece, piece_end);
   }
-  if (bounds.limit_is_bound && limit < limits.horizon)
-    throw std::logic_error("first_upcrossing: no root found before the guaranteed bound (a bug)");
+  if (bounds.limit_is_bound && limit < limits.horizon) throw std::logic_error("first_upcrossing: no root found before the guaranteed bound (a bug)");
   return std::nullopt;
 }
 

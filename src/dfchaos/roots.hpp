@@ -50,13 +50,13 @@ namespace dfchaos {
 /// the error of \f$\beta\f$ itself, multiplied by \f$s_0\f$: callers form it in long double, and may
 /// add a further correction in beta_tail.
 struct QuadraticPlusHarmonic {
-  Instant origin;              ///< \f$s = 0\f$
-  long double alpha = 0;       ///< \f$\alpha\f$, coefficient of \f$s^2\f$ (a double value)
-  long double beta = 0;        ///< \f$\beta\f$, coefficient of \f$s\f$
-  long double beta_tail = 0;   ///< optional low-order part: the coefficient of \f$s\f$ is beta + beta_tail
-  long double gamma = 0;       ///< \f$\gamma\f$, constant term
-  double A = 0;                ///< \f$A\f$, coefficient of \f$\sin t\f$
-  double B = 0;                ///< \f$B\f$, coefficient of \f$\cos t\f$
+  Instant origin;             ///< \f$s = 0\f$
+  long double alpha = 0;      ///< \f$\alpha\f$, coefficient of \f$s^2\f$ (a double value)
+  long double beta = 0;       ///< \f$\beta\f$, coefficient of \f$s\f$
+  long double beta_tail = 0;  ///< optional low-order part: the coefficient of \f$s\f$ is beta + beta_tail
+  long double gamma = 0;      ///< \f$\gamma\f$, constant term
+  double A = 0;               ///< \f$A\f$, coefficient of \f$\sin t\f$
+  double B = 0;               ///< \f$B\f$, coefficient of \f$\cos t\f$
   /// True when \f$f(\mathrm{origin}) = 0\f$ holds exactly by construction (a motion starting at rest
   /// at the contact). Near such an origin \f$f = c_1u + c_2u^2/2 + c_3u^3/6 + \dots\f$ lies far below
   /// the rounding noise of a direct evaluation. The search then decides the direction of departure
@@ -91,17 +91,17 @@ struct QuadraticPlusHarmonic {
 
 /// The first instant after the origin at which \f$f\f$ reaches 0 from below.
 struct UpCrossing {
-  Instant t;            ///< the root
-  long double s = 0;    ///< elapsed time from the origin
-  double slope = 0;     ///< \f$f'\f$ at the root (\f$\ge 0\f$ up to rounding; 0 at a tangency)
-  long pieces = 0;      ///< monotone pieces examined (work done; independent of \f$b/a\f$)
+  Instant t;          ///< the root
+  long double s = 0;  ///< elapsed time from the origin
+  double slope = 0;   ///< \f$f'\f$ at the root (\f$\ge 0\f$ up to rounding; 0 at a tangency)
+  long pieces = 0;    ///< monotone pieces examined (work done; independent of \f$b/a\f$)
 };
 
 /// Bounds of a search. Every search is bounded: it ends at the horizon or after max_pieces
 /// pieces, whichever comes first; reaching max_pieces throws GaveUp.
 struct SearchLimits {
   long double horizon = std::numeric_limits<long double>::infinity();  ///< max elapsed time
-  long max_pieces = 20'000'000;  ///< max monotone pieces examined
+  long max_pieces = 20'000'000;                                        ///< max monotone pieces examined
 };
 
 /// The first root \f$t > \mathrm{origin}\f$ of \f$f\f$ reached from below, assuming
@@ -127,8 +127,7 @@ std::optional<UpCrossing> first_upcrossing(const QuadraticPlusHarmonic& f, const
 /// @throws std::logic_error if 400 iterations do not suffice.
 template <class GD>
 double solve_increasing(GD&& gd, double lo, double hi, double scale, long double g_lo, long double g_hi,
-                        double start = std::numeric_limits<double>::quiet_NaN(),
-                        double jerk_bound = std::numeric_limits<double>::quiet_NaN());
+                        double start = std::numeric_limits<double>::quiet_NaN(), double jerk_bound = std::numeric_limits<double>::quiet_NaN());
 
 }  // namespace dfchaos
 

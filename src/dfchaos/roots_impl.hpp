@@ -12,8 +12,7 @@
 namespace dfchaos {
 
 template <class GD>
-double solve_increasing(GD&& gd, double lo, double hi, double scale, long double g_lo, long double g_hi, double start,
-                        double jerk_bound) {
+double solve_increasing(GD&& gd, double lo, double hi, double scale, long double g_lo, long double g_hi, double start, double jerk_bound) {
   const double tol = 4 * DBL_EPSILON * (std::fabs(scale) + std::fabs(hi) + 1.0);
   // Start from the given start if it lies inside the bracket, else from the secant of the end
   // values, then Newton's method, with a bisection whenever a Newton step would leave the bracket
@@ -30,7 +29,10 @@ double solve_increasing(GD&& gd, double lo, double hi, double scale, long double
     const auto r = gd(x);  // value and derivative (and second derivative) from one evaluation
     const long double g = std::get<0>(r), d = std::get<1>(r);
     if (g == 0) return x;
-    if (g < 0) lo = x; else hi = x;
+    if (g < 0)
+      lo = x;
+    else
+      hi = x;
     if (hi - lo <= tol) return hi;
     bool newton_ok;
     double newton;

@@ -26,15 +26,13 @@ MechanicalState state_in_segment(const Parameters& p, const MechanicalState& s, 
       out.v = m.velocity(t);
       break;
     }
-    case Regime::Stop:
-      out.v = 0;
-      break;
+    case Regime::Stop: out.v = 0; break;
   }
   return out;
 }
 
-MechanicalState simulate(const Parameters& p, double x0, double y0, double v0, double t0, double t_end,
-                         const SimulationOptions& options, SimulationSink& sink) {
+MechanicalState simulate(const Parameters& p, double x0, double y0, double v0, double t0, double t_end, const SimulationOptions& options,
+                         SimulationSink& sink) {
   auto finite = [](const char* name, double v) {
     if (!std::isfinite(v)) throw InvalidParameter(name, std::string(name) + " finite", v);
   };
@@ -45,22 +43,19 @@ MechanicalState simulate(const Parameters& p, double x0, double y0, double v0, d
   finite("t-end", t_end);
   // Positions and velocities on the scale of the parameters' range: beyond it x(t) can overflow.
   for (const auto& [name, v] : {std::pair{"x0", x0}, std::pair{"y0", y0}, std::pair{"v0", v0}})
-    if (!(std::fabs(v) <= kMaxParameter))
-      throw InvalidParameter(name, std::string("|") + name + "| <= " + format_double(kMaxParameter), v);
+    if (!(std::fabs(v) <= kMaxParameter)) throw InvalidParameter(name, std::string("|") + name + "| <= " + format_double(kMaxParameter), v);
   for (const auto& [name, v] : {std::pair{"t0", t0}, std::pair{"t-end", t_end}})
     if (!(std::fabs(v) <= kMaxSimulationTime))
-      throw InvalidParameter(name, std::string("|") + name + "| <= " + format_double(kMaxSimulationTime) +
-                                         " (beyond it a double time no longer resolves 1e-4)", v);
+      throw InvalidParameter(
+          name, std::string("|") + name + "| <= " + format_double(kMaxSimulationTime) + " (beyond it a double time no longer resolves 1e-4)", v);
   if (x0 > y0) throw InvalidParameter("x0", "x0 <= y0 (the mass cannot pass the delimiter)", x0);
   if (t_end < t0) throw InvalidParameter("t-end", "t-end >= t0 = " + format_double(t0), t_end);
-  if (!std::isfinite(options.sample_dt) || options.sample_dt < 0)
-    throw InvalidParameter("sample", "sample >= 0 and finite", options.sample_dt);
+  if (!std::isfinite(options.sample_dt) || options.sample_dt < 0) throw InvalidParameter("sample", "sample >= 0 and finite", options.sample_dt);
   long n_samples = 0;
   if (options.sample_dt > 0) {
     const double n = std::floor((t_end - t0) / options.sample_dt) + 1;
     if (!(n <= static_cast<double>(options.max_samples)))
-      throw InvalidParameter("sample", "(t-end - t0)/sample + 1 <= " + std::to_string(options.max_samples) + " samples",
-                             options.sample_dt);
+      throw InvalidParameter("sample", "(t-end - t0)/sample + 1 <= " + std::to_string(options.max_samples) + " samples", options.sample_dt);
     n_samples = static_cast<long>(n);
   }
 
@@ -89,8 +84,8 @@ MechanicalState simulate(const Parameters& p, double x0, double y0, double v0, d
     if (!tr || before(stop, tr->t)) break;
     emit_samples_until(tr->t, false);
     if (n_events >= options.max_events)
-      throw GaveUp("simulate: more than " + std::to_string(options.max_events) + " events before t-end=" +
-                   format_double(t_end) + "; raise the event limit or shorten the time span");
+      throw GaveUp("simulate: more than " + std::to_string(options.max_events) + " events before t-end=" + format_double(t_end) +
+                   "; raise the event limit or shorten the time span");
     SimulationEvent e;
     e.when = tr->t;
     e.t = tr->t.value();
@@ -109,8 +104,7 @@ MechanicalState simulate(const Parameters& p, double x0, double y0, double v0, d
   return state_in_segment(p, s, stop);
 }
 
-Simulation simulate(const Parameters& p, double x0, double y0, double v0, double t0, double t_end,
-                    const SimulationOptions& options) {
+Simulation simulate(const Parameters& p, double x0, double y0, double v0, double t0, double t_end, const SimulationOptions& options) {
   // The streaming form, its calls collected in order.
   struct Collect final : SimulationSink {
     Simulation& sim;

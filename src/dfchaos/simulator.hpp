@@ -20,15 +20,15 @@ namespace dfchaos {
 
 /// One logged event: a regime change (fp or is), or a grazing touch (is, free to free).
 struct SimulationEvent {
-  double t = 0;      ///< instant (real)
-  Instant when;      ///< the same as turn and phase
-  Regime before = Regime::Free;  ///< regime before the event
-  Regime after = Regime::Free;   ///< regime after the event
+  double t = 0;                                             ///< instant (real)
+  Instant when;                                             ///< the same as turn and phase
+  Regime before = Regime::Free;                             ///< regime before the event
+  Regime after = Regime::Free;                              ///< regime after the event
   TransitionKind kind = TransitionKind::InstantaneousStop;  ///< fp or is
-  double x = 0;                  ///< position of the mass
-  double y = 0;                  ///< position of the delimiter
-  double v_before = 0;           ///< velocity just before
-  double v_after = 0;            ///< velocity just after
+  double x = 0;                                             ///< position of the mass
+  double y = 0;                                             ///< position of the delimiter
+  double v_before = 0;                                      ///< velocity just before
+  double v_after = 0;                                       ///< velocity just after
 };
 
 /// A state sampled on a regular time grid.
@@ -74,7 +74,7 @@ struct Simulation {
   Regime initial_regime = Regime::Free;  ///< regime chosen at the initial state
   std::vector<SimulationEvent> events;   ///< every regime change, in time order
   std::vector<Sample> samples;           ///< the regular samples (if requested)
-  MechanicalState final_state;  ///< at t_end
+  MechanicalState final_state;           ///< at t_end
 };
 
 /// Simulates from \f$x(t_0) = x_0\f$, \f$y(t_0) = y_0\f$, \f$\dot x(t_0) = v_0\f$ until \f$t_{end}\f$,
@@ -90,14 +90,13 @@ struct Simulation {
 ///         than options.max_samples samples; before any call of the sink.
 /// @throws GaveUp if more than options.max_events events occur before \f$t_{end}\f$: the sink has
 ///         then received start(), the first max_events events and the samples before the next one.
-MechanicalState simulate(const Parameters& p, double x0, double y0, double v0, double t0, double t_end,
-                         const SimulationOptions& options, SimulationSink& sink);
+MechanicalState simulate(const Parameters& p, double x0, double y0, double v0, double t0, double t_end, const SimulationOptions& options,
+                         SimulationSink& sink);
 
 /// The vector form: the same simulation (the streaming form above, its calls collected in order), as
 /// one Simulation held in memory (72 bytes per event and 40 per sample).
 /// @throws InvalidParameter, GaveUp as the streaming form.
-Simulation simulate(const Parameters& p, double x0, double y0, double v0, double t0, double t_end,
-                    const SimulationOptions& options = {});
+Simulation simulate(const Parameters& p, double x0, double y0, double v0, double t0, double t_end, const SimulationOptions& options = {});
 
 /// The state at instant t of the regime segment that starts in state s (no event in between).
 MechanicalState state_in_segment(const Parameters& p, const MechanicalState& s, const Instant& t);

@@ -2,12 +2,12 @@
 #include "dfchaos/superstable.hpp"
 
 #include <algorithm>
-#include <new>
 #include <cmath>
 #include <limits>
+#include <new>
 #include <stdexcept>
-#include <vector>
 #include <utility>
+#include <vector>
 
 #include "dfchaos/bisect.hpp"
 #include "dfchaos/covering.hpp"
@@ -39,10 +39,16 @@ SuperstableCheck superstable_check(const Parameters& p, int scan) {
   double lo = t2, hi = NAN;
   for (int i = 1; i < scan; ++i) {
     const double th = t2 + h * i;
-    if (T(p, th) != t2) { hi = th; break; }
+    if (T(p, th) != t2) {
+      hi = th;
+      break;
+    }
     lo = th;
   }
-  if (std::isnan(hi)) { r.epsilon = t3 - t2; return r; }
+  if (std::isnan(hi)) {
+    r.epsilon = t3 - t2;
+    return r;
+  }
   lo = bisect([&](double m) { return T(p, m) == t2; }, lo, hi, {.max_iterations = 100, .rel_tol = 4e-16}).first;
   r.epsilon = lo - t2;
   return r;
@@ -53,8 +59,8 @@ namespace {
 struct Sample {
   double r = 0;
   long long branch = 0;
-  long double w = 0;       // theta2(t2) as an instant, turn 0 = t2's period
-  double bound[4] = {};    // t1, t2, t3, t0 + 2 pi
+  long double w = 0;     // theta2(t2) as an instant, turn 0 = t2's period
+  double bound[4] = {};  // t1, t2, t3, t0 + 2 pi
 };
 
 Sample sample_at(double a, double q, double r) {
@@ -72,9 +78,7 @@ Sample sample_at(double a, double q, double r) {
 }
 
 /// Number of whole turns of (w - boundary) / 2 pi, i.e. which copy of the boundary w is past.
-long long turns_past(const Sample& x, int k) {
-  return static_cast<long long>(std::floor((x.w - x.bound[k]) / two_pi_l));
-}
+long long turns_past(const Sample& x, int k) { return static_cast<long long>(std::floor((x.w - x.bound[k]) / two_pi_l)); }
 
 int condition_at(double a, double q, double r) {
   const Parameters p(a, a / r, q);
@@ -101,7 +105,10 @@ void events_between(double a, double q, const Sample& x, const Sample& y, int de
     for (int it = 0; it < 80 && (hi.r - lo.r) > 1e-13 * hi.r; ++it) {
       const Sample m = sample_at(a, q, 0.5 * (lo.r + hi.r));
       if (m.branch != lo.branch && m.branch != hi.branch) break;
-      if (turns_past(m, k) == turns_past(lo, k)) lo = m; else hi = m;
+      if (turns_past(m, k) == turns_past(lo, k))
+        lo = m;
+      else
+        hi = m;
     }
     events.push_back(0.5 * (lo.r + hi.r));
   }
@@ -206,7 +213,7 @@ bool stop_cycle_survives_shift(const Parameters& p, const StopCycle& c, double h
   const double t3 = p.t3_required();
   const double base = c.period == 1 ? c.image : T(p, c.image);
   const double start = base + h < t3 ? base + h : base - h;  // shifted to the side inside [t2, t3)
-  if (!p.in_map_domain(start)) return false;                  // no room on either side: not passed
+  if (!p.in_map_domain(start)) return false;                 // no room on either side: not passed
   const long long rest = c.period == 1 ? 1 : c.period - 1;
   return first_visit(p, start, c.image, rest) == rest;
 }
@@ -261,8 +268,6 @@ StopCycle stop_cycle(const Parameters& p, double image, long long max_steps, dou
   return c;
 }
 
-StopCycle t2_cycle(const Parameters& p, long long max_steps, double step_error) {
-  return stop_cycle(p, p.t2_required(), max_steps, step_error);
-}
+StopCycle t2_cycle(const Parameters& p, long long max_steps, double step_error) { return stop_cycle(p, p.t2_required(), max_steps, step_error); }
 
 }  // namespace dfchaos

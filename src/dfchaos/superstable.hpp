@@ -20,16 +20,16 @@ namespace dfchaos {
 
 /// The conditions of Theorem 2 at one parameter set, and the measured superstable width.
 struct SuperstableCheck {
-  MapStep step;                 ///< the step of T from t2
-  double theta2_phase = 0;      ///< \f$\theta_2(t_2) \bmod 2\pi\f$
-  bool eq21 = false;            ///< \f$\theta_2 \bmod 2\pi \in (t_1, t_2)\f$
-  bool eq22 = false;            ///< \f$\theta_2 \bmod 2\pi \in (t_3, 2\pi) \cup [0, t_0)\f$
-  double impact_velocity = 0;   ///< \f$\partial_t G_1(t_2, T_1(t_2))\f$
-  double dG2 = 0;               ///< \f$F(\theta_2) - q\f$
-  bool nondegenerate = false;   ///< both of the above non-zero (beyond 1e-9)
-  bool hypotheses = false;      ///< Theorem 2: ((2) and (22)) or ((21) and (23))
-  bool fixed = false;           ///< \f$T(t_2) = t_2\f$
-  double epsilon = 0;           ///< largest e with \f$T = t_2\f$ on a grid of \f$[t_2, t_2 + e)\f$, refined by bisection
+  MapStep step;                ///< the step of T from t2
+  double theta2_phase = 0;     ///< \f$\theta_2(t_2) \bmod 2\pi\f$
+  bool eq21 = false;           ///< \f$\theta_2 \bmod 2\pi \in (t_1, t_2)\f$
+  bool eq22 = false;           ///< \f$\theta_2 \bmod 2\pi \in (t_3, 2\pi) \cup [0, t_0)\f$
+  double impact_velocity = 0;  ///< \f$\partial_t G_1(t_2, T_1(t_2))\f$
+  double dG2 = 0;              ///< \f$F(\theta_2) - q\f$
+  bool nondegenerate = false;  ///< both of the above non-zero (beyond 1e-9)
+  bool hypotheses = false;     ///< Theorem 2: ((2) and (22)) or ((21) and (23))
+  bool fixed = false;          ///< \f$T(t_2) = t_2\f$
+  double epsilon = 0;          ///< largest e with \f$T = t_2\f$ on a grid of \f$[t_2, t_2 + e)\f$, refined by bisection
 };
 
 /// Evaluates Theorem 2 at `p`; epsilon is measured with a scan of `scan` steps over \f$[t_2, t_3)\f$.
@@ -60,15 +60,15 @@ SuperstableCheck superstable_check(const Parameters& p, int scan = 20000);
 /// every arc after a few dozen steps, and a return seen afterwards rests on the last bits of the
 /// computation: a cycle of the rounding, about which double precision cannot decide.
 struct StopCycle {
-  double image = 0;           ///< the phase the cycle passes through: the first stop image it repeats
-  long long entry = 0;        ///< steps from the start before the cycle's first visit of `image`
-  long long period = 0;       ///< steps of the cycle (0: no stop image repeated within the bound)
-  long long stops = 0;        ///< steps with a stop followed (each one resets the error)
+  double image = 0;      ///< the phase the cycle passes through: the first stop image it repeats
+  long long entry = 0;   ///< steps from the start before the cycle's first visit of `image`
+  long long period = 0;  ///< steps of the cycle (0: no stop image repeated within the bound)
+  long long stops = 0;   ///< steps with a stop followed (each one resets the error)
   /// The smallest ratio, over the steps with a stop, of the stop arc's sampled radius to the
   /// propagated error; 0 when the error reached \f$10^{-3}\f$ (or overflowed) before a stop, a step
   /// grazed, or a step without a stop changed branch within kStopCycleSafety times its error.
   double margin = 0;
-  bool resolved = false;      ///< period > 0 and margin >= kStopCycleSafety: a superstable cycle (sampled)
+  bool resolved = false;  ///< period > 0 and margin >= kStopCycleSafety: a superstable cycle (sampled)
   /// The error reached \f$10^{-3}\f$ before a stop (or overflowed, or a step grazed), or a step without
   /// a stop changed branch within its reach: margin 0 for that reason, not for a narrow arc. Also set
   /// when no stop image repeated (period 0) and the error at the last step was beyond \f$10^{-3}\f$.
@@ -113,9 +113,9 @@ bool stop_cycle_survives_shift(const Parameters& p, const StopCycle& c, double h
 
 /// A maximal interval of \f$b\f$ (at fixed \f$a, q\f$) on which (21) or (22) holds.
 struct SuperstableWindow {
-  double b_lo = 0;         ///< left end of the window
-  double b_hi = 0;         ///< right end of the window
-  int condition = 0;       ///< 21 or 22
+  double b_lo = 0;    ///< left end of the window
+  double b_hi = 0;    ///< right end of the window
+  int condition = 0;  ///< 21 or 22
 };
 
 /// All windows of \f$b \in [b_{lo}, b_{hi}]\f$ where (21) or (22) holds. The end \f$\theta_2(t_2)\f$ of the

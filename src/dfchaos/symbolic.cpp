@@ -28,11 +28,15 @@ InverseBranch make_inverse_branch(const Parameters& p, const CoveringSegment& J,
   g.monotone = true;
   for (int i = 1; i <= check; ++i) {
     const double v = T(p, g.k_at_t2 + (g.k_at_top - g.k_at_t2) * i / check);
-    if (!(v > prev)) { g.monotone = false; break; }
+    if (!(v > prev)) {
+      g.monotone = false;
+      break;
+    }
     prev = v;
   }
   (void)sign;
-  if (!g.monotone) throw GaveUp("make_inverse_branch: T is not monotone on K = [" + format_double(g.k_at_t2) + ", " + format_double(g.k_at_top) + "]");
+  if (!g.monotone)
+    throw GaveUp("make_inverse_branch: T is not monotone on K = [" + format_double(g.k_at_t2) + ", " + format_double(g.k_at_top) + "]");
   return g;
 }
 

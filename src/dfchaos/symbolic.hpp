@@ -29,20 +29,19 @@ struct InverseBranch {
 };
 
 /// Builds the inverse branch on J. @throws GaveUp if no monotone K is found.
-InverseBranch make_inverse_branch(const Parameters& p, const CoveringSegment& J, double top = 1.5 * 3.141592653589793,
-                                  int check = 2000);
+InverseBranch make_inverse_branch(const Parameters& p, const CoveringSegment& J, double top = 1.5 * 3.141592653589793, int check = 2000);
 
 /// \f$g_\sigma(y)\f$: the \f$x \in K\f$ with \f$T(x) = y\f$, by bisection, for \f$y \in [t_2, \text{top}]\f$.
 double inverse(const Parameters& p, const InverseBranch& g, double y);
 
 /// An orbit segment with its checks.
 struct ItineraryOrbit {
-  std::string word;                 ///< the itinerary, letters '0' and '1'
-  std::vector<double> x;            ///< \f$x_0, \dots, x_{n-1}\f$ (periodic: \f$x_n = x_0\f$)
-  double max_step_residual = 0;     ///< \f$\max_j |T(x_j) - x_{j+1}|\f$ (periodic: index mod n; else j < n-1)
-  bool itinerary_ok = false;        ///< \f$x_j \in K_{w_j}\f$ for every j
-  double log_expansion = 0;         ///< \f$\sum_j \ln|T'(x_j)|\f$ by central differences: how much a forward T^n amplifies errors
-  double min_separation = 0;        ///< smallest distance between two orbit points
+  std::string word;              ///< the itinerary, letters '0' and '1'
+  std::vector<double> x;         ///< \f$x_0, \dots, x_{n-1}\f$ (periodic: \f$x_n = x_0\f$)
+  double max_step_residual = 0;  ///< \f$\max_j |T(x_j) - x_{j+1}|\f$ (periodic: index mod n; else j < n-1)
+  bool itinerary_ok = false;     ///< \f$x_j \in K_{w_j}\f$ for every j
+  double log_expansion = 0;      ///< \f$\sum_j \ln|T'(x_j)|\f$ by central differences: how much a forward T^n amplifies errors
+  double min_separation = 0;     ///< smallest distance between two orbit points
   /// The one-step residual that double precision alone can produce along this orbit:
   /// \f$\max_j 4(|T'(x_j)|\,2\epsilon|x_j| + \epsilon|x_{j+1}|)\f$ — each \f$x_j\f$ is known to about
   /// two ulp (the inverse branch bisects to adjacent doubles) and \f$T\f$ amplifies that by

@@ -10,10 +10,10 @@
 #include <climits>
 #include <cstdint>
 #include <cstring>
-#include <stdexcept>
-#include <string>
 #include <exception>
 #include <mutex>
+#include <stdexcept>
+#include <string>
 #include <thread>
 #include <unordered_map>
 #include <utility>
@@ -92,9 +92,9 @@ class Collector {
  private:
   Run& run_;
   const Queue& queue_;
-  std::vector<long long> done_;                    // cells in by chunk
+  std::vector<long long> done_;                      // cells in by chunk
   std::unordered_map<long long, std::string> rows_;  // rows not yet delivered, by queue item
-  std::size_t next_ = 0;                           // the next chunk to deliver
+  std::size_t next_ = 0;                             // the next chunk to deliver
 };
 
 }  // namespace

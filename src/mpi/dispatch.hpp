@@ -43,11 +43,11 @@ inline constexpr std::chrono::microseconds kIdlePoll{2000};
 class Queue {
  public:
   Queue(const Shard& shard, std::vector<Interval> chunks);
-  long long size() const { return starts_.back(); }               ///< number of cells
-  long long cell(long long item) const;                          ///< the cell index of a queue item
-  std::size_t chunk_of(long long item) const;                     ///< the chunk holding a queue item
+  long long size() const { return starts_.back(); }                  ///< number of cells
+  long long cell(long long item) const;                              ///< the cell index of a queue item
+  std::size_t chunk_of(long long item) const;                        ///< the chunk holding a queue item
   long long chunk_begin(std::size_t k) const { return starts_[k]; }  ///< first queue item of chunk k
-  std::size_t chunks() const { return chunks_.size(); }          ///< number of chunks
+  std::size_t chunks() const { return chunks_.size(); }              ///< number of chunks
 
  private:
   Shard shard_;

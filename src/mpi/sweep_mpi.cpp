@@ -23,13 +23,13 @@
 #include <vector>
 
 #include "dfchaos/errors.hpp"
+#include "dispatch.hpp"
 #include "kit/format.hpp"
 #include "kit/output.hpp"
 #include "kit/provenance.hpp"
 #include "sweep/engine.hpp"
 #include "sweep/options.hpp"
 #include "sweep/run.hpp"
-#include "dispatch.hpp"
 
 namespace {
 
@@ -109,7 +109,8 @@ int run(int argc, char** argv, int rank, int ranks) {
       busy_wall += (r ? " " : "") + kit::format_significant(by_rank[static_cast<std::size_t>(2 * r + 1)], 4);
       sum += by_rank[static_cast<std::size_t>(2 * r + 1)];
     }
-    std::fprintf(stderr, "dfchaos-sweep-mpi: %lld cells on %d ranks in %.3f s; cpu seconds per rank: %s; busy seconds per rank: %s; utilization %.4f\n",
+    std::fprintf(stderr,
+                 "dfchaos-sweep-mpi: %lld cells on %d ranks in %.3f s; cpu seconds per rank: %s; busy seconds per rank: %s; utilization %.4f\n",
                  queue.size(), ranks, wall, cpu.c_str(), busy_wall.c_str(), wall > 0 ? sum / (ranks * wall) : 1.0);
   }
   MPI_Bcast(&status, 1, MPI_LONG_LONG, kRoot, MPI_COMM_WORLD);
@@ -121,7 +122,7 @@ int run(int argc, char** argv, int rank, int ranks) {
 int main(int argc, char** argv) {
   int provided = 0;
   MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);  // only the main thread calls MPI
-  dfchaos::kit::remove_temporaries_on_signals();  // rank 0's output temporary goes with a SIGINT/SIGTERM/SIGHUP
+  dfchaos::kit::remove_temporaries_on_signals();                  // rank 0's output temporary goes with a SIGINT/SIGTERM/SIGHUP
   int rank = 0, ranks = 1;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   MPI_Comm_size(MPI_COMM_WORLD, &ranks);

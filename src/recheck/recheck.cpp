@@ -50,7 +50,10 @@ struct Num {
   mpfr_t x;
   Num() { mpfr_init2(x, kPrecision); }
   Num(const Num& o) : Num() { mpfr_set(x, o.x, MPFR_RNDN); }
-  Num& operator=(const Num& o) { mpfr_set(x, o.x, MPFR_RNDN); return *this; }
+  Num& operator=(const Num& o) {
+    mpfr_set(x, o.x, MPFR_RNDN);
+    return *this;
+  }
   ~Num() { mpfr_clear(x); }
 };
 
@@ -63,7 +66,10 @@ struct Iv {
   explicit Iv(double d) : Iv() { mpfi_set_d(x, d); }
   Iv(double lo, double hi) : Iv() { mpfi_interv_d(x, lo, hi); }
   Iv(const Iv& o) : Iv() { mpfi_set(x, o.x); }
-  Iv& operator=(const Iv& o) { mpfi_set(x, o.x); return *this; }
+  Iv& operator=(const Iv& o) {
+    mpfi_set(x, o.x);
+    return *this;
+  }
   ~Iv() { mpfi_clear(x); }
   bool negative() const { return !mpfi_nan_p(x) && mpfi_is_strictly_neg(x) > 0; }  // every point < 0
   bool positive() const { return !mpfi_nan_p(x) && mpfi_is_strictly_pos(x) > 0; }  // every point > 0
@@ -71,8 +77,16 @@ struct Iv {
 
 using Binary = int (*)(mpfi_ptr, mpfi_srcptr, mpfi_srcptr);
 using Unary = int (*)(mpfi_ptr, mpfi_srcptr);
-Iv apply(Binary f, const Iv& a, const Iv& b) { Iv r; f(r.x, a.x, b.x); return r; }
-Iv apply(Unary f, const Iv& a) { Iv r; f(r.x, a.x); return r; }
+Iv apply(Binary f, const Iv& a, const Iv& b) {
+  Iv r;
+  f(r.x, a.x, b.x);
+  return r;
+}
+Iv apply(Unary f, const Iv& a) {
+  Iv r;
+  f(r.x, a.x);
+  return r;
+}
 Iv operator+(const Iv& a, const Iv& b) { return apply(mpfi_add, a, b); }
 Iv operator-(const Iv& a, const Iv& b) { return apply(mpfi_sub, a, b); }
 Iv operator*(const Iv& a, const Iv& b) { return apply(mpfi_mul, a, b); }
@@ -86,11 +100,22 @@ Iv sin(const Iv& a) { return apply(mpfi_sin, a); }
 Iv cos(const Iv& a) { return apply(mpfi_cos, a); }
 Iv cot(const Iv& a) { return apply(mpfi_cot, a); }
 Iv asin(const Iv& a) { return apply(mpfi_asin, a); }
-Iv pi() { Iv r; mpfi_const_pi(r.x); return r; }
+Iv pi() {
+  Iv r;
+  mpfi_const_pi(r.x);
+  return r;
+}
 /// The upper end of x, as a thin interval.
-Iv upper(const Iv& x) { Num n; mpfi_get_right(n.x, x.x); return Iv(n); }
+Iv upper(const Iv& x) {
+  Num n;
+  mpfi_get_right(n.x, x.x);
+  return Iv(n);
+}
 /// Every point of x <= every point of y (resp. <).
-bool le(const Iv& x, const Iv& y) { const Iv d = y - x; return !mpfi_nan_p(d.x) && mpfi_is_nonneg(d.x) > 0; }
+bool le(const Iv& x, const Iv& y) {
+  const Iv d = y - x;
+  return !mpfi_nan_p(d.x) && mpfi_is_nonneg(d.x) > 0;
+}
 bool lt(const Iv& x, const Iv& y) { return (y - x).positive(); }
 
 // ---- the formulas, from the paper ----------------------------------------------------------------
@@ -123,9 +148,7 @@ Iv u_at_t2(const Iv& a, const Iv& b, const Iv& q) { return u_from_t0(a, b, q, t2
 /// Eq. (11): the flight from rest at theta, G1(theta, t) = b (t - theta)^2 - a sin t + a cos theta
 /// (t - theta) + a sin theta (zero at the impact T1); its t-derivative is
 /// dG1(theta, t) = 2b (t - theta) - a cos t + a cos theta, and d2G1/dt2 = F(t).
-Iv G1(const Iv& a, const Iv& b, const Iv& th, const Iv& t) {
-  return b * sqr(t - th) - a * sin(t) + a * cos(th) * (t - th) + a * sin(th);
-}
+Iv G1(const Iv& a, const Iv& b, const Iv& th, const Iv& t) { return b * sqr(t - th) - a * sin(t) + a * cos(th) * (t - th) + a * sin(th); }
 Iv dG1(const Iv& a, const Iv& b, const Iv& th, const Iv& t) { return 2.0 * b * (t - th) - a * cos(t) + a * cos(th); }
 /// Eq. (17): the progression after the impact at theta1, G2(theta, theta1, t) = 2b (theta1 - theta)
 /// + a cos theta + (2b - q)(t - theta1) - a cos t (zero at the stop theta2); dG2/dt = F(t) - q.
@@ -183,8 +206,7 @@ double exact_double(const json& j, const std::string& where) {
   const std::string s = j.get<std::string>();
   char* end = nullptr;
   const double d = std::strtod(s.c_str(), &end);
-  if (*end != '\0' || !std::isfinite(d) || mpfr_cmp_d(n.x, d) != 0)
-    throw Malformed("'" + where + "' = '" + s + "' is not exactly a double");
+  if (*end != '\0' || !std::isfinite(d) || mpfr_cmp_d(n.x, d) != 0) throw Malformed("'" + where + "' = '" + s + "' is not exactly a double");
   return d;
 }
 
@@ -317,8 +339,7 @@ long check_vartheta0(const json& c) {
     const Iv D(d), below = 0.5 * (D + Iv(std::nextafter(d, -INFINITY))), above = 0.5 * (D + Iv(std::nextafter(d, INFINITY)));
     return (X - below).positive() && (above - X).positive();
   };
-  if (w.contains("value_double"))
-    st.require(rounds_to(bracket, parameter(w, "value_double", "witnesses.")), "vartheta0 rounds to value_double");
+  if (w.contains("value_double")) st.require(rounds_to(bracket, parameter(w, "value_double", "witnesses.")), "vartheta0 rounds to value_double");
   if (w.contains("sine_double"))
     st.require(rounds_to(sin(bracket), parameter(w, "sine_double", "witnesses.")), "sin(vartheta0) rounds to sine_double");
   // Printed decimals "0.d1...dn" (the paper's): the value lies in [x - 5e-(n+1), x + 5e-(n+1)), the
@@ -339,8 +360,8 @@ long check_vartheta0(const json& c) {
       mpfi_set_str(x.x, v.c_str(), 10);
       for (std::size_t d = 0; d <= n; ++d) half = half / Iv(10.0);
       const Iv X = of == "vartheta0" ? bracket : sin(bracket);
-      st.require(le(x - half, X) && lt(X, x + half), "the printed " + v + " is " + of.get<std::string>() + " correctly rounded to " +
-                                                        std::to_string(n) + " decimals");
+      st.require(le(x - half, X) && lt(X, x + half),
+                 "the printed " + v + " is " + of.get<std::string>() + " correctly rounded to " + std::to_string(n) + " decimals");
     }
   }
   return st.n;
@@ -359,9 +380,10 @@ void standing(Steps& st, const Iv& A, const Iv& B, const Iv& Q, bool b_positive)
 /// The parameters {a} x [b_lo, b_hi] x [q_lo, q_hi] of a certificate.
 std::pair<double, Box> read_box(const json& c) {
   const json& p = field(c, "parameters", "");
-  const json& b = field(p, "b", "parameters."), &q = field(p, "q", "parameters.");
-  return {parameter(p, "a", "parameters."), {parameter(b, "lo", "parameters.b."), parameter(b, "hi", "parameters.b."),
-                                             parameter(q, "lo", "parameters.q."), parameter(q, "hi", "parameters.q.")}};
+  const json &b = field(p, "b", "parameters."), &q = field(p, "q", "parameters.");
+  return {parameter(p, "a", "parameters."),
+          {parameter(b, "lo", "parameters.b."), parameter(b, "hi", "parameters.b."), parameter(q, "lo", "parameters.q."),
+           parameter(q, "hi", "parameters.q.")}};
 }
 
 /// The box is not empty and the standing conditions hold on it; returns {a}.
@@ -529,7 +551,7 @@ struct Outcome {
 /// is reported as such whichever step would fail first).
 struct BallWitness {
   Ball ball;
-  Num th_lo, th_hi;  // the start phases exactly (ball.th_lo, th_hi: the same as doubles, when they are)
+  Num th_lo, th_hi;                           // the start phases exactly (ball.th_lo, th_hi: the same as doubles, when they are)
   Num s0, t_lo, t_hi, u_lo, u_hi, tau, from;  // u_lo, u_hi: theta2; tau, from (unless impact): stop_arc
   std::vector<Piece> no_contact, simple_root, no_earlier_stop, simple_zero, no_stop_before_t3;
   bool ab = false, none = false, theta2 = false, from_impact = false;
@@ -538,15 +560,16 @@ struct BallWitness {
 
 /// A number of whole turns k (JSON integer, |k| < 10^9; an unsigned JSON value is not wrapped).
 long long turn(const json& jk, const std::string& where) {
-  const bool small = jk.is_number_unsigned() ? jk.get<unsigned long long>() < 1000000000ULL
-                                             : jk.is_number_integer() && jk.get<long long>() > -1000000000LL;
+  const bool small =
+      jk.is_number_unsigned() ? jk.get<unsigned long long>() < 1000000000ULL : jk.is_number_integer() && jk.get<long long>() > -1000000000LL;
   if (!small) throw Malformed("'" + where + "' is not an integer of absolute value below 10^9");
   return jk.get<long long>();
 }
 
 /// Reads the T1 witnesses {"s0", "t_lo", "t_hi", "no_contact", "simple_root"} of a ball into w.
 void read_T1(const json& jt, const std::string& wt, BallWitness& w) {
-  w.s0 = exact(field(jt, "s0", wt), wt + "s0"), w.t_lo = exact(field(jt, "t_lo", wt), wt + "t_lo"), w.t_hi = exact(field(jt, "t_hi", wt), wt + "t_hi");
+  w.s0 = exact(field(jt, "s0", wt), wt + "s0"), w.t_lo = exact(field(jt, "t_lo", wt), wt + "t_lo"),
+  w.t_hi = exact(field(jt, "t_hi", wt), wt + "t_hi");
   w.no_contact = pieces(field(jt, "no_contact", wt), wt + "no_contact");
   w.simple_root = pieces(field(jt, "simple_root", wt), wt + "simple_root");
 }
@@ -643,8 +666,7 @@ void no_contact_steps(Steps& st, const Iv& A, const BallWitness& w, const Corner
   // a cos theta K(s), E = (1/2 - (1 - cos s)/s^2)/s^2 in [1/24 - s^2/720, 1/24], K = (sin s - s)/s^3
   // in [-1/6, -1/6 + s^2/120] for 0 < s <= 1 (alternating series); b + (a/2) sin theta <= 0 (step 1).
   // So G1 < 0 for s in (0, s0]; theta_hi - theta_lo <= s0 joins this to step 5.
-  st.require(S0.positive() && le(S0, Iv(1.0)) && le(Thmax - Thmin, S0),
-             step("departure: 0 < s0 <= 1 and theta_hi - theta_lo <= s0"));
+  st.require(S0.positive() && le(S0, Iv(1.0)) && le(Thmax - Thmin, S0), step("departure: 0 < s0 <= 1 and theta_hi - theta_lo <= s0"));
   {
     const Iv S = hull(Iv(0.0), S0), s2 = S0 * S0, E = hull(Iv(1.0) / Iv(24.0) - s2 / Iv(720.0), Iv(1.0) / Iv(24.0)),
              K = hull(Iv(-1.0) / Iv(6.0), Iv(-1.0) / Iv(6.0) + s2 / Iv(120.0));
@@ -663,11 +685,11 @@ void no_contact_steps(Steps& st, const Iv& A, const BallWitness& w, const Corner
   st.require(le(until, Thmax + Iv(s_end)), step("T1 no contact: theta_hi + s_end >= " + until_name));
   std::function<bool(const Num&, const Num&)> hole;
   if (skip) hole = [&](const Num& g1, const Num& g2) { return le(skip->lo, Thmax + Iv(g1)) && le(Thmax + Iv(g2), skip->hi); };
-  negative_on(st, nc, w.s0, s_end,
-              {[&](const Iv& s) { return G1(A, Bhi, Thmax, Thmax + s); }, [&](const Iv& s) { return dG1(A, Bhi, Thmax, Thmax + s); },
-               [&](const Iv& s) { return F(A, Bhi, Thmax + s); },
-               [&](const Iv& s) { return Bhi * sqr(s) + A * s * cos(Thmax) + A * sin(Thmax) + A; }},
-              who + ": T1 no contact", hole);
+  negative_on(
+      st, nc, w.s0, s_end,
+      {[&](const Iv& s) { return G1(A, Bhi, Thmax, Thmax + s); }, [&](const Iv& s) { return dG1(A, Bhi, Thmax, Thmax + s); },
+       [&](const Iv& s) { return F(A, Bhi, Thmax + s); }, [&](const Iv& s) { return Bhi * sqr(s) + A * s * cos(Thmax) + A * sin(Thmax) + A; }},
+      who + ": T1 no contact", hole);
 }
 
 /// Steps 1-5 of a ball (README.md), the part about T1: for every point of the ball, T1 is the only,
@@ -684,8 +706,10 @@ void check_T1(Steps& st, const Iv& A, const BallWitness& w, const std::string& w
   st.require(G1(A, c.Blo, c.Thmin, Thi).positive(), step("T1 bracket: G1(theta_lo, t_hi; b_lo) > 0"));
   // 3. dG1 > 0 on [t_lo, t_hi] at the min corner, so everywhere: the zero T1 is simple.
   negative_on(st, w.simple_root, w.t_lo, w.t_hi,
-              {[&](const Iv& t) { return -dG1(A, c.Blo, c.Thmin, t); }, [&](const Iv& t) { return -F(A, c.Blo, t); },
-               [&](const Iv& t) { return -F_slope(A, t); }, {}},
+              {[&](const Iv& t) { return -dG1(A, c.Blo, c.Thmin, t); },
+               [&](const Iv& t) { return -F(A, c.Blo, t); },
+               [&](const Iv& t) { return -F_slope(A, t); },
+               {}},
               who + ": T1 simple root");
   no_contact_steps(st, A, w, c, Tlo, "t_lo", skip, who);
 }
@@ -711,8 +735,8 @@ Outcome check_ball(Steps& st, const Iv& A, const BallWitness& w, const std::stri
   const Iv next = 2.0 * pi() * Iv(k + 1);
   const auto G2min = [&](const Iv& t) { return G2(A, Blo, Qhi, Thmin, Tlo, t); };
   const auto G2max = [&](const Iv& t) { return G2(A, Bhi, Qlo, Thmax, Thi, t); };
-  const Fn minus_G2min{[&](const Iv& t) { return -G2min(t); }, [&](const Iv& t) { return -(F(A, Blo, t) - Qhi); },
-                       [&](const Iv& t) { return -F_slope(A, t); }, {}};
+  const Fn minus_G2min{
+      [&](const Iv& t) { return -G2min(t); }, [&](const Iv& t) { return -(F(A, Blo, t) - Qhi); }, [&](const Iv& t) { return -F_slope(A, t); }, {}};
   out.ab = w.ab, out.theta2 = w.theta2;
   Iv L;  // the lower end of the first stop
   if (out.theta2) {
@@ -724,8 +748,10 @@ Outcome check_ball(Steps& st, const Iv& A, const BallWitness& w, const std::stri
     st.require(G2max(out.u_hi).negative(), step("theta2 bracket: G2max(u_hi) < 0"));
     negative_on(st, w.no_earlier_stop, tlo, ulo, minus_G2min, who + ": theta2 no earlier stop");
     negative_on(st, w.simple_zero, ulo, uhi,
-                {[&](const Iv& t) { return F(A, Bhi, t) - Qlo; }, [&](const Iv& t) { return F_slope(A, t); },
-                 [&](const Iv& t) { return F_curvature(A, t); }, {}},
+                {[&](const Iv& t) { return F(A, Bhi, t) - Qlo; },
+                 [&](const Iv& t) { return F_slope(A, t); },
+                 [&](const Iv& t) { return F_curvature(A, t); },
+                 {}},
                 who + ": theta2 simple zero");
   } else {
     // G2 < 0 at tau: the stop lies after T1 (or after A, with G2 > 0 on [t_lo, A]) and before tau,
@@ -812,8 +838,7 @@ long check_covering(const json& c) {
                    who + ": theta range inside the list's theta range");
         const Outcome o = check_ball(st, A, bw, who);
         if (o.needs_lemma1 && needs_lemma1.empty()) needs_lemma1 = who;
-        if (l == 0)
-          st.require(o.ab && o.theta2 && le(1.5 * pi(), o.u_lo - o.two_pi_k), who + ": T >= 3 pi/2 (case AB, u_lo - 2 pi k >= 3 pi/2)");
+        if (l == 0) st.require(o.ab && o.theta2 && le(1.5 * pi(), o.u_lo - o.two_pi_k), who + ": T >= 3 pi/2 (case AB, u_lo - 2 pi k >= 3 pi/2)");
         if (l == 1)
           st.require(!o.ab || lt(o.u_hi - o.two_pi_k, t2(A, Iv(x.b_lo, x.b_hi))), who + ": T = t2 (case BC, or AB with u_hi - 2 pi k < t2)");
       }
@@ -873,7 +898,7 @@ long check_discontinuities(const json& c, std::string& what) {
   };
   std::vector<Tangency> ts;
   std::vector<BallWitness> cover;
-  const json& jt = field(w, "tangencies", "witnesses."), &jc = field(w, "cover", "witnesses.");
+  const json &jt = field(w, "tangencies", "witnesses."), &jc = field(w, "cover", "witnesses.");
   if (!jt.is_array() || !jc.is_array()) throw Malformed("'witnesses.tangencies' or 'witnesses.cover' is not an array");
   for (std::size_t i = 0; i < jt.size(); ++i) {
     const std::string wi = "witnesses.tangencies[" + std::to_string(i) + "].";
@@ -923,7 +948,8 @@ long check_discontinuities(const json& c, std::string& what) {
     st.require(F(A, B, Iv(t.wl, t.wh)).negative(), who + ": window: F < 0 on W (G1 concave in t there)");
     // (iii) Left: T1 on [theta_lo, z_k) (theta_hi >= z_hi), W skipped: for theta < z_k, G1(theta, .) <
     // G1(z_k, .) <= 0 on W; the bracket after W.
-    st.require(mpfr_cmp(t.left.th_lo.x, t.zl.x) <= 0 && mpfr_cmp(t.left.th_hi.x, t.zh.x) >= 0, who + ": left ball: theta_lo <= z_lo, theta_hi >= z_hi");
+    st.require(mpfr_cmp(t.left.th_lo.x, t.zl.x) <= 0 && mpfr_cmp(t.left.th_hi.x, t.zh.x) >= 0,
+               who + ": left ball: theta_lo <= z_lo, theta_hi >= z_hi");
     const Window W{Wl, Wh};
     check_T1(st, A, t.left, who + " left ball", &W);
     st.require(lt(Wh, Iv(t.left.t_lo)), who + ": left ball: wh < t_lo (T1(z_k - 0) > T1(z_k) = t*)");
@@ -966,9 +992,7 @@ std::tuple<double, double, double> read_point(const json& c) {
 /// t2) = t2).
 bool proves_T_is_t2(const Iv& A, const Outcome& o, const Box& x) { return !o.ab || lt(o.u_hi - o.two_pi_k, t2(A, Iv(x.b_lo, x.b_hi))); }
 /// T > t2 on a ball: case AB with u_lo - 2 pi k > t2 over B (T = theta2 - 2 pi k, scenario A).
-bool proves_T_above_t2(const Iv& A, const Outcome& o, const Box& x) {
-  return o.ab && o.theta2 && lt(t2(A, Iv(x.b_lo, x.b_hi)), o.u_lo - o.two_pi_k);
-}
+bool proves_T_above_t2(const Iv& A, const Outcome& o, const Box& x) { return o.ab && o.theta2 && lt(t2(A, Iv(x.b_lo, x.b_hi)), o.u_lo - o.two_pi_k); }
 
 /// The bracket {"lo", "hi"} (exact) of vartheta0, checked as in check_vartheta0; returns [lo, hi].
 Iv vartheta0_bracket(Steps& st, const json& w, const std::string& where) {
@@ -1010,8 +1034,10 @@ std::string superstable_at(Steps& st, double a, double b, double q, const json& 
   const json& jc = field(w, "condition", where);
   if (jc != 21 && jc != 22) throw Malformed("'" + where + "condition' is not 21 or 22");
   const int condition = jc.get<int>();
-  if (condition == 21) st.require(lt(t1(A, B, Q), P) && lt(P, t2(A, B)), where + "(21): t1 < theta2(t2) - 2 pi k' < t2");
-  else st.require(lt(t3(A, B), P) && lt(P, t0(A, B, Q) + 2.0 * pi()), where + "(22): t3 < theta2(t2) - 2 pi k' < t0 + 2 pi");
+  if (condition == 21)
+    st.require(lt(t1(A, B, Q), P) && lt(P, t2(A, B)), where + "(21): t1 < theta2(t2) - 2 pi k' < t2");
+  else
+    st.require(lt(t3(A, B), P) && lt(P, t0(A, B, Q) + 2.0 * pi()), where + "(22): t3 < theta2(t2) - 2 pi k' < t0 + 2 pi");
   // T = t2 on [t2, theta_end]: balls from t2 or inside (t2, theta_end], each T = t2, covering it.
   const double end = exact_double(field(w, "theta_end", where), where + "theta_end");
   st.require(lt(t2(A, B), Iv(end)), where + "theta_end > t2");
@@ -1152,7 +1178,8 @@ long check_coverings(const json& c) {
         field(boxes[i], "statement", who + ".") != "covering")
       throw Malformed("'" + who + "' is not a covering certificate of this format and version");
     const auto [ai, x] = read_box(boxes[i]);
-    st.require(ai == a && box.b_lo <= x.b_lo && x.b_hi <= box.b_hi && box.q_lo <= x.q_lo && x.q_hi <= box.q_hi, who + ": its box lies in the parameters");
+    st.require(ai == a && box.b_lo <= x.b_lo && x.b_hi <= box.b_hi && box.q_lo <= x.q_lo && x.q_hi <= box.q_hi,
+               who + ": its box lies in the parameters");
     try {
       st.n += check_covering(boxes[i]);
     } catch (const Failed& e) {
@@ -1204,7 +1231,8 @@ long check_paper_construction(const json& c, std::string& what) {
 /// lies in the bracket; returns that enclosure of T.
 Iv T_on(Steps& st, const Iv& A, const json& j, double b, double q, const Num& lo, const Num& hi, const std::string& who) {
   const BallWitness w = read_ball(j, who + ".", false, true);
-  st.require(w.ball.start == Start::Interval && mpfr_equal_p(w.th_lo.x, lo.x) && mpfr_equal_p(w.th_hi.x, hi.x), who + ": its phases are the set named");
+  st.require(w.ball.start == Start::Interval && mpfr_equal_p(w.th_lo.x, lo.x) && mpfr_equal_p(w.th_hi.x, hi.x),
+             who + ": its phases are the set named");
   st.require(w.ball.box.b_lo == b && w.ball.box.b_hi == b && w.ball.box.q_lo == q && w.ball.box.q_hi == q, who + ": at the parameter point");
   const Outcome o = check_ball(st, A, w, who);
   st.require(o.ab && o.theta2, who + ": case AB with a theta2 bracket");
@@ -1220,21 +1248,24 @@ Iv T_on(Steps& st, const Iv& A, const json& j, double b, double q, const Num& lo
 /// other boxes in J0).
 long check_periodic(const json& c, std::string& what) {
   Steps st;
-  what = "re-verified: an orbit of least period m with itinerary (0^(m-1)1)^infinity in the boxes of each orbit; not re-verified: "
-         "that it is the only one there (the prover's Krawczyk test)";
+  what =
+      "re-verified: an orbit of least period m with itinerary (0^(m-1)1)^infinity in the boxes of each orbit; not re-verified: "
+      "that it is the only one there (the prover's Krawczyk test)";
   const auto [a, b, q] = read_point(c);
   const json& w = field(c, "witnesses", "");
   const Iv A = standing_box(st, a, {b, b, q, q});
-  const std::vector<double> J0 = doubles(field(w, "J0", "witnesses."), 2, "witnesses.J0"), J1 = doubles(field(w, "J1", "witnesses."), 2, "witnesses.J1");
+  const std::vector<double> J0 = doubles(field(w, "J0", "witnesses."), 2, "witnesses.J0"),
+                            J1 = doubles(field(w, "J1", "witnesses."), 2, "witnesses.J1");
   st.require(J0[0] <= J0[1] && J0[1] < J1[0] && J1[0] <= J1[1], "J0 and J1 are segments, J0 left of J1 (disjoint)");
   const json& orbits = field(w, "orbits", "witnesses.");
   if (!orbits.is_array() || orbits.empty()) throw Malformed("'witnesses.orbits' is not a non-empty array");
   for (std::size_t i = 0; i < orbits.size(); ++i) {
     const std::string wo = "witnesses.orbits[" + std::to_string(i) + "].";
     const json& jm = field(orbits[i], "period", wo);
-    if (!jm.is_number_integer() || jm.get<long long>() < 1 || jm.get<long long>() > 64) throw Malformed("'" + wo + "period' is not an integer in 1..64");
+    if (!jm.is_number_integer() || jm.get<long long>() < 1 || jm.get<long long>() > 64)
+      throw Malformed("'" + wo + "period' is not an integer in 1..64");
     const std::size_t m = jm.get<std::size_t>();
-    const json& word = field(orbits[i], "word", wo), &boxes = field(orbits[i], "boxes", wo);
+    const json &word = field(orbits[i], "word", wo), &boxes = field(orbits[i], "boxes", wo);
     if (!word.is_string() || !boxes.is_array()) throw Malformed("'" + wo + "' has no word string or boxes array");
     st.require(word == std::string(m - 1, '0') + "1", wo + "word is 0^(m-1)1 with m = period");
     st.require(boxes.size() == m, wo + "boxes: one per point of the orbit (m of them)");
@@ -1373,19 +1404,32 @@ int check_file(const std::string& path) {
     if (!st.is_string()) throw Malformed("'statement' is not a string");
     statement = st.get<std::string>();
     long steps = 0;
-    if (statement == "vartheta0") steps = check_vartheta0(c);
-    else if (statement == "lemma1") steps = check_lemma1(c);
-    else if (statement == "b0") steps = check_b0(c);
-    else if (statement == "covering") steps = check_covering(c);
-    else if (statement == "coverings") steps = check_coverings(c);
-    else if (statement == "periodic") steps = check_periodic(c, what);
-    else if (statement == "superstable") steps = check_superstable(c, what);
-    else if (statement == "not_superstable") steps = check_not_superstable(c);
-    else if (statement == "window") steps = check_window(c);
-    else if (statement == "theorem2_counterexample") steps = check_theorem2_counterexample(c);
-    else if (statement == "discontinuities") steps = check_discontinuities(c, what);
-    else if (statement == "paper_construction") steps = check_paper_construction(c, what);
-    else if (statement == "entropy") steps = check_entropy(c, what);
+    if (statement == "vartheta0")
+      steps = check_vartheta0(c);
+    else if (statement == "lemma1")
+      steps = check_lemma1(c);
+    else if (statement == "b0")
+      steps = check_b0(c);
+    else if (statement == "covering")
+      steps = check_covering(c);
+    else if (statement == "coverings")
+      steps = check_coverings(c);
+    else if (statement == "periodic")
+      steps = check_periodic(c, what);
+    else if (statement == "superstable")
+      steps = check_superstable(c, what);
+    else if (statement == "not_superstable")
+      steps = check_not_superstable(c);
+    else if (statement == "window")
+      steps = check_window(c);
+    else if (statement == "theorem2_counterexample")
+      steps = check_theorem2_counterexample(c);
+    else if (statement == "discontinuities")
+      steps = check_discontinuities(c, what);
+    else if (statement == "paper_construction")
+      steps = check_paper_construction(c, what);
+    else if (statement == "entropy")
+      steps = check_entropy(c, what);
     else
       throw Malformed("unknown statement '" + statement +
                       "' (this checker reads vartheta0, lemma1, b0, covering, coverings, periodic, superstable, not_superstable, window, "
@@ -1405,7 +1449,8 @@ int check_file(const std::string& path) {
 
 int main(int argc, char** argv) {
   if (argc < 2) {
-    std::fprintf(stderr, "usage: dfchaos-recheck FILE...  (re-verifies dfchaos certificates in MPFI; exit 0 all verified, 1 a step failed, 2 malformed)\n");
+    std::fprintf(stderr,
+                 "usage: dfchaos-recheck FILE...  (re-verifies dfchaos certificates in MPFI; exit 0 all verified, 1 a step failed, 2 malformed)\n");
     return 2;
   }
   int status = 0;

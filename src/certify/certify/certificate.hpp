@@ -19,9 +19,9 @@
 #include "certify/certify.hpp"
 #include "dfchaos/certified/ball.hpp"
 #include "dfchaos/certified/covering.hpp"
+#include "dfchaos/certified/discontinuities.hpp"
 #include "dfchaos/certified/entropy.hpp"
 #include "dfchaos/certified/periodic.hpp"
-#include "dfchaos/certified/discontinuities.hpp"
 #include "dfchaos/certified/progression.hpp"
 #include "dfchaos/certified/superstable.hpp"
 #include "dfchaos/certified/vartheta0.hpp"
@@ -118,8 +118,7 @@ kit::Json certificate_not_superstable(double a, double b, double q, const certif
 kit::Json certificate_window(double a, double q, const certified::WindowProof& p, const std::string& claim);
 /// The certificate of the erratum to Theorem 2 (statement theorem2_counterexample): (2) and (22)
 /// hold at (a, b, q) but u(t2) > 0 > u(t3). `p` must be proved with its witnesses recorded.
-kit::Json certificate_theorem2_counterexample(double a, double b, double q, const certified::Theorem2Counterexample& p,
-                                              const std::string& claim);
+kit::Json certificate_theorem2_counterexample(double a, double b, double q, const certified::Theorem2Counterexample& p, const std::string& claim);
 
 /// The certificate of Lemma 2 at (a, b) on the segment "L0" or "L2" (statement discontinuities): the
 /// covered segment, for each discontinuity z_k its k, the bracket of z_k, the window W around the
@@ -134,9 +133,9 @@ std::string certificate_text(const kit::Json& certificate);
 
 /// What was written: where, how many bytes, and their SHA-256.
 struct WrittenCertificate {
-  std::string path;    ///< the path as given
+  std::string path;       ///< the path as given
   std::size_t bytes = 0;  ///< size of the file
-  std::string sha256;  ///< SHA-256 of its bytes, 64 hexadecimal digits
+  std::string sha256;     ///< SHA-256 of its bytes, 64 hexadecimal digits
 };
 
 /// Writes the certificate to `path` whole or not at all (a temporary beside it, then renamed;

@@ -24,8 +24,8 @@ namespace dfchaos::certify {
 
 /// A parameter given either as one number (lo == hi) or as a box [lo, hi].
 struct Range {
-  double lo = 0;  ///< lower end
-  double hi = 0;  ///< upper end
+  double lo = 0;                                        ///< lower end
+  double hi = 0;                                        ///< upper end
   static Range point(double x) { return Range{x, x}; }  ///< the degenerate range {x}
 };
 

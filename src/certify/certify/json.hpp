@@ -31,14 +31,14 @@ std::string shortest_double(double x);
 /// Adds "proved", and on failure "failed_step", "detail", "refuted" to an object.
 void add_verdict(Json& j, const certified::Outcome& v);
 
-Json to_json(const certified::Vartheta0& v);  ///< Eq. (1)
-Json to_json(const certified::ParameterBox& box, const certified::Lemma1Proof& p);  ///< Lemma 1 at a point or box
-Json to_json(double a, double q, const certified::Lemma1Bound& p);  ///< certified lower bound of b0(q)
+Json to_json(const certified::Vartheta0& v);                                                           ///< Eq. (1)
+Json to_json(const certified::ParameterBox& box, const certified::Lemma1Proof& p);                     ///< Lemma 1 at a point or box
+Json to_json(double a, double q, const certified::Lemma1Bound& p);                                     ///< certified lower bound of b0(q)
 Json to_json(double a, double b, const certified::DiscontinuityProof& p, const std::string& segment);  ///< Lemma 2
-Json to_json(const certified::CoveringProof& p);  ///< Lemma 4 / Theorem 1
-Json to_json(const certified::CoveringProof& c, const certified::PeriodicProof& p);  ///< Sections 6-7
-Json to_json(double a, double b, double q, const certified::SuperstableProof& p);  ///< Theorem 2 at a point
-Json to_json(double a, double q, const certified::WindowProof& w);  ///< a superstability window
+Json to_json(const certified::CoveringProof& p);                                                       ///< Lemma 4 / Theorem 1
+Json to_json(const certified::CoveringProof& c, const certified::PeriodicProof& p);                    ///< Sections 6-7
+Json to_json(double a, double b, double q, const certified::SuperstableProof& p);                      ///< Theorem 2 at a point
+Json to_json(double a, double q, const certified::WindowProof& w);                                     ///< a superstability window
 
 /// The statements, in words (what "proved" means for each result).
 std::string statement_vartheta0();

@@ -183,7 +183,8 @@ kit::Json pieces(const certified::NegativityRecord& r) {
 
 /// `{"s0", "t_lo", "t_hi", "no_contact", "simple_root"}`: the T1 witnesses of a recorded proof.
 kit::Json t1_witness(const certified::FirstHitProof& p) {
-  if (!p.verdict.proved || (p.no_contact.empty() && p.simple_root.empty())) throw std::logic_error("certificate: a T1 proof is not proved or not recorded");
+  if (!p.verdict.proved || (p.no_contact.empty() && p.simple_root.empty()))
+    throw std::logic_error("certificate: a T1 proof is not proved or not recorded");
   kit::Json t1 = kit::Json::object();
   t1.set("s0", hex_exact(p.s0)).set("t_lo", hex_exact(p.t_lo)).set("t_hi", hex_exact(p.t_hi));
   t1.set("no_contact", pieces(p.no_contact)).set("simple_root", pieces(p.simple_root));
@@ -220,8 +221,10 @@ kit::Json ball(const certified::BallProof& b) {
   if (T.stop_arc.verdict.proved) {
     kit::Json s = kit::Json::object();
     s.set("tau", hex_exact(T.stop_arc.tau));
-    if (T.stop_arc.from_impact) s.set("from", "impact");
-    else s.set("from", hex_exact(T.stop_arc.from_end));
+    if (T.stop_arc.from_impact)
+      s.set("from", "impact");
+    else
+      s.set("from", hex_exact(T.stop_arc.from_end));
     s.set("no_stop_before_t3", pieces(T.stop_arc.no_stop_before_t3));
     j.set("stop_arc", s);
   } else {
@@ -330,8 +333,7 @@ kit::Json certificate_window(double a, double q, const certified::WindowProof& p
   return j;
 }
 
-kit::Json certificate_theorem2_counterexample(double a, double b, double q, const certified::Theorem2Counterexample& p,
-                                              const std::string& claim) {
+kit::Json certificate_theorem2_counterexample(double a, double b, double q, const certified::Theorem2Counterexample& p, const std::string& claim) {
   if (!p.verdict.proved || p.at.size() != 1) throw std::logic_error("certificate_theorem2_counterexample: not proved, or not recorded");
   kit::Json j = header("theorem2_counterexample", claim);
   j.set("parameters", point_parameters(a, b, q));
@@ -448,7 +450,6 @@ kit::Json t1_ball(const certified::T1Piece& x) {
   return j;
 }
 
-
 }  // namespace
 
 kit::Json certificate_discontinuities(double a, double b, const std::string& segment, const certified::DiscontinuityProof& p,
@@ -489,8 +490,8 @@ kit::Json certificate_paper_construction(const certified::CoveringProof& cov, co
   j.set("parameters", point_parameters(cov.box.a, cov.box.b_lo, cov.box.q_lo));
   kit::Json w = kit::Json::object();
   w.set("covering", certificate_covering(cov, statement_covering(cov.box)));
-  w.set("discontinuities", certificate_discontinuities(cov.box.a, cov.box.b_lo, "L2", d,
-                                                       statement_discontinuities("L2 = [101pi/100, 51pi/50]", d.z.size())));
+  w.set("discontinuities",
+        certificate_discontinuities(cov.box.a, cov.box.b_lo, "L2", d, statement_discontinuities("L2 = [101pi/100, 51pi/50]", d.z.size())));
   j.set("witnesses", w);
   return j;
 }

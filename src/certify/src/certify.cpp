@@ -28,8 +28,7 @@ Range bounded(const std::string& name, const Range& r) {
   bounded(name, r.lo);
   if (r.lo == r.hi) return r;
   bounded(name, r.hi);
-  if (!(r.lo <= r.hi))
-    throw InvalidParameter(name, "LO <= HI in LO:HI (got '" + format_double(r.lo) + ":" + format_double(r.hi) + "')");
+  if (!(r.lo <= r.hi)) throw InvalidParameter(name, "LO <= HI in LO:HI (got '" + format_double(r.lo) + ":" + format_double(r.hi) + "')");
   return r;
 }
 

@@ -18,10 +18,14 @@ std::string params_text(const ParameterBox& box) {
 Json box_json(const ParameterBox& box) {
   Json j = Json::object();
   j.set("a", box.a);
-  if (box.b_lo == box.b_hi) j.set("b", box.b_lo);
-  else j.set("b", Json::array().push(box.b_lo).push(box.b_hi));
-  if (box.q_lo == box.q_hi) j.set("q", box.q_lo);
-  else j.set("q", Json::array().push(box.q_lo).push(box.q_hi));
+  if (box.b_lo == box.b_hi)
+    j.set("b", box.b_lo);
+  else
+    j.set("b", Json::array().push(box.b_lo).push(box.b_hi));
+  if (box.q_lo == box.q_hi)
+    j.set("q", box.q_lo);
+  else
+    j.set("q", Json::array().push(box.q_lo).push(box.q_hi));
   return j;
 }
 }  // namespace

@@ -191,27 +191,87 @@ Ball::Printed Ball::printed(long digits) const {
   throw std::logic_error("Ball::printed: no enclosing radius found for " + str(20));
 }
 
-Ball operator+(const Ball& x, const Ball& y) { Ball r; arb_add(r.get(), x.get(), y.get(), g_prec); return r; }
-Ball operator-(const Ball& x, const Ball& y) { Ball r; arb_sub(r.get(), x.get(), y.get(), g_prec); return r; }
-Ball operator*(const Ball& x, const Ball& y) { Ball r; arb_mul(r.get(), x.get(), y.get(), g_prec); return r; }
-Ball operator/(const Ball& x, const Ball& y) { Ball r; arb_div(r.get(), x.get(), y.get(), g_prec); return r; }
-Ball operator-(const Ball& x) { Ball r; arb_neg(r.get(), x.get()); return r; }
+Ball operator+(const Ball& x, const Ball& y) {
+  Ball r;
+  arb_add(r.get(), x.get(), y.get(), g_prec);
+  return r;
+}
+Ball operator-(const Ball& x, const Ball& y) {
+  Ball r;
+  arb_sub(r.get(), x.get(), y.get(), g_prec);
+  return r;
+}
+Ball operator*(const Ball& x, const Ball& y) {
+  Ball r;
+  arb_mul(r.get(), x.get(), y.get(), g_prec);
+  return r;
+}
+Ball operator/(const Ball& x, const Ball& y) {
+  Ball r;
+  arb_div(r.get(), x.get(), y.get(), g_prec);
+  return r;
+}
+Ball operator-(const Ball& x) {
+  Ball r;
+  arb_neg(r.get(), x.get());
+  return r;
+}
 Ball operator+(const Ball& x, double y) { return x + Ball(y); }
 Ball operator-(const Ball& x, double y) { return x - Ball(y); }
 Ball operator*(const Ball& x, double y) { return x * Ball(y); }
 Ball operator*(double x, const Ball& y) { return Ball(x) * y; }
 Ball operator/(const Ball& x, double y) { return x / Ball(y); }
 
-Ball sin(const Ball& x) { Ball r; arb_sin(r.get(), x.get(), g_prec); return r; }
-Ball cos(const Ball& x) { Ball r; arb_cos(r.get(), x.get(), g_prec); return r; }
+Ball sin(const Ball& x) {
+  Ball r;
+  arb_sin(r.get(), x.get(), g_prec);
+  return r;
+}
+Ball cos(const Ball& x) {
+  Ball r;
+  arb_cos(r.get(), x.get(), g_prec);
+  return r;
+}
 void sin_cos(const Ball& x, Ball& s, Ball& c) { arb_sin_cos(s.get(), c.get(), x.get(), g_prec); }
-Ball sqr(const Ball& x) { Ball r; arb_sqr(r.get(), x.get(), g_prec); return r; }
-Ball sqrt(const Ball& x) { Ball r; arb_sqrt(r.get(), x.get(), g_prec); return r; }
-Ball log(const Ball& x) { Ball r; arb_log(r.get(), x.get(), g_prec); return r; }
-Ball asin(const Ball& x) { Ball r; arb_asin(r.get(), x.get(), g_prec); return r; }
-Ball cot(const Ball& x) { Ball r; arb_cot(r.get(), x.get(), g_prec); return r; }
-Ball abs(const Ball& x) { Ball r; arb_abs(r.get(), x.get()); return r; }
-Ball max(const Ball& x, const Ball& y) { Ball r; arb_max(r.get(), x.get(), y.get(), g_prec); return r; }
-Ball min(const Ball& x, const Ball& y) { Ball r; arb_min(r.get(), x.get(), y.get(), g_prec); return r; }
+Ball sqr(const Ball& x) {
+  Ball r;
+  arb_sqr(r.get(), x.get(), g_prec);
+  return r;
+}
+Ball sqrt(const Ball& x) {
+  Ball r;
+  arb_sqrt(r.get(), x.get(), g_prec);
+  return r;
+}
+Ball log(const Ball& x) {
+  Ball r;
+  arb_log(r.get(), x.get(), g_prec);
+  return r;
+}
+Ball asin(const Ball& x) {
+  Ball r;
+  arb_asin(r.get(), x.get(), g_prec);
+  return r;
+}
+Ball cot(const Ball& x) {
+  Ball r;
+  arb_cot(r.get(), x.get(), g_prec);
+  return r;
+}
+Ball abs(const Ball& x) {
+  Ball r;
+  arb_abs(r.get(), x.get());
+  return r;
+}
+Ball max(const Ball& x, const Ball& y) {
+  Ball r;
+  arb_max(r.get(), x.get(), y.get(), g_prec);
+  return r;
+}
+Ball min(const Ball& x, const Ball& y) {
+  Ball r;
+  arb_min(r.get(), x.get(), y.get(), g_prec);
+  return r;
+}
 
 }  // namespace dfchaos::certified

@@ -46,13 +46,19 @@ class PrecisionScope {
 /// A real ball \f$[m - r, m + r]\f$ (value semantics over arb_t).
 class Ball {
  public:
-  Ball() { arb_init(x_); }                        ///< exactly 0
-  explicit Ball(double d);                        ///< exactly d (finite)
-  explicit Ball(long n) : Ball() { arb_set_si(x_, n); }  ///< exactly n
-  Ball(const Ball& o) : Ball() { arb_set(x_, o.x_); }  ///< copy
+  Ball() { arb_init(x_); }                                  ///< exactly 0
+  explicit Ball(double d);                                  ///< exactly d (finite)
+  explicit Ball(long n) : Ball() { arb_set_si(x_, n); }     ///< exactly n
+  Ball(const Ball& o) : Ball() { arb_set(x_, o.x_); }       ///< copy
   Ball(Ball&& o) noexcept : Ball() { arb_swap(x_, o.x_); }  ///< move
-  Ball& operator=(const Ball& o) { if (this != &o) arb_set(x_, o.x_); return *this; }  ///< copy
-  Ball& operator=(Ball&& o) noexcept { arb_swap(x_, o.x_); return *this; }  ///< move
+  Ball& operator=(const Ball& o) {
+    if (this != &o) arb_set(x_, o.x_);
+    return *this;
+  }  ///< copy
+  Ball& operator=(Ball&& o) noexcept {
+    arb_swap(x_, o.x_);
+    return *this;
+  }  ///< move
   ~Ball() { arb_clear(x_); }
 
   /// The interval \f$[lo, hi]\f$ with exact double endpoints (lo <= hi).
@@ -64,8 +70,8 @@ class Ball {
   /// \f$\pi\f$.
   static Ball pi();
 
-  arb_ptr get() { return x_; }              ///< the underlying arb_t
-  arb_srcptr get() const { return x_; }     ///< the underlying arb_t
+  arb_ptr get() { return x_; }           ///< the underlying arb_t
+  arb_srcptr get() const { return x_; }  ///< the underlying arb_t
 
   /// Greatest double not above any point of the ball (\f$-\infty\f$ if unbounded).
   double lower() const;
@@ -82,13 +88,13 @@ class Ball {
   /// The midpoint as an exact ball (zero radius).
   Ball mid_ball() const;
 
-  bool is_positive() const { return arb_is_positive(x_); }        ///< every point > 0
-  bool is_negative() const { return arb_is_negative(x_); }        ///< every point < 0
-  bool is_nonnegative() const { return arb_is_nonnegative(x_); }  ///< every point >= 0
-  bool is_nonpositive() const { return arb_is_nonpositive(x_); }  ///< every point <= 0
-  bool is_finite() const { return arb_is_finite(x_); }            ///< midpoint and radius finite
-  bool is_exact() const { return arb_is_exact(x_); }              ///< radius 0
-  bool contains(double d) const;                                  ///< d is in the ball
+  bool is_positive() const { return arb_is_positive(x_); }               ///< every point > 0
+  bool is_negative() const { return arb_is_negative(x_); }               ///< every point < 0
+  bool is_nonnegative() const { return arb_is_nonnegative(x_); }         ///< every point >= 0
+  bool is_nonpositive() const { return arb_is_nonpositive(x_); }         ///< every point <= 0
+  bool is_finite() const { return arb_is_finite(x_); }                   ///< midpoint and radius finite
+  bool is_exact() const { return arb_is_exact(x_); }                     ///< radius 0
+  bool contains(double d) const;                                         ///< d is in the ball
   bool contains(const Ball& y) const { return arb_contains(x_, y.x_); }  ///< y is inside this ball
 
   /// Arb's decimal form "[m +/- r]" with `digits` significant digits of the midpoint.
@@ -124,17 +130,17 @@ Ball operator*(const Ball& x, double y);       ///< x y
 Ball operator*(double x, const Ball& y);       ///< x y
 Ball operator/(const Ball& x, double y);       ///< x / y
 
-Ball sin(const Ball& x);   ///< \f$\sin x\f$
-Ball cos(const Ball& x);   ///< \f$\cos x\f$
+Ball sin(const Ball& x);                        ///< \f$\sin x\f$
+Ball cos(const Ball& x);                        ///< \f$\cos x\f$
 void sin_cos(const Ball& x, Ball& s, Ball& c);  ///< both at once
-Ball sqr(const Ball& x);   ///< \f$x^2\f$ (tighter than x*x when x contains 0)
-Ball sqrt(const Ball& x);  ///< \f$\sqrt{x}\f$ (NaN-ball if x may be negative)
-Ball log(const Ball& x);   ///< \f$\ln x\f$ (NaN-ball if x may be non-positive)
-Ball asin(const Ball& x);  ///< \f$\arcsin x\f$
-Ball cot(const Ball& x);   ///< \f$\cot x\f$
-Ball abs(const Ball& x);   ///< \f$|x|\f$
-Ball max(const Ball& x, const Ball& y);  ///< pointwise maximum
-Ball min(const Ball& x, const Ball& y);  ///< pointwise minimum
+Ball sqr(const Ball& x);                        ///< \f$x^2\f$ (tighter than x*x when x contains 0)
+Ball sqrt(const Ball& x);                       ///< \f$\sqrt{x}\f$ (NaN-ball if x may be negative)
+Ball log(const Ball& x);                        ///< \f$\ln x\f$ (NaN-ball if x may be non-positive)
+Ball asin(const Ball& x);                       ///< \f$\arcsin x\f$
+Ball cot(const Ball& x);                        ///< \f$\cot x\f$
+Ball abs(const Ball& x);                        ///< \f$|x|\f$
+Ball max(const Ball& x, const Ball& y);         ///< pointwise maximum
+Ball min(const Ball& x, const Ball& y);         ///< pointwise minimum
 
 /// Certainly \f$x < y\f$ for all points.
 inline bool lt(const Ball& x, const Ball& y) { return arb_lt(x.get(), y.get()); }

@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "dfchaos/certified/covering.hpp"
 
-#include <chrono>
-#include <new>
-#include <cmath>
-#include <limits>
-#include <optional>
 #include <algorithm>
+#include <chrono>
+#include <cmath>
 #include <exception>
+#include <limits>
+#include <new>
+#include <optional>
 
 #include "dfchaos/bisect.hpp"
 #include "dfchaos/certified/oracle.hpp"
@@ -120,8 +120,7 @@ double plateau_middle(const Parameters& p, double th, double scale, double& widt
 /// (symmetric_tangency_count, closed form), largest to 2e-16 relative; hi when [lo, hi] holds them.
 double branch_window(const Parameters& p, double lo, double hi, long long branches) {
   if (symmetric_tangency_count(p, lo, hi) + 1 <= branches) return hi;
-  return bisect([&](double w) { return symmetric_tangency_count(p, lo, w) + 1 <= branches; }, lo, hi,
-                {.max_iterations = 200, .rel_tol = 2e-16})
+  return bisect([&](double w) { return symmetric_tangency_count(p, lo, w) + 1 <= branches; }, lo, hi, {.max_iterations = 200, .rel_tol = 2e-16})
       .first;
 }
 
@@ -171,7 +170,10 @@ std::vector<Candidate> track_candidates(double a, double b, double q, const std:
             const double z = c.theta_top + dir * h;
             const double Tz = return_map_step(p, z).T;
             if (Tz > hi_limit) break;
-            if (Tz >= target) { x = z; found = true; }
+            if (Tz >= target) {
+              x = z;
+              found = true;
+            }
           }
           if (!found) continue;
         }
@@ -282,9 +284,13 @@ bool split_b_first(const ParameterBox& box, double th_lo, double th_hi) {
 
 /// Proves `check` on [th_lo, th_hi] x box by an adaptive cover that splits theta or b.
 template <class Check>
-Outcome cover_2d(const ParameterBox& box, double th_lo, double th_hi, const CoveringOptions& opt, int max_depth, Budget& budget,
-                 SegmentProof& r, const std::string& step, Check&& check) {
-  struct Item { double t0, t1; ParameterBox box; int depth; };
+Outcome cover_2d(const ParameterBox& box, double th_lo, double th_hi, const CoveringOptions& opt, int max_depth, Budget& budget, SegmentProof& r,
+                 const std::string& step, Check&& check) {
+  struct Item {
+    double t0, t1;
+    ParameterBox box;
+    int depth;
+  };
   std::vector<Item> stack{{th_lo, th_hi, box, 0}};
   while (!stack.empty()) {
     const Item it = stack.back();
@@ -304,7 +310,8 @@ Outcome cover_2d(const ParameterBox& box, double th_lo, double th_hi, const Cove
     const bool can_b = it.box.b_hi - it.box.b_lo > 1e-9 * it.box.b_hi && bm > it.box.b_lo && bm < it.box.b_hi;
     const bool can_q = it.box.q_hi - it.box.q_lo > 1e-7 && qm > it.box.q_lo && qm < it.box.q_hi;
     if (it.depth >= max_depth || (!can_t && !can_b && !can_q) || budget.exhausted())
-      return Outcome::fail(step, "at theta in [" + format_double(it.t0) + ", " + format_double(it.t1) + "], " + it.box.describe() + ": " + why.describe());
+      return Outcome::fail(step,
+                           "at theta in [" + format_double(it.t0) + ", " + format_double(it.t1) + "], " + it.box.describe() + ": " + why.describe());
     const bool by_b = can_b && (!can_t || split_b_first(it.box, it.t0, it.t1));
     if (by_b) {
       ParameterBox lo = it.box, hi = it.box;
@@ -353,34 +360,55 @@ SegmentProof prove_segment(const ParameterBalls& m, const Candidate& c, const Co
                        [&](const ParameterBalls& mm, double t0, double t1, Outcome& why) {
                          MapStepProof top = certify_T(mm, StartSet::interval(t0, t1), budget, nullptr, opt.record);
                          r.tests += top.tests;
-                         if (!top.verdict) { why = top.verdict; return false; }
-                         if (!le(1.5 * mm.pi, top.T)) { why = Outcome::fail("T >= 3pi/2", "T = " + top.T.str(12)); return false; }
+                         if (!top.verdict) {
+                           why = top.verdict;
+                           return false;
+                         }
+                         if (!le(1.5 * mm.pi, top.T)) {
+                           why = Outcome::fail("T >= 3pi/2", "T = " + top.T.str(12));
+                           return false;
+                         }
                          r.T_top = first_top ? top.T : Ball::hull(r.T_top, top.T);
                          first_top = false;
                          if (opt.record) r.top_balls.push_back(BallProof::of(StartSet::interval(t0, t1), mm.box(), std::move(top)));
                          return true;
                        });
-  if (!v) { r.verdict = v; return r; }
+  if (!v) {
+    r.verdict = v;
+    return r;
+  }
   v = cover_2d(m.box(), c.theta_t2, c.theta_t2, opt, opt.end_depth, budget, r, "covering: T = t2 at the t2 end",
                [&](const ParameterBalls& mm, double t0, double t1, Outcome& why) {
                  MapStepProof bot = certify_T(mm, StartSet::interval(t0, t1), budget, nullptr, opt.record);
                  r.tests += bot.tests;
-                 if (!bot.verdict) { why = bot.verdict; return false; }
-                 if (!bot.constant_t2) { why = Outcome::fail("T = t2", "T = " + bot.T.str(12)); return false; }
+                 if (!bot.verdict) {
+                   why = bot.verdict;
+                   return false;
+                 }
+                 if (!bot.constant_t2) {
+                   why = Outcome::fail("T = t2", "T = " + bot.T.str(12));
+                   return false;
+                 }
                  r.theta2_t2end = first_bot ? bot.theta2_phase : Ball::hull(r.theta2_t2end, bot.theta2_phase);
                  first_bot = false;
                  r.used_lemma1 = r.used_lemma1 || bot.used_lemma1;
                  if (opt.record) r.t2_balls.push_back(BallProof::of(StartSet::interval(t0, t1), mm.box(), std::move(bot)));
                  return true;
                });
-  if (!v) { r.verdict = v; return r; }
+  if (!v) {
+    r.verdict = v;
+    return r;
+  }
   const int end_balls = r.balls;
   // Continuity on J.
   v = cover_2d(m.box(), r.lo, r.hi, opt, opt.max_depth, budget, r, "covering: continuity on J",
                [&](const ParameterBalls& mm, double t0, double t1, Outcome& why) {
                  MapStepProof t = certify_T(mm, StartSet::interval(t0, t1), budget, nullptr, opt.record);
                  r.tests += t.tests;
-                 if (!t.verdict) { why = t.verdict; return false; }
+                 if (!t.verdict) {
+                   why = t.verdict;
+                   return false;
+                 }
                  r.used_lemma1 = r.used_lemma1 || t.used_lemma1;
                  if (opt.record) r.cover_balls.push_back(BallProof::of(StartSet::interval(t0, t1), mm.box(), std::move(t)));
                  return true;
@@ -403,8 +431,10 @@ class CoveringAttempt {
     if (!proved_.empty() && !(proved_.back().hi < c.lo())) return false;
     ++r_.candidates_tried;
     SegmentProof s = prove_segment(m_, c, opt_);
-    if (s.verdict) proved_.push_back(s);
-    else last_failure_ = s;
+    if (s.verdict)
+      proved_.push_back(s);
+    else
+      last_failure_ = s;
     return proved_.size() == 2;
   }
   /// The verdict after the last offer; `searched` (if not empty) says where the candidates were sought.

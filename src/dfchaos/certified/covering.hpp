@@ -29,18 +29,18 @@ namespace dfchaos::certified {
 
 /// Options of the covering proofs.
 struct CoveringOptions {
-  double margin_top = 0.3;        ///< target T at the top end: \f$3\pi/2 + \f$ this
-  int max_balls = 20000;          ///< closed balls per segment
-  int max_depth = 30;             ///< bisection depth of a segment (theta, b and q splits together)
-  int end_depth = 6;              ///< bisection depth (b and q) of the checks at the two ends
-  long max_tests = 4'000'000;     ///< interval tests per segment
-  int candidates = 6;             ///< floating-point candidates examined (at most)
+  double margin_top = 0.3;     ///< target T at the top end: \f$3\pi/2 + \f$ this
+  int max_balls = 20000;       ///< closed balls per segment
+  int max_depth = 30;          ///< bisection depth of a segment (theta, b and q splits together)
+  int end_depth = 6;           ///< bisection depth (b and q) of the checks at the two ends
+  long max_tests = 4'000'000;  ///< interval tests per segment
+  int candidates = 6;          ///< floating-point candidates examined (at most)
   /// Branches of \f$T_1\f$ in the first window [lo, w] of the candidate search (covering_candidates).
   long long first_branches = 1LL << 14;
   /// The candidate search stops at a window of this many branches, with the candidates it found.
   long long max_branches = 1LL << 16;
-  double lo = 0.0 / 0.0;          ///< search window for candidates (NaN: \f$t_2\f$)
-  double hi = 0.0 / 0.0;          ///< (NaN: \f$3\pi/2\f$)
+  double lo = 0.0 / 0.0;  ///< search window for candidates (NaN: \f$t_2\f$)
+  double hi = 0.0 / 0.0;  ///< (NaN: \f$3\pi/2\f$)
   /// Keep every ball's proof (SegmentProof::top_balls, t2_balls, cover_balls) and Lemma 1 over the
   /// box when a ball used it (CoveringProof::lemma1): the witnesses of a certificate.
   bool record = false;
@@ -66,18 +66,18 @@ std::vector<Candidate> track_candidates(double a, double b, double q, const std:
 
 /// The proof of one covering segment.
 struct SegmentProof {
-  Outcome verdict;          ///< proved: T continuous on J, T = t2 at theta_t2, T >= 3pi/2 at theta_top
-  double lo = 0;            ///< left end of J
-  double hi = 0;            ///< right end of J
-  double theta_top = 0;     ///< the end with \f$T \ge 3\pi/2\f$
-  double theta_t2 = 0;      ///< the end with \f$T = t_2\f$
-  Ball T_top;               ///< enclosure of T at theta_top (over the box)
-  Ball theta2_t2end;        ///< enclosure of the phase of \f$\theta_2\f$ at theta_t2
-  int balls = 0;            ///< closed balls of the cover of J
-  int depth = 0;            ///< deepest bisection
-  double min_width = 0;     ///< narrowest ball
-  long tests = 0;           ///< interval tests
-  bool used_lemma1 = false; ///< some ball needed Lemma 1 (T = t2 through scenario C)
+  Outcome verdict;           ///< proved: T continuous on J, T = t2 at theta_t2, T >= 3pi/2 at theta_top
+  double lo = 0;             ///< left end of J
+  double hi = 0;             ///< right end of J
+  double theta_top = 0;      ///< the end with \f$T \ge 3\pi/2\f$
+  double theta_t2 = 0;       ///< the end with \f$T = t_2\f$
+  Ball T_top;                ///< enclosure of T at theta_top (over the box)
+  Ball theta2_t2end;         ///< enclosure of the phase of \f$\theta_2\f$ at theta_t2
+  int balls = 0;             ///< closed balls of the cover of J
+  int depth = 0;             ///< deepest bisection
+  double min_width = 0;      ///< narrowest ball
+  long tests = 0;            ///< interval tests
+  bool used_lemma1 = false;  ///< some ball needed Lemma 1 (T = t2 through scenario C)
   // Kept when CoveringOptions::record:
   std::vector<BallProof> top_balls;    ///< the balls at theta_top (T >= 3pi/2 on each)
   std::vector<BallProof> t2_balls;     ///< the balls at theta_t2 (T = t2 on each)
@@ -89,12 +89,12 @@ SegmentProof prove_segment(const ParameterBalls& m, const Candidate& c, const Co
 
 /// Lemma 4 at a point or over a box: two disjoint certified covering segments.
 struct CoveringProof {
-  Outcome verdict;          ///< proved: J0, J1 disjoint, both certified covering segments
-  ParameterBox box;             ///< the parameters
-  SegmentProof J0;          ///< the left segment
-  SegmentProof J1;          ///< the right segment (J0.hi < J1.lo)
-  int candidates_tried = 0; ///< candidates examined
-  double seconds = 0;       ///< wall time of the whole proof
+  Outcome verdict;           ///< proved: J0, J1 disjoint, both certified covering segments
+  ParameterBox box;          ///< the parameters
+  SegmentProof J0;           ///< the left segment
+  SegmentProof J1;           ///< the right segment (J0.hi < J1.lo)
+  int candidates_tried = 0;  ///< candidates examined
+  double seconds = 0;        ///< wall time of the whole proof
   /// (CoveringOptions::record, proved, and some ball needed Lemma 1) Lemma 1 over the whole box, for
   /// the certificate; not proved otherwise.
   Lemma1Proof lemma1;

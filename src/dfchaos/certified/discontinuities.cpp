@@ -21,7 +21,10 @@ namespace {
 /// each ball's proof there.
 Outcome cover_simple(const ParameterBalls& m, double x, double y, Budget& budget, int& balls, std::vector<T1Piece>* record) {
   if (!(x < y)) return Outcome::ok();
-  struct Item { double lo, hi; int depth; };
+  struct Item {
+    double lo, hi;
+    int depth;
+  };
   std::vector<Item> stack{{x, y, 0}};
   while (!stack.empty()) {
     const Item it = stack.back();

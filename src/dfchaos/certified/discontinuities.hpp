@@ -42,15 +42,15 @@ struct T1Piece {
 
 /// A certified discontinuity of \f$T_1\f$.
 struct Tangency {
-  Outcome verdict;     ///< proved: first-contact tangency, T1 continuous on both one-sided neighbourhoods, jump
-  long long k = 0;     ///< \f$h(z) = (2k+1)\pi\f$
-  Ball z;              ///< the discontinuity
-  Ball flight;         ///< \f$s = -(a/b)\cos z\f$
-  Ball t_star;         ///< \f$T_1(z) = z + s\f$ (the tangency, \f$T_1(z+0)\f$)
-  Ball left_limit;     ///< enclosure of \f$T_1(z - 0)\f$
-  Ball jump;           ///< lower bound of \f$T_1(z-0) - T_1(z)\f$
-  Ball window_lo;      ///< W = [window_lo, window_hi] around t* on which F < 0 (exact ends)
-  Ball window_hi;      ///< (see window_lo)
+  Outcome verdict;  ///< proved: first-contact tangency, T1 continuous on both one-sided neighbourhoods, jump
+  long long k = 0;  ///< \f$h(z) = (2k+1)\pi\f$
+  Ball z;           ///< the discontinuity
+  Ball flight;      ///< \f$s = -(a/b)\cos z\f$
+  Ball t_star;      ///< \f$T_1(z) = z + s\f$ (the tangency, \f$T_1(z+0)\f$)
+  Ball left_limit;  ///< enclosure of \f$T_1(z - 0)\f$
+  Ball jump;        ///< lower bound of \f$T_1(z-0) - T_1(z)\f$
+  Ball window_lo;   ///< W = [window_lo, window_hi] around t* on which F < 0 (exact ends)
+  Ball window_hi;   ///< (see window_lo)
   // The witnesses, kept when prove_discontinuities records (docs/certificates.md, discontinuities):
   T1Piece left;                       ///< T1 on [z - eta', z.hi] with W skipped in the no-contact proof
   Ball right_lo;                      ///< the right piece's start phases [right_lo, right_hi] (exact ends)
@@ -61,14 +61,14 @@ struct Tangency {
 
 /// Lemma 2 on a segment.
 struct DiscontinuityProof {
-  Outcome verdict;          ///< proved: exactly the z below, T1 continuous and decreasing elsewhere on [lo, hi]
-  double lo = 0;            ///< left end of the segment covered (contains the requested one)
-  double hi = 0;            ///< right end of the segment covered
-  std::vector<Tangency> z;  ///< ascending
-  long long k_above = 0;    ///< the least k >= 2 with (2k+1) pi > h(hi) proved (= the last k of z when there is one)
-  int balls = 0;            ///< certify_T1 calls that succeeded (pieces of the cover)
+  Outcome verdict;             ///< proved: exactly the z below, T1 continuous and decreasing elsewhere on [lo, hi]
+  double lo = 0;               ///< left end of the segment covered (contains the requested one)
+  double hi = 0;               ///< right end of the segment covered
+  std::vector<Tangency> z;     ///< ascending
+  long long k_above = 0;       ///< the least k >= 2 with (2k+1) pi > h(hi) proved (= the last k of z when there is one)
+  int balls = 0;               ///< certify_T1 calls that succeeded (pieces of the cover)
   std::vector<T1Piece> cover;  ///< when recording: the T1 balls between the tangencies' pieces
-  double seconds = 0;       ///< wall time
+  double seconds = 0;          ///< wall time
 };
 
 /// Lemma 2 at (a, b) on the segment [lo, hi] (balls, e.g. 101 pi/100 and 3 pi/2): covers
@@ -79,7 +79,7 @@ DiscontinuityProof prove_discontinuities(double a, double b, const Ball& lo, con
 
 /// \f$L_0 = [101\pi/100, 3\pi/2]\f$ and \f$L_2 = [101\pi/100, 51\pi/50]\f$ of Lemma 2 and Lemma 4, as balls.
 Ball L_101pi_100();
-Ball L_51pi_50();   ///< \f$51\pi/50\f$
-Ball L_3pi_2();     ///< \f$3\pi/2\f$
+Ball L_51pi_50();  ///< \f$51\pi/50\f$
+Ball L_3pi_2();    ///< \f$3\pi/2\f$
 
 }  // namespace dfchaos::certified

@@ -260,7 +260,8 @@ EntropyProof prove_entropy_bound(double a, double b, double q, const EntropyOpti
     Ball sum(0.0);
     for (int k : g.successors) sum = sum + Ball(r.segments[k].weight);
     if (!le(Ball(rho) * g.weight, sum)) {
-      r.verdict = Outcome::fail("entropy: bound", "sum of successors' weights < rho * weight at [" + format_double(g.lo) + ", " + format_double(g.hi) + "]");
+      r.verdict =
+          Outcome::fail("entropy: bound", "sum of successors' weights < rho * weight at [" + format_double(g.lo) + ", " + format_double(g.hi) + "]");
       return r;
     }
   }

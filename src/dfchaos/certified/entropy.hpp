@@ -32,39 +32,39 @@ namespace dfchaos::certified {
 
 /// Options of the entropy bound.
 struct EntropyOptions {
-  int grid = 4000;          ///< floating-point samples of T on [t2, t3)
-  int max_segments = 400;   ///< segments of the graph's strongly connected part that are proved (at most)
-  int max_balls = 2000;     ///< closed balls per segment (continuity cover)
-  bool record = false;      ///< keep every ball's proof (the witnesses of a certificate)
+  int grid = 4000;         ///< floating-point samples of T on [t2, t3)
+  int max_segments = 400;  ///< segments of the graph's strongly connected part that are proved (at most)
+  int max_balls = 2000;    ///< closed balls per segment (continuity cover)
+  bool record = false;     ///< keep every ball's proof (the witnesses of a certificate)
 };
 
 /// One vertex of the graph: a closed segment on which T is proved continuous.
 struct GraphSegment {
-  double lo = 0;                    ///< left end (a double)
-  double hi = 0;                    ///< right end
-  Ball T_lo;                        ///< enclosure of T at lo
-  Ball T_hi;                        ///< enclosure of T at hi
-  std::vector<int> successors;      ///< indices k (in EntropyProof::segments) with T(this) containing I_k, proved
-  double weight = 0;                ///< the component of the positive vector v
+  double lo = 0;                ///< left end (a double)
+  double hi = 0;                ///< right end
+  Ball T_lo;                    ///< enclosure of T at lo
+  Ball T_hi;                    ///< enclosure of T at hi
+  std::vector<int> successors;  ///< indices k (in EntropyProof::segments) with T(this) containing I_k, proved
+  double weight = 0;            ///< the component of the positive vector v
   // Kept when EntropyOptions::record:
-  std::vector<BallProof> cover;     ///< the balls covering [lo, hi] (T continuous on each)
-  BallProof at_lo;                  ///< the ball {lo}: T there (scenario A/B with theta2 above t2)
-  BallProof at_hi;                  ///< the ball {hi}
+  std::vector<BallProof> cover;  ///< the balls covering [lo, hi] (T continuous on each)
+  BallProof at_lo;               ///< the ball {lo}: T there (scenario A/B with theta2 above t2)
+  BallProof at_hi;               ///< the ball {hi}
 };
 
 /// The bound at a parameter point.
 struct EntropyProof {
-  Outcome verdict;                      ///< proved: rho_lower > 1 is a lower bound of rho(A)
-  double a = 1;                         ///< the parameter point: a
-  double b = 0;                         ///< b
-  double q = 0;                         ///< q
-  std::vector<GraphSegment> segments;   ///< ascending, disjoint, each with its proved successors
-  double rho_lower = 0;                 ///< a double r with sum_{k in succ(j)} v_k >= r v_j for every j, proved exactly
-  Ball log_rho_lower;                   ///< enclosure of ln(rho_lower): h_top(T) is at least its lower end
-  double rho_float = 0;                 ///< floating Perron root of the chosen part (before the proofs)
-  int candidates = 0;                   ///< segments proposed by the grid
-  bool used_lemma1 = false;             ///< some ball needed Lemma 1 (then `lemma1` is proved)
-  Lemma1Proof lemma1;                   ///< Lemma 1 at the point, when some ball needed it and record
+  Outcome verdict;                     ///< proved: rho_lower > 1 is a lower bound of rho(A)
+  double a = 1;                        ///< the parameter point: a
+  double b = 0;                        ///< b
+  double q = 0;                        ///< q
+  std::vector<GraphSegment> segments;  ///< ascending, disjoint, each with its proved successors
+  double rho_lower = 0;                ///< a double r with sum_{k in succ(j)} v_k >= r v_j for every j, proved exactly
+  Ball log_rho_lower;                  ///< enclosure of ln(rho_lower): h_top(T) is at least its lower end
+  double rho_float = 0;                ///< floating Perron root of the chosen part (before the proofs)
+  int candidates = 0;                  ///< segments proposed by the grid
+  bool used_lemma1 = false;            ///< some ball needed Lemma 1 (then `lemma1` is proved)
+  Lemma1Proof lemma1;                  ///< Lemma 1 at the point, when some ball needed it and record
 };
 
 /// The entropy bound of the file comment at the point (a, b, q).

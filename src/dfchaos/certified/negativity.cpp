@@ -15,8 +15,8 @@ const char* negativity_test_name(NegativityTest t) {
   return "?";
 }
 
-Outcome prove_negative(const NegativityTarget& f, const Ball& lo, const Ball& hi, Budget& budget, const std::string& step,
-                       NegativityStats* stats, NegativityRecord* record) {
+Outcome prove_negative(const NegativityTarget& f, const Ball& lo, const Ball& hi, Budget& budget, const std::string& step, NegativityStats* stats,
+                       NegativityRecord* record) {
   NegativityStats local;
   NegativityStats& st = stats ? *stats : local;
   if (!le(lo, hi)) return Outcome::fail(step, "empty or unordered interval " + lo.mid_str(17) + " .. " + hi.mid_str(17));
@@ -29,8 +29,9 @@ Outcome prove_negative(const NegativityTarget& f, const Ball& lo, const Ball& hi
     auto [x1, x2] = std::move(stack.back());
     stack.pop_back();
     ++st.tests;
-    if (!budget.spend()) return Outcome::fail(step, "budget of " + std::to_string(budget.max_tests) + " interval tests spent near " +
-                                                       f.variable() + " = " + x1.mid_str(17));
+    if (!budget.spend())
+      return Outcome::fail(step,
+                           "budget of " + std::to_string(budget.max_tests) + " interval tests spent near " + f.variable() + " = " + x1.mid_str(17));
     if (f.envelope_negative(x1, x2)) {
       ++st.envelope;
       if (record) record->push_back({x1, x2, NegativityTest::Envelope});
@@ -40,8 +41,7 @@ Outcome prove_negative(const NegativityTarget& f, const Ball& lo, const Ball& hi
     const Ball r = max(x2 - m, m - x1).upper_ball();
     const Ball X = Ball::hull(x1, x2);
     const Ball fm = f.value(m);
-    if (fm.is_positive())
-      return Outcome::refute(step, f.variable() + " = " + m.mid_str(20) + " gives f = " + fm.str(6) + " > 0");
+    if (fm.is_positive()) return Outcome::refute(step, f.variable() + " = " + m.mid_str(20) + " gives f = " + fm.str(6) + " > 0");
     const Ball dm = f.slope(m);
     const Ball cX = f.curvature(X);
     const Ball taylor = fm + r * abs(dm) + 0.5 * sqr(r) * max(cX, Ball(0.0));
@@ -56,8 +56,7 @@ Outcome prove_negative(const NegativityTarget& f, const Ball& lo, const Ball& hi
       if (record) record->push_back({x1, x2, NegativityTest::Monotone});
       continue;
     }
-    if (lt(r, min_r))
-      return Outcome::fail(step, "undecided near " + f.variable() + " = " + m.mid_str(20) + " (f = " + fm.str(6) + ")");
+    if (lt(r, min_r)) return Outcome::fail(step, "undecided near " + f.variable() + " = " + m.mid_str(20) + " (f = " + fm.str(6) + ")");
     stack.emplace_back(m, x2);
     stack.emplace_back(x1, m);
   }

@@ -32,17 +32,21 @@ class NegativityTarget {
   virtual Ball slope(const Ball& x) const = 0;      ///< \f$f'\f$ over x
   virtual Ball curvature(const Ball& x) const = 0;  ///< \f$f''\f$ over x
   /// True only if \f$f < 0\f$ is proved on \f$[lo, hi]\f$ by a cheap majorant.
-  virtual bool envelope_negative(const Ball& lo, const Ball& hi) const { (void)lo; (void)hi; return false; }
+  virtual bool envelope_negative(const Ball& lo, const Ball& hi) const {
+    (void)lo;
+    (void)hi;
+    return false;
+  }
   /// Name of the variable in messages ("s", "t").
   virtual std::string variable() const { return "x"; }
 };
 
 /// Statistics of one call.
 struct NegativityStats {
-  long tests = 0;      ///< sub-intervals examined
-  long envelope = 0;   ///< closed by the envelope
-  long taylor = 0;     ///< closed by the Taylor bound
-  long monotone = 0;   ///< closed by monotonicity
+  long tests = 0;     ///< sub-intervals examined
+  long envelope = 0;  ///< closed by the envelope
+  long taylor = 0;    ///< closed by the Taylor bound
+  long monotone = 0;  ///< closed by monotonicity
 };
 
 /// Which of the three tests of the file comment closed a sub-interval.

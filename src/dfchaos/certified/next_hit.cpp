@@ -144,8 +144,7 @@ Ball newton_G1(const ParameterBalls& m, const Ball& theta, const Ball& b, const 
 }
 
 Outcome certify_no_contact(const ParameterBalls& m, const StartSet& set, const Ball& t_end, Budget& budget,
-                           const std::vector<std::pair<Ball, Ball>>& skip, NegativityStats* stats, Ball* s0_used,
-                           NegativityRecord* record) {
+                           const std::vector<std::pair<Ball, Ball>>& skip, NegativityStats* stats, Ball* s0_used, NegativityRecord* record) {
   if (Outcome v = set.valid(m); !v) return v;
   const Ball th_min = set.theta_min(m), th_max = set.theta_max(m);
   // 1. departure over the whole set.

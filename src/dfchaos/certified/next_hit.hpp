@@ -34,9 +34,9 @@
 #include <vector>
 
 #include "dfchaos/certified/ball.hpp"
-#include "dfchaos/certified/parameters.hpp"
 #include "dfchaos/certified/negativity.hpp"
 #include "dfchaos/certified/outcome.hpp"
+#include "dfchaos/certified/parameters.hpp"
 
 namespace dfchaos::certified {
 

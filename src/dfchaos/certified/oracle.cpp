@@ -2,8 +2,8 @@
 #include "dfchaos/certified/oracle.hpp"
 
 #include <cmath>
-#include <new>
 #include <exception>
+#include <new>
 
 #include "dfchaos/next_hit.hpp"
 

@@ -20,10 +20,10 @@ namespace dfchaos::certified {
 /// The answer of a certified routine: proved, or not proved naming the step (refuted when the step
 /// was shown false).
 struct Outcome {
-  bool proved = false;      ///< every step was proved
-  bool refuted = false;     ///< (when not proved) the computation showed a step false, not merely undecided
-  std::string step;         ///< (when not proved) the step that failed, e.g. "T1: no earlier root"
-  std::string detail;       ///< (when not proved) where and why, with numbers
+  bool proved = false;   ///< every step was proved
+  bool refuted = false;  ///< (when not proved) the computation showed a step false, not merely undecided
+  std::string step;      ///< (when not proved) the step that failed, e.g. "T1: no earlier root"
+  std::string detail;    ///< (when not proved) where and why, with numbers
 
   /// A proved outcome.
   static Outcome ok() { return Outcome{true, false, "", ""}; }

@@ -29,7 +29,7 @@ struct ParameterBox {
   /// The single parameter point of `p`.
   static ParameterBox point(const Parameters& p) { return point(p.a(), p.b(), p.q()); }
   bool is_point() const { return b_lo == b_hi && q_lo == q_hi; }  ///< both ranges degenerate
-  std::string describe() const;  ///< "a=1 b=[..] q=[..]" or "a=1 b=.. q=.."
+  std::string describe() const;                                   ///< "a=1 b=[..] q=[..]" or "a=1 b=.. q=.."
 };
 
 /// The balls of one parameter box, computed once: a, b, q, \f$2c\f$ and the switching phases, each
@@ -49,22 +49,22 @@ class ParameterBalls {
   /// (\f$t_0, t_1\f$ exist).
   Outcome admissible() const;
 
-  Ball a;                  ///< a (exact)
-  Ball b;                  ///< the whole range of b
-  Ball q;                  ///< the whole range of q
-  Ball b_lo;               ///< lower end of the b range, exact
-  Ball b_hi;               ///< upper end of the b range, exact
-  Ball q_lo;               ///< lower end of the q range, exact
-  Ball q_hi;               ///< upper end of the q range, exact
-  Ball two_c;              ///< \f$2c = 2b - q\f$ over the box
-  Ball t0;                 ///< \f$t_0\f$ over the box
-  Ball t1;                 ///< \f$t_1\f$ over the box
-  Ball t2;                 ///< \f$t_2\f$ over the box
-  Ball t3;                 ///< \f$t_3\f$ over the box
-  Ball t2_at_b_lo;         ///< \f$t_2\f$ at the lower end of the b range (a thin ball)
-  Ball t2_at_b_hi;         ///< \f$t_2\f$ at the upper end of the b range (a thin ball)
-  Ball pi;                 ///< \f$\pi\f$
-  Ball two_pi;             ///< \f$2\pi\f$
+  Ball a;           ///< a (exact)
+  Ball b;           ///< the whole range of b
+  Ball q;           ///< the whole range of q
+  Ball b_lo;        ///< lower end of the b range, exact
+  Ball b_hi;        ///< upper end of the b range, exact
+  Ball q_lo;        ///< lower end of the q range, exact
+  Ball q_hi;        ///< upper end of the q range, exact
+  Ball two_c;       ///< \f$2c = 2b - q\f$ over the box
+  Ball t0;          ///< \f$t_0\f$ over the box
+  Ball t1;          ///< \f$t_1\f$ over the box
+  Ball t2;          ///< \f$t_2\f$ over the box
+  Ball t3;          ///< \f$t_3\f$ over the box
+  Ball t2_at_b_lo;  ///< \f$t_2\f$ at the lower end of the b range (a thin ball)
+  Ball t2_at_b_hi;  ///< \f$t_2\f$ at the upper end of the b range (a thin ball)
+  Ball pi;          ///< \f$\pi\f$
+  Ball two_pi;      ///< \f$2\pi\f$
 
   /// \f$F(t) = a\sin t + 2b\f$ over the box.
   Ball F(const Ball& t) const;

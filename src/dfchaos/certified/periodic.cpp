@@ -101,8 +101,8 @@ Outcome covering_relations(const ParameterBalls& m, const std::vector<Ball>& X, 
     const OrbitBoxProof& next = boxes[(j + 1) % n];
     const bool up = lt(T_lo[j], next.lo) && lt(next.hi, T_hi[j]), down = lt(next.hi, T_lo[j]) && lt(T_hi[j], next.lo);
     if (!up && !down)
-      return Outcome::fail("periodic: certificate", "T(X_" + std::to_string(j) + ") does not cover X_" + std::to_string((j + 1) % n) +
-                                                        " by its ends");
+      return Outcome::fail("periodic: certificate",
+                           "T(X_" + std::to_string(j) + ") does not cover X_" + std::to_string((j + 1) % n) + " by its ends");
   }
   out = std::move(boxes);
   return Outcome::ok();
@@ -147,7 +147,8 @@ PeriodicProof prove_periodic(const CoveringProof& cov, int period, const Periodi
   for (int step = 0; step <= opt.newton_steps; ++step) {
     for (std::size_t j = 0; j < n; ++j) {
       ev[j] = eval_T(m, xh[j], xh[j]);
-      if (!ev[j].ok) return finish(Outcome::fail("periodic: T at the orbit", "x_" + std::to_string(j) + " = " + xh[j].mid_str(20) + ": " + ev[j].why));
+      if (!ev[j].ok)
+        return finish(Outcome::fail("periodic: T at the orbit", "x_" + std::to_string(j) + " = " + xh[j].mid_str(20) + ": " + ev[j].why));
     }
     if (step == opt.newton_steps) break;
     // Solve d_j D_j - D_{j+1} = F_j: D_j = (F_j + D_{j+1}) / d_j, closing the cycle for D_0.

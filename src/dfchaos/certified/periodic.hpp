@@ -47,24 +47,24 @@ struct PeriodicOptions {
 /// at its two ends, each in scenario A with a \f$\theta_2\f$ bracket, the ends mapped to opposite sides
 /// outside \f$X_{j+1}\f$ (checked on those brackets).
 struct OrbitBoxProof {
-  Ball lo;                 ///< the lower end of \f$X_j\f$ (exact)
-  Ball hi;                 ///< the upper end of \f$X_j\f$ (exact)
-  BallProof on;            ///< T on \f$[lo, hi]\f$ (continuous)
-  BallProof at_lo;         ///< T at lo
-  BallProof at_hi;         ///< T at hi
+  Ball lo;          ///< the lower end of \f$X_j\f$ (exact)
+  Ball hi;          ///< the upper end of \f$X_j\f$ (exact)
+  BallProof on;     ///< T on \f$[lo, hi]\f$ (continuous)
+  BallProof at_lo;  ///< T at lo
+  BallProof at_hi;  ///< T at hi
 };
 
 /// A periodic orbit of T with itinerary \f$(0^{m-1}1)^\infty\f$.
 struct PeriodicProof {
-  Outcome verdict;               ///< proved: Krawczyk encloses a unique orbit in the boxes, each inside its J
-  bool existence = false;        ///< the Section 6 argument applies (the covering is certified)
-  int period = 0;                ///< m
-  std::string word;              ///< one period of the itinerary, e.g. "0001"
-  std::vector<Ball> orbit;       ///< the boxes \f$X_0, \dots, X_{m-1}\f$ (each with the unique orbit point)
-  Ball log_multiplier;           ///< \f$\ln|(T^m)'| = \sum_j \ln|T'(x_j)|\f$ over the boxes
+  Outcome verdict;                   ///< proved: Krawczyk encloses a unique orbit in the boxes, each inside its J
+  bool existence = false;            ///< the Section 6 argument applies (the covering is certified)
+  int period = 0;                    ///< m
+  std::string word;                  ///< one period of the itinerary, e.g. "0001"
+  std::vector<Ball> orbit;           ///< the boxes \f$X_0, \dots, X_{m-1}\f$ (each with the unique orbit point)
+  Ball log_multiplier;               ///< \f$\ln|(T^m)'| = \sum_j \ln|T'(x_j)|\f$ over the boxes
   std::vector<OrbitBoxProof> boxes;  ///< with PeriodicOptions::record: the covering relations, one per box
   std::string unrecorded;            ///< why `boxes` is empty although recorded (a relation not shown)
-  double seconds = 0;            ///< wall time
+  double seconds = 0;                ///< wall time
 };
 
 /// Periodic orbit of minimal period m (1 <= m <= 64) from a proved covering.

@@ -60,9 +60,7 @@ Ball newton_velocity(const Velocity& v, const Ball& guess) {
   return x;
 }
 
-Ball delta_for(const Ball& x) {
-  return Ball(std::max(1.0, std::fabs(x.mid())) * std::ldexp(1.0, -static_cast<int>(precision() - 24)));
-}
+Ball delta_for(const Ball& x) { return Ball(std::max(1.0, std::fabs(x.mid())) * std::ldexp(1.0, -static_cast<int>(precision() - 24))); }
 
 }  // namespace
 
@@ -116,8 +114,7 @@ Theta2Proof certify_theta2(const ParameterBalls& m, const StartSet& set, const F
   // G2 > 0 from the impact to u_lo: the first zero is not earlier.
   const Velocity minus_gmin(m, th_min, t1.t_lo, m.b_lo, m.q_hi, -1.0);
   // (Failures of the corner functions refute nothing: they mix the corners of the set.)
-  if (Outcome v = prove_negative(minus_gmin, t1.t_lo, r.u_lo, budget, "theta2: no earlier stop", &r.stats,
-                                 record ? &r.no_earlier_stop : nullptr);
+  if (Outcome v = prove_negative(minus_gmin, t1.t_lo, r.u_lo, budget, "theta2: no earlier stop", &r.stats, record ? &r.no_earlier_stop : nullptr);
       !v) {
     v.refuted = false;
     r.verdict = v;
@@ -125,8 +122,7 @@ Theta2Proof certify_theta2(const ParameterBalls& m, const StartSet& set, const F
   }
   // dG2/dt < 0 on the bracket: a simple zero.
   const Acceleration acc(m, m.b_hi, m.q_lo);
-  if (Outcome v = prove_negative(acc, r.u_lo, r.u_hi, budget, "theta2: simple zero (F - q < 0)", &r.stats, record ? &r.simple_zero : nullptr);
-      !v) {
+  if (Outcome v = prove_negative(acc, r.u_lo, r.u_hi, budget, "theta2: simple zero (F - q < 0)", &r.stats, record ? &r.simple_zero : nullptr); !v) {
     v.refuted = false;
     r.verdict = v;
     return r;
@@ -177,8 +173,8 @@ StopArcProof certify_stop_arc(const ParameterBalls& m, const StartSet& set, cons
       return r;
     }
     const Velocity minus_gmin(m, th_min, t1.t_lo, m.b_lo, m.q_hi, -1.0);
-    if (Outcome v = prove_negative(minus_gmin, t1.t_lo, A_up, budget, "stop arc: no stop before t3", &r.stats,
-                                 record ? &r.no_stop_before_t3 : nullptr);
+    if (Outcome v =
+            prove_negative(minus_gmin, t1.t_lo, A_up, budget, "stop arc: no stop before t3", &r.stats, record ? &r.no_stop_before_t3 : nullptr);
         !v) {
       v.refuted = false;
       r.verdict = v;
@@ -214,7 +210,9 @@ Lemma1Proof certify_lemma1(const ParameterBalls& m, int max_pieces) {
     r.verdict = v;
     return r;
   }
-  struct Piece { double b_lo, b_hi, q_lo, q_hi; };
+  struct Piece {
+    double b_lo, b_hi, q_lo, q_hi;
+  };
   std::vector<Piece> stack{{m.box().b_lo, m.box().b_hi, m.box().q_lo, m.box().q_hi}};
   bool first = true;
   while (!stack.empty()) {
@@ -233,14 +231,16 @@ Lemma1Proof certify_lemma1(const ParameterBalls& m, int max_pieces) {
     }
     if (u.is_positive()) {
       r.verdict = Outcome::refute("Lemma 1: u(t2) < 0 (Eq. 8)", "u(t2) = " + u.str(8) + " > 0 at b in [" + format_double(p.b_lo) + ", " +
-                                                                       format_double(p.b_hi) + "], q in [" + format_double(p.q_lo) + ", " + format_double(p.q_hi) + "]");
+                                                                    format_double(p.b_hi) + "], q in [" + format_double(p.q_lo) + ", " +
+                                                                    format_double(p.q_hi) + "]");
       return r;
     }
     const double bm = 0.5 * (p.b_lo + p.b_hi), qm = 0.5 * (p.q_lo + p.q_hi);
     const bool split_b = (p.b_hi - p.b_lo) >= (p.q_hi - p.q_lo) * 0.25 && bm > p.b_lo && bm < p.b_hi;
     const bool split_q = !split_b && qm > p.q_lo && qm < p.q_hi;
     if (!split_b && !split_q) {
-      r.verdict = Outcome::fail("Lemma 1: u(t2) < 0 (Eq. 8)", "undecided at b = " + format_double(p.b_lo) + ", q = " + format_double(p.q_lo) + ": u(t2) = " + u.str(8));
+      r.verdict = Outcome::fail("Lemma 1: u(t2) < 0 (Eq. 8)",
+                                "undecided at b = " + format_double(p.b_lo) + ", q = " + format_double(p.q_lo) + ": u(t2) = " + u.str(8));
       return r;
     }
     if (split_b) {
@@ -274,7 +274,11 @@ Lemma1Bound lemma1_b0_lower_bound(double a, double q, double resolution, int max
     double prev = 0;
     for (int i = 1; i <= n; ++i) {
       const double b = hi * i / n;
-      if (!u_at(b).is_negative()) { lo = prev; hi = b; break; }
+      if (!u_at(b).is_negative()) {
+        lo = prev;
+        hi = b;
+        break;
+      }
       prev = b;
     }
     r.b_float = bisect([&](double b) { return u_at(b).is_negative(); }, lo, hi, {.max_iterations = 200, .rel_tol = 1e-17}).first;
@@ -291,14 +295,20 @@ Lemma1Bound lemma1_b0_lower_bound(double a, double q, double resolution, int max
     while (!stack.empty() && ok) {
       const auto [x, y] = stack.back();
       stack.pop_back();
-      if (++pieces > max_pieces) { ok = false; break; }
+      if (++pieces > max_pieces) {
+        ok = false;
+        break;
+      }
       const Ball u = lemma1_velocity_at_t2(A, Ball::interval(x, y), Q);
       if (u.is_negative()) {
         r.b_pieces.push_back({x, y, q, q});
         continue;
       }
       const double mid = 0.5 * (x + y);
-      if (u.is_positive() || !(mid > x && mid < y)) { ok = false; break; }
+      if (u.is_positive() || !(mid > x && mid < y)) {
+        ok = false;
+        break;
+      }
       stack.push_back({mid, y});
       stack.push_back({x, mid});
     }

@@ -26,9 +26,9 @@
 #include <vector>
 
 #include "dfchaos/certified/ball.hpp"
-#include "dfchaos/certified/parameters.hpp"
 #include "dfchaos/certified/next_hit.hpp"
 #include "dfchaos/certified/outcome.hpp"
+#include "dfchaos/certified/parameters.hpp"
 
 namespace dfchaos::certified {
 
@@ -58,15 +58,15 @@ Theta2Proof certify_theta2(const ParameterBalls& m, const StartSet& set, const F
 /// wherever in \f$R_k\f$ the progression stops (at most tangentially at \f$t_0\f$), the mass waits for
 /// \f$t_2\f$, or for \f$t_0\f$ and then (Lemma 1) for \f$t_2\f$: T = t2.
 struct StopArcProof {
-  Outcome verdict;        ///< proved: the first stop lies in [from, tau] inside R_k
-  long long k = 0;        ///< the arc
-  Ball from;              ///< the first stop lies after this
-  Ball tau;               ///< and before this
+  Outcome verdict;           ///< proved: the first stop lies in [from, tau] inside R_k
+  long long k = 0;           ///< the arc
+  Ball from;                 ///< the first stop lies after this
+  Ball tau;                  ///< and before this
   bool needs_lemma1 = true;  ///< the range meets [t3, t0] + 2 pi k (the mass may wait for t0)
-  NegativityStats stats;  ///< work
+  NegativityStats stats;     ///< work
   // The witnesses, kept when asked (docs/certificates.md, statement covering):
-  bool from_impact = false;  ///< the impact is already past \f$t_3 + 2\pi k\f$ (from = t_lo); else from = \f$t_3 + 2\pi k\f$
-  Ball from_end;             ///< (not from_impact) the exact upper end of \f$t_3 + 2\pi k\f$ up to which \f$G_2^{\min} > 0\f$ was proved
+  bool from_impact = false;            ///< the impact is already past \f$t_3 + 2\pi k\f$ (from = t_lo); else from = \f$t_3 + 2\pi k\f$
+  Ball from_end;                       ///< (not from_impact) the exact upper end of \f$t_3 + 2\pi k\f$ up to which \f$G_2^{\min} > 0\f$ was proved
   NegativityRecord no_stop_before_t3;  ///< (not from_impact) \f$G_2^{\min} > 0\f$ on these pieces of \f$[t_{lo}, \f$ from_end\f$]\f$
 };
 
@@ -89,10 +89,10 @@ struct Lemma1SubBox {
 
 /// Lemma 1 over a parameter box.
 struct Lemma1Proof {
-  Outcome verdict;   ///< proved: for every parameter of the box the progression from rest at t0 stops at t4 in (t1, t2)
-  Ball u_at_t2;      ///< enclosure of Eq. (8) over the box (hull of the pieces)
-  Ball t4;           ///< enclosure of the stop (point boxes only; else the whole of [t1, t2])
-  int pieces = 0;    ///< sub-boxes used
+  Outcome verdict;                      ///< proved: for every parameter of the box the progression from rest at t0 stops at t4 in (t1, t2)
+  Ball u_at_t2;                         ///< enclosure of Eq. (8) over the box (hull of the pieces)
+  Ball t4;                              ///< enclosure of the stop (point boxes only; else the whole of [t1, t2])
+  int pieces = 0;                       ///< sub-boxes used
   std::vector<Lemma1SubBox> sub_boxes;  ///< (when proved) the leaves of the split, covering the box: u(t2) < 0 on each
 };
 
@@ -101,10 +101,10 @@ Lemma1Proof certify_lemma1(const ParameterBalls& m, int max_pieces = 4096);
 
 /// A certified lower bound of \f$b_0(q)\f$: Lemma 1 holds for every \f$b \in (0, b_{low}]\f$ at (a, q).
 struct Lemma1Bound {
-  Outcome verdict;         ///< proved for the whole interval (0, b_low]
-  double b_low = 0;        ///< the bound (a double)
-  double b_float = 0;      ///< floating-point estimate of the first b with u(t2) = 0 (not certified)
-  int pieces = 0;          ///< b-balls used in the proof
+  Outcome verdict;                     ///< proved for the whole interval (0, b_low]
+  double b_low = 0;                    ///< the bound (a double)
+  double b_float = 0;                  ///< floating-point estimate of the first b with u(t2) = 0 (not certified)
+  int pieces = 0;                      ///< b-balls used in the proof
   std::vector<Lemma1SubBox> b_pieces;  ///< (when proved) the leaves [x, y] (as b ranges, q = q_lo = q_hi) covering [0, b_low]
 };
 

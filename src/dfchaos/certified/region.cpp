@@ -1,16 +1,15 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "dfchaos/certified/region.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <algorithm>
 #include <cstdio>
 #include <stdexcept>
 
 namespace dfchaos::certified {
 
-CoveringProof prove_covering_split(const ParameterBox& box, const std::vector<Candidate>& c, int depth, int& sub_boxes,
-                                   const CoveringOptions& opt) {
+CoveringProof prove_covering_split(const ParameterBox& box, const std::vector<Candidate>& c, int depth, int& sub_boxes, const CoveringOptions& opt) {
   CoveringProof p = prove_covering(box, c, opt);
   if (p.verdict) {
     ++sub_boxes;

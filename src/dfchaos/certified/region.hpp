@@ -23,19 +23,19 @@ namespace dfchaos::certified {
 
 /// What to tile and how much work to allow.
 struct RegionOptions {
-  double a = 1;                 ///< forcing amplitude
-  double b_lo = 1e-3;           ///< lower end of the band in b
-  double b_hi = 2e-3;           ///< upper end of the band in b
-  double q_lo = 0.76;           ///< lower end of the band in q
-  double q_hi = 0.99;           ///< upper end of the band in q
-  int q_columns = 23;           ///< columns of equal width in q
-  double c_start = 0.05;        ///< initial box width in units of b^2/a
-  double c_min = 0.003;         ///< smallest width tried before a box is given up (then fresh candidates are tried once)
-  double c_max = 0.5;           ///< largest width
-  int split_depth = 0;          ///< halvings in b of a failed box (same candidates)
-  long max_boxes = 20000;       ///< boxes attempted in total (proved or not), all columns
-  bool progress = false;        ///< print progress on stderr
-  long precision = 64;          ///< bits of the ball arithmetic (64: one limb, enough for b/a >= 1e-5)
+  double a = 1;            ///< forcing amplitude
+  double b_lo = 1e-3;      ///< lower end of the band in b
+  double b_hi = 2e-3;      ///< upper end of the band in b
+  double q_lo = 0.76;      ///< lower end of the band in q
+  double q_hi = 0.99;      ///< upper end of the band in q
+  int q_columns = 23;      ///< columns of equal width in q
+  double c_start = 0.05;   ///< initial box width in units of b^2/a
+  double c_min = 0.003;    ///< smallest width tried before a box is given up (then fresh candidates are tried once)
+  double c_max = 0.5;      ///< largest width
+  int split_depth = 0;     ///< halvings in b of a failed box (same candidates)
+  long max_boxes = 20000;  ///< boxes attempted in total (proved or not), all columns
+  bool progress = false;   ///< print progress on stderr
+  long precision = 64;     ///< bits of the ball arithmetic (64: one limb, enough for b/a >= 1e-5)
 };
 
 struct RegionBox;
@@ -46,13 +46,13 @@ using ProvedBoxSink = std::function<void(std::size_t column, const RegionBox& bo
 
 /// One box of the tiling.
 struct RegionBox {
-  double b_lo = 0;              ///< lower end of the box in b
-  double b_hi = 0;              ///< upper end of the box in b
-  double q_lo = 0;              ///< lower end of the box in q
-  double q_hi = 0;              ///< upper end of the box in q
-  bool proved = false;          ///< Lemma 4 proved for every parameter in it
-  int sub_boxes = 0;            ///< sub-boxes of the proof (1 unless it was split)
-  std::string failed_step;      ///< when not proved
+  double b_lo = 0;          ///< lower end of the box in b
+  double b_hi = 0;          ///< upper end of the box in b
+  double q_lo = 0;          ///< lower end of the box in q
+  double q_hi = 0;          ///< upper end of the box in q
+  bool proved = false;      ///< Lemma 4 proved for every parameter in it
+  int sub_boxes = 0;        ///< sub-boxes of the proof (1 unless it was split)
+  std::string failed_step;  ///< when not proved
   /// When proved: the candidate ends of the proved segment J0 (of the last sub-box when the box was
   /// split), so that the box can be re-proved alone (`dfchaos certify covering --J0 --J1`) without
   /// a fresh search for candidates.
@@ -62,13 +62,13 @@ struct RegionBox {
 
 /// The tiling of one column.
 struct RegionColumn {
-  double q_lo = 0;              ///< lower end of the column in q
-  double q_hi = 0;              ///< upper end of the column in q
-  std::vector<RegionBox> boxes; ///< in increasing b (proved and not proved)
-  double b_reached = 0;         ///< the column is tiled (proved or not) from b_lo up to here
-  double proved_length = 0;     ///< total b-length of proved boxes
-  long attempts = 0;            ///< box proofs attempted (including retries)
-  double seconds = 0;           ///< wall time of the column
+  double q_lo = 0;               ///< lower end of the column in q
+  double q_hi = 0;               ///< upper end of the column in q
+  std::vector<RegionBox> boxes;  ///< in increasing b (proved and not proved)
+  double b_reached = 0;          ///< the column is tiled (proved or not) from b_lo up to here
+  double proved_length = 0;      ///< total b-length of proved boxes
+  long attempts = 0;             ///< box proofs attempted (including retries)
+  double seconds = 0;            ///< wall time of the column
 };
 
 /// The whole region.

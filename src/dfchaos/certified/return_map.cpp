@@ -104,8 +104,8 @@ MapStepProof certify_T(const ParameterBalls& m, const StartSet& set, Budget& bud
       return r;
     }
   }
-  return try_stop_arc(Outcome::fail("T: chain", "the phase of theta2, " + r.theta2.enclosure.str(12) +
-                                                    ", is not inside one arc [t1, t3) or [t3, t2 + 2 pi) (T may jump at t3)"));
+  return try_stop_arc(Outcome::fail(
+      "T: chain", "the phase of theta2, " + r.theta2.enclosure.str(12) + ", is not inside one arc [t1, t3) or [t3, t2 + 2 pi) (T may jump at t3)"));
 }
 
 BallProof BallProof::of(const StartSet& set, const ParameterBox& box, MapStepProof T) {

@@ -22,8 +22,8 @@
 
 #include <string>
 
-#include "dfchaos/certified/parameters.hpp"
 #include "dfchaos/certified/next_hit.hpp"
+#include "dfchaos/certified/parameters.hpp"
 #include "dfchaos/certified/progression.hpp"
 
 namespace dfchaos::certified {
@@ -45,36 +45,35 @@ const char* t_case_name(TCase c);  ///< "free", "stop", "none"
 
 /// The certified T over a start set.
 struct MapStepProof {
-  Outcome verdict;         ///< proved: T continuous on the set, in `T`
-  FirstHitProof t1;              ///< the next hit
-  Theta2Proof theta2;      ///< the first progression's stop
+  Outcome verdict;     ///< proved: T continuous on the set, in `T`
+  FirstHitProof t1;    ///< the next hit
+  Theta2Proof theta2;  ///< the first progression's stop
   /// When \f$\theta_2\f$ was not bracketed but the first stop was proved to lie in a stop arc (TCase::ScenarioBC):
   /// that proof (`stop_arc.verdict` proved); else not proved.
   StopArcProof stop_arc;
   TCase t_case = TCase::Unproved;  ///< which of the two cases
-  long long turn = 0;      ///< k of the case (phase of \f$\theta_2\f$ is \f$\theta_2 - 2\pi k\f$)
-  Ball theta2_phase;       ///< \f$\theta_2 - 2\pi k\f$ (ScenarioAB: in \f$[t_1, t_3)\f$; ScenarioBC: in \f$[t_3, t_2 + 2\pi)\f$)
-  Ball T;                  ///< enclosure of T over the set (exactly the ball of \f$t_2\f$ when T ≡ t2)
-  bool constant_t2 = false;  ///< T ≡ t2 on the whole set (proved)
-  bool used_lemma1 = false;  ///< the ScenarioBC case met [t3, t0]: Lemma 1 was needed and proved
-  long tests = 0;          ///< interval tests of the negativity proofs
+  long long turn = 0;              ///< k of the case (phase of \f$\theta_2\f$ is \f$\theta_2 - 2\pi k\f$)
+  Ball theta2_phase;               ///< \f$\theta_2 - 2\pi k\f$ (ScenarioAB: in \f$[t_1, t_3)\f$; ScenarioBC: in \f$[t_3, t_2 + 2\pi)\f$)
+  Ball T;                          ///< enclosure of T over the set (exactly the ball of \f$t_2\f$ when T ≡ t2)
+  bool constant_t2 = false;        ///< T ≡ t2 on the whole set (proved)
+  bool used_lemma1 = false;        ///< the ScenarioBC case met [t3, t0]: Lemma 1 was needed and proved
+  long tests = 0;                  ///< interval tests of the negativity proofs
 };
 
 /// T over `set` (Lemma 3 with the general chain of Section 3). `lemma1` (optional): a proved
 /// Lemma 1 over the same box, used when the ScenarioBC case needs it (else it is proved here on demand).
 /// With `record`, the witnesses of the T1, theta2 and stop-arc proofs are kept (for a certificate).
-MapStepProof certify_T(const ParameterBalls& m, const StartSet& set, Budget& budget, const Lemma1Proof* lemma1 = nullptr,
-                       bool record = false);
+MapStepProof certify_T(const ParameterBalls& m, const StartSet& set, Budget& budget, const Lemma1Proof* lemma1 = nullptr, bool record = false);
 
 /// One closed ball of a proof about T (a covering, Theorem 2): start phases over a sub-box of the
 /// parameters, with the proof of T on it and its witnesses (for a certificate).
 struct BallProof {
-  Ball theta_lo;        ///< lower end of the start phases, exact (unless from_t2 or at_t2)
-  Ball theta_hi;        ///< upper end, exact (unless at_t2)
-  ParameterBox box;     ///< the sub-box
-  MapStepProof T;       ///< T on the ball, with its witnesses
-  bool from_t2 = false; ///< the phases are \f$[t_2, \theta_{hi}]\f$, from \f$t_2\f$ exactly (a point box)
-  bool at_t2 = false;   ///< the phases are the family \f$\theta = t_2(b)\f$, b in the box
+  Ball theta_lo;         ///< lower end of the start phases, exact (unless from_t2 or at_t2)
+  Ball theta_hi;         ///< upper end, exact (unless at_t2)
+  ParameterBox box;      ///< the sub-box
+  MapStepProof T;        ///< T on the ball, with its witnesses
+  bool from_t2 = false;  ///< the phases are \f$[t_2, \theta_{hi}]\f$, from \f$t_2\f$ exactly (a point box)
+  bool at_t2 = false;    ///< the phases are the family \f$\theta = t_2(b)\f$, b in the box
   /// The ball of `set` over `box` with its proof (the kind of start set is kept).
   static BallProof of(const StartSet& set, const ParameterBox& box, MapStepProof T);
 };

@@ -2,8 +2,8 @@
 #include "dfchaos/certified/superstable.hpp"
 
 #include <chrono>
-#include <new>
 #include <cmath>
+#include <new>
 #include <vector>
 
 #include "dfchaos/certified/bisect.hpp"
@@ -17,9 +17,7 @@ namespace dfchaos::certified {
 namespace {
 
 /// The turn k that reduces a theta2 enclosure x into [t1, t1 + 2 pi) (by its midpoint).
-long long phase_turn_of(const ParameterBalls& m, const Ball& x) {
-  return static_cast<long long>(std::floor((x.mid() - m.t1.mid()) / (2 * M_PI)));
-}
+long long phase_turn_of(const ParameterBalls& m, const Ball& x) { return static_cast<long long>(std::floor((x.mid() - m.t1.mid()) / (2 * M_PI))); }
 
 /// The phase of a theta2 enclosure: x - 2 pi phase_turn_of(x).
 Ball phase_of(const ParameterBalls& m, const Ball& x) { return x - Ball(static_cast<double>(phase_turn_of(m, x))) * m.two_pi; }
@@ -66,7 +64,8 @@ SuperstableProof prove_superstable(double a, double b, double q, double eps_try,
   r.theta2_phase = phase_of(m, at.theta2.enclosure);
   r.condition = superstable_condition(m, at);
   if (r.condition == 0)
-    return finish(Outcome::refute("Theorem 2: (21) or (22)", "theta2(t2) mod 2pi = " + r.theta2_phase.str(12) + " lies in [t2, t3]: T(t2) = " + at.T.str(10)));
+    return finish(
+        Outcome::refute("Theorem 2: (21) or (22)", "theta2(t2) mod 2pi = " + r.theta2_phase.str(12) + " lies in [t2, t3]: T(t2) = " + at.T.str(10)));
   if (r.condition < 0) return finish(Outcome::fail("Theorem 2: (21) or (22)", "undecided: theta2(t2) mod 2pi = " + r.theta2_phase.str(12)));
   if (!at.constant_t2) return finish(Outcome::fail("Theorem 2: T(t2) = t2", "T(t2) = " + at.T.str(10)));
   // epsilon: cover [t2, t2 + eps] with closed balls on which T = t2.
@@ -85,7 +84,10 @@ SuperstableProof prove_superstable(double a, double b, double q, double eps_try,
   std::string last_failure;
   for (int attempt = 0; attempt < 12; ++attempt, eps *= 0.5) {
     const double hi = t2_up + eps;
-    struct Item { double lo, hi; int depth; };  // lo NaN: the ball starts exactly at t2
+    struct Item {
+      double lo, hi;
+      int depth;
+    };  // lo NaN: the ball starts exactly at t2
     std::vector<Item> stack{{NAN, hi, 0}};
     int balls = 0;
     bool used_l1 = false, ok = true;
@@ -142,7 +144,10 @@ WindowProof prove_window(double a, double q, double b_lo, double b_hi, double re
     r.left_in = b_lo * (1 + rel);
     r.right_in = b_hi * (1 - rel);
     r.right_out = b_hi * (1 + rel);
-    if (!(r.left_in < r.right_in)) { last = "window narrower than the edge brackets"; break; }
+    if (!(r.left_in < r.right_in)) {
+      last = "window narrower than the edge brackets";
+      break;
+    }
     // Outer points: T(t2) certainly differs from t2.
     bool outer_ok = true;
     r.outer.clear();
@@ -160,7 +165,10 @@ WindowProof prove_window(double a, double q, double b_lo, double b_hi, double re
     }
     if (!outer_ok) continue;
     // Inside: b-boxes on which T(t2(b)) = t2.
-    struct Item { double lo, hi; int depth; };
+    struct Item {
+      double lo, hi;
+      int depth;
+    };
     std::vector<Item> stack{{r.left_in, r.right_in, 0}};
     int boxes = 0;
     bool ok = true;

@@ -68,23 +68,23 @@ int superstable_condition(const ParameterBalls& m, const MapStepProof& t);
 /// \f$[b^L_{out}, b^L_{in}]\f$ and \f$[b^R_{in}, b^R_{out}]\f$, whatever happens at them (a crossing of
 /// \f$t_2\f$ by \f$\theta_2(t_2)\f$, or the flight from \f$t_2\f$ grazing the delimiter at \f$t_3\f$).
 struct WindowProof {
-  Outcome verdict;                        ///< all parts proved
-  double b_lo_float = 0;                  ///< the floating estimate of the window: left end
-  double b_hi_float = 0;                  ///< the floating estimate of the window: right end
-  SuperstableProof inside;                ///< at the middle: Theorem 2 with a certified epsilon
-  double left_out = 0;                    ///< the left edge lies in [left_out, left_in]
-  double left_in = 0;                     ///< (see left_out)
-  double right_in = 0;                    ///< the right edge lies in [right_in, right_out]
-  double right_out = 0;                   ///< (see right_in)
-  Ball T_left_out;                        ///< T(t2) at left_out (certainly not t2)
-  Ball T_right_out;                       ///< T(t2) at right_out (certainly not t2)
-  int boxes = 0;                          ///< b-boxes of the cover of [left_in, right_in]
-  double min_eps = 0;                     ///< on each box, T = t2 on [t2(b), t2(b) + eps_b] with eps_b at least this
-  double seconds = 0;                     ///< wall time
+  Outcome verdict;          ///< all parts proved
+  double b_lo_float = 0;    ///< the floating estimate of the window: left end
+  double b_hi_float = 0;    ///< the floating estimate of the window: right end
+  SuperstableProof inside;  ///< at the middle: Theorem 2 with a certified epsilon
+  double left_out = 0;      ///< the left edge lies in [left_out, left_in]
+  double left_in = 0;       ///< (see left_out)
+  double right_in = 0;      ///< the right edge lies in [right_in, right_out]
+  double right_out = 0;     ///< (see right_in)
+  Ball T_left_out;          ///< T(t2) at left_out (certainly not t2)
+  Ball T_right_out;         ///< T(t2) at right_out (certainly not t2)
+  int boxes = 0;            ///< b-boxes of the cover of [left_in, right_in]
+  double min_eps = 0;       ///< on each box, T = t2 on [t2(b), t2(b) + eps_b] with eps_b at least this
+  double seconds = 0;       ///< wall time
   // The witnesses, kept when asked (docs/certificates.md, statement window):
-  std::vector<BallProof> outer;           ///< T at t2 at b = left_out and right_out (T != t2)
-  std::vector<BallProof> box_proofs;      ///< T(t2(b)) = t2 on each b-box, covering [left_in, right_in]
-  Lemma1Proof lemma1;                     ///< when a box used Lemma 1: Lemma 1 over [left_in, right_in] x {q}
+  std::vector<BallProof> outer;       ///< T at t2 at b = left_out and right_out (T != t2)
+  std::vector<BallProof> box_proofs;  ///< T(t2(b)) = t2 on each b-box, covering [left_in, right_in]
+  Lemma1Proof lemma1;                 ///< when a box used Lemma 1: Lemma 1 over [left_in, right_in] x {q}
 };
 
 /// Certifies the window estimated by the floating layer as \f$[b_{lo}, b_{hi}]\f$; the edge brackets have
@@ -98,11 +98,11 @@ WindowProof prove_window(double a, double q, double b_lo, double b_hi, double re
 /// \f$(t_0, t_1]\f$, u decreasing on \f$[t_1, t_3]\f$, \f$u(t_2) > 0 > u(t_3)\f$: it stops once, at
 /// \f$t_4 \in (t_2, t_3)\f$, where the mass flies (scenario D): \f$T(t_2) = t_4 \ne t_2\f$.
 struct Theorem2Counterexample {
-  Outcome verdict;       ///< proved: (2) and (22) hold, and T(t2) = t4 in (t2, t3)
-  Ball theta2_phase;     ///< \f$\theta_2(t_2) \bmod 2\pi\f$ (in \f$(t_3, 2\pi) \cup [0, t_0)\f$)
-  Ball u_at_t2;          ///< Eq. (8): positive
-  Ball u_at_t3;          ///< negative
-  Ball T;                ///< \f$T(t_2) = t_4\f$
+  Outcome verdict;    ///< proved: (2) and (22) hold, and T(t2) = t4 in (t2, t3)
+  Ball theta2_phase;  ///< \f$\theta_2(t_2) \bmod 2\pi\f$ (in \f$(t_3, 2\pi) \cup [0, t_0)\f$)
+  Ball u_at_t2;       ///< Eq. (8): positive
+  Ball u_at_t3;       ///< negative
+  Ball T;             ///< \f$T(t_2) = t_4\f$
   /// The witnesses (docs/certificates.md, statement theorem2_counterexample): T1 and theta2 from
   /// \f$[t_2, t_2^{\uparrow}]\f$ (case and turn of the phase of \f$\theta_2\f$ set as for a ball).
   std::vector<BallProof> at;

@@ -19,15 +19,15 @@ namespace dfchaos::certified {
 
 /// \f$\vartheta_0\f$ and \f$\sin\vartheta_0\f$, certified.
 struct Vartheta0 {
-  Outcome verdict;             ///< proved: the unique zero on (0, pi/2] lies in `value`
-  Ball value;                  ///< \f$\vartheta_0\f$
-  Ball sine;                   ///< \f$\sin\vartheta_0\f$
-  double value_double = 0;     ///< the double nearest to \f$\vartheta_0\f$ (when rounding_certified)
-  double sine_double = 0;      ///< the double nearest to \f$\sin\vartheta_0\f$
+  Outcome verdict;                  ///< proved: the unique zero on (0, pi/2] lies in `value`
+  Ball value;                       ///< \f$\vartheta_0\f$
+  Ball sine;                        ///< \f$\sin\vartheta_0\f$
+  double value_double = 0;          ///< the double nearest to \f$\vartheta_0\f$ (when rounding_certified)
+  double sine_double = 0;           ///< the double nearest to \f$\sin\vartheta_0\f$
   bool rounding_certified = false;  ///< both enclosures lie strictly inside one rounding interval of a double
-  long bits = 0;               ///< working precision
-  Ball bracket_lo;             ///< (when proved) an exact number with f(bracket_lo) < 0 proved: the witness below \f$\vartheta_0\f$
-  Ball bracket_hi;             ///< (when proved) an exact number with f(bracket_hi) > 0 proved: the witness above \f$\vartheta_0\f$
+  long bits = 0;                    ///< working precision
+  Ball bracket_lo;                  ///< (when proved) an exact number with f(bracket_lo) < 0 proved: the witness below \f$\vartheta_0\f$
+  Ball bracket_hi;                  ///< (when proved) an exact number with f(bracket_hi) > 0 proved: the witness above \f$\vartheta_0\f$
 };
 
 /// Encloses \f$\vartheta_0\f$ with `bits` bits of working precision (200 gives more than 50 digits).

@@ -83,11 +83,10 @@ std::optional<UpCrossing> search_piece(PieceFunction& pf, const Cursor& at, doub
   auto val_der_curv = [&pf](double u) { return pf.value_slope_curvature(u); };
   if (f_start < 0 && f_end >= 0) {
     // (After a start at rest the value at 0 is a bound, not data for an interpolant: secant start.)
-    const double guess =
-        after_rest ? std::numeric_limits<double>::quiet_NaN()
-                   : hermite_start(L, static_cast<double>(f_start), static_cast<double>(d0),
-                                   static_cast<double>(2 * f.alpha) - (start.valid ? start.H : pf.harmonic(0).H),
-                                   static_cast<double>(f_end), static_cast<double>(d1), static_cast<double>(2 * f.alpha) - h1.H);
+    const double guess = after_rest ? std::numeric_limits<double>::quiet_NaN()
+                                    : hermite_start(L, static_cast<double>(f_start), static_cast<double>(d0),
+                                                    static_cast<double>(2 * f.alpha) - (start.valid ? start.H : pf.harmonic(0).H),
+                                                    static_cast<double>(f_end), static_cast<double>(d1), static_cast<double>(2 * f.alpha) - h1.H);
     // (|f'''| = |A cos t - B sin t| <= R.)
     return crossing_at(solve_increasing(val_der_curv, 0, L, phi0, f_start, f_end, guess, static_cast<double>(R)));
   }

@@ -37,8 +37,8 @@ std::pair<long double, long double> recentred(const QuadraticPlusHarmonic& f, co
   const DD S = dd::add(dd::add(dd::two_prod(k, dd::kTwoPi.hi), DD{k * dd::kTwoPi.lo, 0.0}), dd::two_sum(at.phase, -f.origin.phase));
   const DD aS = dd::mul(dd::of(f.alpha), S);
   const DD W = dd::add(aS, dd::add(dd::of(f.beta), dd::of(f.beta_tail)));  // alpha s + beta
-  const DD P0 = dd::add(dd::mul(S, W), dd::of(f.gamma));                    // s (alpha s + beta) + gamma
-  const DD P1 = dd::add(W, aS);                                             // 2 alpha s + beta
+  const DD P0 = dd::add(dd::mul(S, W), dd::of(f.gamma));                   // s (alpha s + beta) + gamma
+  const DD P1 = dd::add(W, aS);                                            // 2 alpha s + beta
   return {dd::to_long_double(P0), dd::to_long_double(P1)};
 }
 
@@ -71,8 +71,7 @@ const Inflections& inflections_cached(const QuadraticPlusHarmonic& f) {
   thread_local int next = 0;
   for (const Entry& e : cache)
     // (signbit too: atan2 tells -0 from +0, so the inflections of B = -0 and B = +0 may differ)
-    if (e.valid && e.A == f.A && e.B == f.B && e.alpha == f.alpha && std::signbit(e.A) == std::signbit(f.A) &&
-        std::signbit(e.B) == std::signbit(f.B))
+    if (e.valid && e.A == f.A && e.B == f.B && e.alpha == f.alpha && std::signbit(e.A) == std::signbit(f.A) && std::signbit(e.B) == std::signbit(f.B))
       return e.value;
   Entry& e = cache[next];
   next ^= 1;
@@ -90,7 +89,10 @@ bool quadratic_roots(long double alpha, long double beta, long double k, long do
   if (disc < 0) return false;
   const long double sq = std::sqrt(disc);
   const long double qq = -0.5L * (beta + (beta >= 0 ? sq : -sq));
-  if (qq == 0) { r1 = r2 = 0; return true; }
+  if (qq == 0) {
+    r1 = r2 = 0;
+    return true;
+  }
   r1 = qq / alpha;
   r2 = k / qq;
   if (r1 > r2) std::swap(r1, r2);
@@ -117,7 +119,10 @@ SearchBounds search_bounds(const QuadraticPlusHarmonic& f, long double R, long d
     if (quadratic_roots(f.alpha, f.beta, f.gamma + R, r1, r2) && r2 > 0) shrink(std::max(r1, 0.0L), r2, b.ws, b.we);
     if (quadratic_roots(f.alpha, f.beta, f.gamma - R, r1, r2)) {
       const long double bound = std::max(r2, 0.0L) * (1 + 1e-9L) + 1e-6L;
-      if (bound < b.limit) { b.limit = bound; b.limit_is_bound = true; }
+      if (bound < b.limit) {
+        b.limit = bound;
+        b.limit_is_bound = true;
+      }
     } else {
       b.limit = std::min(b.limit, 1e-6L);  // lower bound positive everywhere: f >= 0 at once
       b.limit_is_bound = true;
@@ -126,7 +131,10 @@ SearchBounds search_bounds(const QuadraticPlusHarmonic& f, long double R, long d
     const long double s_neg = -(f.gamma + R) / f.beta;
     if (s_neg > 0) shrink(0, s_neg, b.ws, b.we);
     const long double bound = std::max((R - f.gamma) / f.beta, 0.0L) * (1 + 1e-9L) + 1e-6L;
-    if (bound < b.limit) { b.limit = bound; b.limit_is_bound = true; }
+    if (bound < b.limit) {
+      b.limit = bound;
+      b.limit_is_bound = true;
+    }
   } else if (f.beta < 0 || f.gamma + R < 0) {
     // U decreases (or is a negative constant): beyond its root there is no root of f.
     const long double s_neg = f.beta < 0 ? -(f.gamma + R) / f.beta : 0;

@@ -43,8 +43,8 @@ std::pair<long double, long double> recentred(const QuadraticPlusHarmonic& f, co
 
 /// The inflection phases of a coefficient set and \f$\sin, \cos\f$ there (one sincos call each).
 struct Inflections {
-  int n = 0;                        ///< how many (0 or 2)
-  double at[2] = {0, 0};            ///< the phases, ascending
+  int n = 0;                              ///< how many (0 or 2)
+  double at[2] = {0, 0};                  ///< the phases, ascending
   double sn[2] = {0, 0}, cs[2] = {0, 0};  ///< sine and cosine at them
 };
 
@@ -125,8 +125,7 @@ struct Recentring {
   /// directly (base = s0, c1 = beta, c0 = gamma) below kRecentreFrom; beyond, re-centred (base = 0,
   /// c1 = P1, c0 = P0), exactly (double-double) at the first far piece and every kRecentreEvery
   /// pieces, in between carried over from the previous piece (carry()).
-  void coefficients(const QuadraticPlusHarmonic& f, const Instant& cursor, long double s0, long double& base, long double& c1,
-                    long double& c0) {
+  void coefficients(const QuadraticPlusHarmonic& f, const Instant& cursor, long double s0, long double& base, long double& c1, long double& c0) {
     base = s0;
     c1 = f.beta + f.beta_tail;
     c0 = f.gamma;
@@ -163,10 +162,14 @@ constexpr double kRotate = 0.25;
 inline void small_sincos(double h, double& sn, double& cm1) {
   const double h2 = h * h;
   sn = h + h * h2 *
-               (-1.0 / 6 + h2 * (1.0 / 120 + h2 * (-1.0 / 5040 + h2 * (1.0 / 362880 + h2 * (-1.0 / 39916800 +
-                h2 * (1.0 / 6227020800 + h2 * (-1.0 / 1307674368000)))))));
-  cm1 = h2 * (-0.5 + h2 * (1.0 / 24 + h2 * (-1.0 / 720 + h2 * (1.0 / 40320 + h2 * (-1.0 / 3628800 +
-              h2 * (1.0 / 479001600 + h2 * (-1.0 / 87178291200 + h2 * (1.0 / 20922789888000))))))));
+               (-1.0 / 6 +
+                h2 * (1.0 / 120 +
+                      h2 * (-1.0 / 5040 + h2 * (1.0 / 362880 + h2 * (-1.0 / 39916800 + h2 * (1.0 / 6227020800 + h2 * (-1.0 / 1307674368000)))))));
+  cm1 = h2 *
+        (-0.5 +
+         h2 * (1.0 / 24 +
+               h2 * (-1.0 / 720 +
+                     h2 * (1.0 / 40320 + h2 * (-1.0 / 3628800 + h2 * (1.0 / 479001600 + h2 * (-1.0 / 87178291200 + h2 * (1.0 / 20922789888000))))))));
 }
 
 /// The harmonic part \f$H = A\sin\varphi + B\cos\varphi\f$ and its derivative
@@ -197,10 +200,10 @@ class PieceFunction {
   PieceFunction(const QuadraticPlusHarmonic& f, double phi0) : f_(f), phi0_(phi0) {}
 
   const QuadraticPlusHarmonic& f_;
-  double phi0_;           ///< phase of the piece's start
-  long double base = 0;   ///< s at the piece's start, or 0 when re-centred
-  long double c1 = 0;     ///< linear coefficient (beta, or P1)
-  long double c0 = 0;     ///< constant (gamma, or P0)
+  double phi0_;          ///< phase of the piece's start
+  long double base = 0;  ///< s at the piece's start, or 0 when re-centred
+  long double c1 = 0;    ///< linear coefficient (beta, or P1)
+  long double c0 = 0;    ///< constant (gamma, or P0)
 
   long double poly(double u) const {
     const long double s = base + u;
@@ -277,16 +280,16 @@ struct PieceEnd {
 /// Where the scan of the pieces stands: the start of the next piece, and what is known of f there
 /// besides a direct evaluation.
 struct Cursor {
-  Instant t;                   ///< the instant
-  long double s = 0;           ///< elapsed time from the origin
+  Instant t;          ///< the instant
+  long double s = 0;  ///< elapsed time from the origin
   /// f at the cursor as the rest region left it (RestStart::left_value; -1 for "negative"), known
   /// better than a direct evaluation there would give it.
   bool has_left_value = false;
-  long double left_value = 0;  ///< (has_left_value) that value
-  PieceEnd carried;            ///< f there from the end of the previous piece, when the scan goes on from it
+  long double left_value = 0;        ///< (has_left_value) that value
+  PieceEnd carried;                  ///< f there from the end of the previous piece, when the scan goes on from it
   bool falling_first_piece = false;  ///< the piece from here falls (RestStart::falling): skipped unevaluated
-  bool trig = false;           ///< the sine and cosine of the cursor's phase are known:
-  double sn = 0, cs = 0;       ///< (trig) they
+  bool trig = false;                 ///< the sine and cosine of the cursor's phase are known:
+  double sn = 0, cs = 0;             ///< (trig) they
 
   /// At the origin, with its sine and cosine when the caller gave them.
   static Cursor at_origin(const QuadraticPlusHarmonic& f) {

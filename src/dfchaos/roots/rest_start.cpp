@@ -39,13 +39,11 @@ RestStart rest_start(const QuadraticPlusHarmonic& f, long double R, long double 
     const double Pd = f.A * sd + f.B * cd, Qd = f.A * cd - f.B * sd;
     const double c1d = static_cast<double>(f.beta + f.beta_tail) + Qd, c2d = 2 * al - Pd;
     const double scale = Rd + 2 * al;
-    if (!f.origin_at_inflection && c1d <= static_cast<double>(tiny1) &&
-        -c2d > std::fabs(Qd) * 1e-3 + 0.5e-6 * Rd + 1e-12 * scale && limit >= 1e-3L)
+    if (!f.origin_at_inflection && c1d <= static_cast<double>(tiny1) && -c2d > std::fabs(Qd) * 1e-3 + 0.5e-6 * Rd + 1e-12 * scale && limit >= 1e-3L)
       return {RestStart::Resume, {}, -1.0L, true};
   }
   taylor(sd, cd);
-  if (std::fabs(c2) < 1e-9L * (R + 2 * std::fabs(f.alpha)))
-    taylor(std::sin(static_cast<long double>(phi)), std::cos(static_cast<long double>(phi)));
+  if (std::fabs(c2) < 1e-9L * (R + 2 * std::fabs(f.alpha))) taylor(std::sin(static_cast<long double>(phi)), std::cos(static_cast<long double>(phi)));
   if (c1 > 0 || (c1 == 0 && (c2 > 0 || (c2 == 0 && c3 > 0)))) {
     // f rises at once: the root is the origin itself (the motion never leaves the contact, e.g.
     // a start at rest at or beyond t3, where F >= 0).

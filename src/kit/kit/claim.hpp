@@ -96,8 +96,8 @@ class Claim {
   /// The verdict as the report words it: verdict_name(), except that an erratum that holds is
   /// "refutes" (the paper's statement is refuted).
   const char* report_verdict() const;
-  Verdict verdict() const { return verdict_; }                 ///< the verdict
-  bool expected() const { return expected_; }                  ///< asserted by the experiment
+  Verdict verdict() const { return verdict_; }  ///< the verdict
+  bool expected() const { return expected_; }   ///< asserted by the experiment
   /// The claim as a JSON object (id, reference, statement, origin, evidence_kind, parameters,
   /// evidence, verdict, expected_to_hold).
   Json to_json() const;

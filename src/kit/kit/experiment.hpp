@@ -51,11 +51,11 @@ class Run {
  public:
   Run(const OptionValues& values, bool fast, const std::vector<struct OutputSpec>& outputs, Output& out)
       : values_(values), fast_(fast), outputs_(outputs), out(out) {}
-  bool fast() const { return fast_; }  ///< smoke mode (coarse grids, same code paths)
+  bool fast() const { return fast_; }                                             ///< smoke mode (coarse grids, same code paths)
   long long count(const std::string& name) const { return values_.count(name); }  ///< a Count option
   /// A Count option that must fit an int (all declared ranges do). @throws std::logic_error otherwise.
   int count_int(const std::string& name) const;
-  double real(const std::string& name) const { return values_.real(name); }     ///< a Real option
+  double real(const std::string& name) const { return values_.real(name); }                        ///< a Real option
   const std::vector<double>& reals(const std::string& name) const { return values_.reals(name); }  ///< a Reals option
   /// The data table `data/NAME[-PART].tsv`, with the description of its declaration.
   /// @throws std::logic_error if the part was not declared.
@@ -76,12 +76,12 @@ class Run {
 
 /// The declaration of an experiment.
 struct Experiment {
-  std::string title;                 ///< one line: what it checks
-  std::vector<std::string> paper;    ///< the paper items it checks, e.g. "Lemma 1", "Eq. (8)"
-  std::vector<std::string> tests;    ///< the test suites that cross-check the code it rests on
-  std::vector<OptionSpec> options;   ///< its options (--out and --fast are common to all)
-  std::vector<OutputSpec> outputs;   ///< its declared data and LaTeX outputs
-  std::function<void(Run&)> body;    ///< the computation
+  std::string title;                ///< one line: what it checks
+  std::vector<std::string> paper;   ///< the paper items it checks, e.g. "Lemma 1", "Eq. (8)"
+  std::vector<std::string> tests;   ///< the test suites that cross-check the code it rests on
+  std::vector<OptionSpec> options;  ///< its options (--out and --fast are common to all)
+  std::vector<OutputSpec> outputs;  ///< its declared data and LaTeX outputs
+  std::function<void(Run&)> body;   ///< the computation
 
   /// The whole command-line program: parses, runs, writes. Exit status: 0 every expected claim
   /// holds, 1 one fails (or a bounded computation gave up, or a write failed), 2 bad input.

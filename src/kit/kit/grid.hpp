@@ -22,8 +22,8 @@ class Axis {
   /// n values lo·ratio^{i/(n−1)} (the same as log(lo, lo·ratio, n), but with the ratio given).
   static Axis log_ratio(double lo, double ratio, int n);
 
-  int size() const { return n_; }   ///< number of values
-  double operator[](int i) const;   ///< the i-th value (0 <= i < size())
+  int size() const { return n_; }      ///< number of values
+  double operator[](int i) const;      ///< the i-th value (0 <= i < size())
   std::vector<double> values() const;  ///< all values, in order
 
  private:
@@ -35,17 +35,17 @@ class Axis {
 
 /// A cell of a two-dimensional grid; index = i·ny + j (first axis slowest).
 struct Cell2 {
-  int i = 0, j = 0;       ///< indices on the first and second axis
-  double x = 0, y = 0;    ///< the values
-  long long index = 0;    ///< the position in the deterministic order
+  int i = 0, j = 0;     ///< indices on the first and second axis
+  double x = 0, y = 0;  ///< the values
+  long long index = 0;  ///< the position in the deterministic order
 };
 
 /// Outcome of one cell of a sweep: the value, or the message of the exception it threw.
 template <class R>
 struct CellResult {
-  R value{};             ///< the result (default-constructed when failed)
-  bool failed = false;   ///< the cell threw
-  std::string error;     ///< its message
+  R value{};            ///< the result (default-constructed when failed)
+  bool failed = false;  ///< the cell threw
+  std::string error;    ///< its message
 };
 
 /// Progress of a long loop on stderr: a counter with an estimate of the time left, updated at most
@@ -55,7 +55,7 @@ class Progress {
   Progress(std::string label, long long total, bool always = false);
   ~Progress();
   void step(long long n = 1);  ///< n more items done
-  void done();                  ///< the final line
+  void done();                 ///< the final line
 
  private:
   std::string label_;
@@ -68,13 +68,11 @@ class Progress {
 /// the results in the deterministic order (index = i·ny + j), independent of the thread count.
 /// An exception in a cell is recorded in that cell; the sweep goes on.
 template <class R>
-std::vector<CellResult<R>> sweep(const Axis& x, const Axis& y, const std::function<R(const Cell2&)>& f,
-                                 const std::string& label = "sweep");
+std::vector<CellResult<R>> sweep(const Axis& x, const Axis& y, const std::function<R(const Cell2&)>& f, const std::string& label = "sweep");
 
 /// The same over a list of items (one dimension).
 template <class R, class T>
-std::vector<CellResult<R>> sweep_list(const std::vector<T>& items, const std::function<R(const T&)>& f,
-                                      const std::string& label = "sweep");
+std::vector<CellResult<R>> sweep_list(const std::vector<T>& items, const std::function<R(const T&)>& f, const std::string& label = "sweep");
 
 }  // namespace dfchaos::kit
 

@@ -39,8 +39,7 @@ std::vector<CellResult<R>> sweep(const Axis& x, const Axis& y, const std::functi
   std::vector<Cell2> cells;
   cells.reserve(static_cast<std::size_t>(x.size()) * static_cast<std::size_t>(y.size()));
   for (int i = 0; i < x.size(); ++i)
-    for (int j = 0; j < y.size(); ++j)
-      cells.push_back(Cell2{i, j, x[i], y[j], static_cast<long long>(i) * y.size() + j});
+    for (int j = 0; j < y.size(); ++j) cells.push_back(Cell2{i, j, x[i], y[j], static_cast<long long>(i) * y.size() + j});
   return sweep_list<R, Cell2>(cells, f, label);
 }
 

@@ -23,15 +23,15 @@ class Json {
   using Value = nlohmann::ordered_json;  ///< the value underneath
 
   Json() = default;
-  Json(bool b) : v_(b) {}                         ///< a boolean
-  Json(double d) : v_(d) {}                       ///< a number (non-finite: written as null)
-  Json(int i) : v_(static_cast<long long>(i)) {}  ///< an integer
-  Json(long i) : v_(static_cast<long long>(i)) {} ///< an integer
-  Json(long long i) : v_(i) {}                    ///< an integer
-  Json(const char* s) : v_(std::string(s)) {}     ///< a string
-  Json(std::string s) : v_(std::move(s)) {}       ///< a string
-  static Json array();                            ///< an empty array
-  static Json object();                           ///< an empty object
+  Json(bool b) : v_(b) {}                          ///< a boolean
+  Json(double d) : v_(d) {}                        ///< a number (non-finite: written as null)
+  Json(int i) : v_(static_cast<long long>(i)) {}   ///< an integer
+  Json(long i) : v_(static_cast<long long>(i)) {}  ///< an integer
+  Json(long long i) : v_(i) {}                     ///< an integer
+  Json(const char* s) : v_(std::string(s)) {}      ///< a string
+  Json(std::string s) : v_(std::move(s)) {}        ///< a string
+  static Json array();                             ///< an empty array
+  static Json object();                            ///< an empty object
   /// Sets a key of an object (insertion order is kept; an existing key is overwritten in place).
   /// @throws std::logic_error on a value that is not an object.
   Json& set(const std::string& key, Json value);

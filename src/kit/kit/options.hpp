@@ -23,25 +23,41 @@ enum class OptionType {
 
 /// One declared option `--name VALUE`. Build with count(), real() or reals() and chain the setters.
 struct OptionSpec {
-  std::string name;                 ///< the flag without dashes, e.g. "ba-min"
-  OptionType type = OptionType::Real;  ///< value type
-  std::string help;                 ///< what it is, in a few words
-  std::vector<double> value;        ///< the default (one element unless Reals)
-  double min = 0, max = 0;          ///< admissible range, inclusive
+  std::string name;                         ///< the flag without dashes, e.g. "ba-min"
+  OptionType type = OptionType::Real;       ///< value type
+  std::string help;                         ///< what it is, in a few words
+  std::vector<double> value;                ///< the default (one element unless Reals)
+  double min = 0, max = 0;                  ///< admissible range, inclusive
   std::optional<std::vector<double>> fast;  ///< the default in --fast mode (when not given explicitly)
-  std::string record;               ///< the key under which the value is recorded ("" : the name with '-' -> '_')
-  bool recorded = true;             ///< record the value as a run parameter
+  std::string record;                       ///< the key under which the value is recorded ("" : the name with '-' -> '_')
+  bool recorded = true;                     ///< record the value as a run parameter
 
   /// Admissible range [lo, hi] (inclusive).
-  OptionSpec& range(double lo, double hi) { min = lo; max = hi; return *this; }
+  OptionSpec& range(double lo, double hi) {
+    min = lo;
+    max = hi;
+    return *this;
+  }
   /// The default in --fast mode.
-  OptionSpec& fast_value(double v) { fast = std::vector<double>{v}; return *this; }
+  OptionSpec& fast_value(double v) {
+    fast = std::vector<double>{v};
+    return *this;
+  }
   /// The default list in --fast mode (Reals).
-  OptionSpec& fast_values(std::vector<double> v) { fast = std::move(v); return *this; }
+  OptionSpec& fast_values(std::vector<double> v) {
+    fast = std::move(v);
+    return *this;
+  }
   /// Records the value under another key (e.g. "q_over_a" for --q).
-  OptionSpec& recorded_as(std::string key) { record = std::move(key); return *this; }
+  OptionSpec& recorded_as(std::string key) {
+    record = std::move(key);
+    return *this;
+  }
   /// Does not record the value as a run parameter (the experiment records what it derives).
-  OptionSpec& unrecorded() { recorded = false; return *this; }
+  OptionSpec& unrecorded() {
+    recorded = false;
+    return *this;
+  }
 
   /// The condition the value must satisfy, as printed in errors and help ("2 <= nq <= 100000").
   std::string condition() const;

@@ -88,8 +88,8 @@ void apply_process_budget(const std::string& program, const ProcessBudget& b) {
   if (::getrlimit(RLIMIT_AS, &lim) == 0) {
     const rlim_t want = static_cast<rlim_t>(b.gib * 1073741824.0);
     if (lim.rlim_cur != RLIM_INFINITY && lim.rlim_cur < want) {
-      g_memory_text = "the address-space limit of " + shortest(static_cast<double>(lim.rlim_cur) / 1073741824.0) +
-                      " GiB set outside dfchaos (ulimit -v) ran out";
+      g_memory_text =
+          "the address-space limit of " + shortest(static_cast<double>(lim.rlim_cur) / 1073741824.0) + " GiB set outside dfchaos (ulimit -v) ran out";
     } else if (memory_budget_applies()) {
       lim.rlim_cur = want;
       ::setrlimit(RLIMIT_AS, &lim);
@@ -109,7 +109,8 @@ std::string memory_budget_line() { return g_memory_text; }
 
 void exit_for_memory_budget() {
   static const char kFallback[] = "gave up: out of memory\n";
-  const ssize_t w = g_memory_length > 0 ? ::write(STDERR_FILENO, g_memory_line, g_memory_length) : ::write(STDERR_FILENO, kFallback, sizeof kFallback - 1);
+  const ssize_t w =
+      g_memory_length > 0 ? ::write(STDERR_FILENO, g_memory_line, g_memory_length) : ::write(STDERR_FILENO, kFallback, sizeof kFallback - 1);
   (void)w;
   remove_guarded_temporaries();
   ::_exit(1);

@@ -49,9 +49,7 @@ Claim& Claim::erratum() {
   origin_ = Origin::Erratum;
   return *this;
 }
-const char* Claim::report_verdict() const {
-  return origin_ == Origin::Erratum && verdict_ == Verdict::Holds ? "refutes" : verdict_name(verdict_);
-}
+const char* Claim::report_verdict() const { return origin_ == Origin::Erratum && verdict_ == Verdict::Holds ? "refutes" : verdict_name(verdict_); }
 Claim& Claim::not_expected() {
   expected_ = false;
   return *this;

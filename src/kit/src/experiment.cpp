@@ -23,9 +23,7 @@ bool OutputSpec::matches(const std::string& k, const std::string& p) const {
 
 OutputSpec data(std::string part, std::string description) { return OutputSpec{"data", std::move(part), std::move(description)}; }
 OutputSpec latex(std::string file, std::string description) { return OutputSpec{"latex", std::move(file), std::move(description)}; }
-OutputSpec certificate(std::string file, std::string description) {
-  return OutputSpec{"certificate", std::move(file), std::move(description)};
-}
+OutputSpec certificate(std::string file, std::string description) { return OutputSpec{"certificate", std::move(file), std::move(description)}; }
 
 int Run::count_int(const std::string& name) const {
   const long long v = values_.count(name);
@@ -96,15 +94,18 @@ int Experiment::run_main(const std::string& name, int argc, char** argv) const {
     std::string help = s.help + " [default ";
     auto show = [&](const std::vector<double>& v) {
       std::string t;
-      for (double x : v) t += (t.empty() ? "" : " ") + (s.type == OptionType::Count ? std::to_string(static_cast<long long>(x)) : format_significant(x, 6));
+      for (double x : v)
+        t += (t.empty() ? "" : " ") + (s.type == OptionType::Count ? std::to_string(static_cast<long long>(x)) : format_significant(x, 6));
       return t;
     };
     help += show(s.value) + "; " + s.condition();
     if (s.fast) help += "; with --fast " + show(*s.fast);
     help += "]";
     CLI::Option* opt = app.add_option("--" + s.name, raw[k], help);
-    if (s.type == OptionType::Reals) opt->expected(1, -1)->type_name("FLOAT ...");
-    else opt->expected(1)->type_name(s.type == OptionType::Count ? "INT" : "FLOAT");
+    if (s.type == OptionType::Reals)
+      opt->expected(1, -1)->type_name("FLOAT ...");
+    else
+      opt->expected(1)->type_name(s.type == OptionType::Count ? "INT" : "FLOAT");
     handles.push_back(opt);
   }
   // An empty value would be read as 0 by a number parser: refuse it whatever the option.
@@ -135,8 +136,10 @@ int Experiment::run_main(const std::string& name, int argc, char** argv) const {
     out.parameter("mode", fast ? "fast" : "full");
     for (const auto& s : options) {
       if (!s.recorded) continue;
-      if (s.type == OptionType::Count) out.parameter(s.record_key(), std::to_string(values.count(s.name)));
-      else if (s.type == OptionType::Real) out.parameter(s.record_key(), values.real(s.name));
+      if (s.type == OptionType::Count)
+        out.parameter(s.record_key(), std::to_string(values.count(s.name)));
+      else if (s.type == OptionType::Real)
+        out.parameter(s.record_key(), values.real(s.name));
       else {
         std::string t;
         for (double x : values.reals(s.name)) t += (t.empty() ? "" : " ") + format_double(x);

@@ -34,7 +34,13 @@ std::string latex_escape(const std::string& text) {
       case '<': out += "$<$"; break;
       case '>': out += "$>$"; break;
       case '|': out += "$|$"; break;
-      case '&': case '%': case '$': case '#': case '_': case '{': case '}':
+      case '&':
+      case '%':
+      case '$':
+      case '#':
+      case '_':
+      case '{':
+      case '}':
         out += '\\';
         out += ch;
         break;

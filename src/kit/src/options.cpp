@@ -40,7 +40,9 @@ Json OptionSpec::to_json() const {
   j.set("default", type == OptionType::Reals ? list(value) : (type == OptionType::Count ? Json(static_cast<long long>(value[0])) : Json(value[0])));
   j.set("min", type == OptionType::Count ? Json(static_cast<long long>(min)) : Json(min));
   j.set("max", type == OptionType::Count ? Json(static_cast<long long>(max)) : Json(max));
-  if (fast) j.set("fast", type == OptionType::Reals ? list(*fast) : (type == OptionType::Count ? Json(static_cast<long long>((*fast)[0])) : Json((*fast)[0])));
+  if (fast)
+    j.set("fast",
+          type == OptionType::Reals ? list(*fast) : (type == OptionType::Count ? Json(static_cast<long long>((*fast)[0])) : Json((*fast)[0])));
   j.set("condition", condition());
   return j;
 }
@@ -94,9 +96,7 @@ const OptionValues::Entry& OptionValues::find(const std::string& name, OptionTyp
   throw std::logic_error("option --" + name + " is not declared");
 }
 
-long long OptionValues::count(const std::string& name) const {
-  return static_cast<long long>(find(name, OptionType::Count).value[0]);
-}
+long long OptionValues::count(const std::string& name) const { return static_cast<long long>(find(name, OptionType::Count).value[0]); }
 double OptionValues::real(const std::string& name) const { return find(name, OptionType::Real).value[0]; }
 const std::vector<double>& OptionValues::reals(const std::string& name) const { return find(name, OptionType::Reals).value; }
 bool OptionValues::given(const std::string& name) const {

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "kit/provenance.hpp"
 
+#include <gsl/gsl_version.h>
 #include <CLI/Version.hpp>
 #include <Eigen/Core>
-#include <gsl/gsl_version.h>
 
 #include <nlohmann/json.hpp>
 

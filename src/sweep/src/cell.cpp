@@ -12,9 +12,9 @@
 #include "dfchaos/errors.hpp"
 #include "dfchaos/map_derivative.hpp"
 #include "dfchaos/next_hit.hpp"
+#include "dfchaos/orbit.hpp"
 #include "dfchaos/parameters.hpp"
 #include "dfchaos/phase.hpp"
-#include "dfchaos/orbit.hpp"
 #include "dfchaos/superstable.hpp"
 
 namespace dfchaos::sweep {
@@ -81,8 +81,7 @@ std::optional<CertifiedStep> certified_step_of(const std::string& step) {
 
 std::string certified_step_legend() {
   std::string s;
-  for (CertifiedStep c : kAllCertifiedSteps)
-    s += (s.empty() ? "" : " | ") + std::to_string(static_cast<int>(c)) + " " + certified_step_name(c);
+  for (CertifiedStep c : kAllCertifiedSteps) s += (s.empty() ? "" : " | ") + std::to_string(static_cast<int>(c)) + " " + certified_step_name(c);
   return s;
 }
 
@@ -122,8 +121,7 @@ CellValues evaluate_cell(const Spec& spec, long long index) {
     v.status = CellStatus::Inadmissible;
     return v;
   }
-  if (obs.has(Observable::Covering))
-    guarded(v, "covering", [&] { v.covering = plane_covering(p, spec.covering_max_branches).holds ? 1 : 0; });
+  if (obs.has(Observable::Covering)) guarded(v, "covering", [&] { v.covering = plane_covering(p, spec.covering_max_branches).holds ? 1 : 0; });
   if (obs.has(Observable::Superstable))
     guarded(v, "superstable", [&] {
       const PlaneSuperstable s = plane_superstable(p, static_cast<int>(spec.superstable_scan));
@@ -157,18 +155,23 @@ CellValues evaluate_cell(const Spec& spec, long long index) {
 }
 
 std::string format_row(const Spec& spec, const CellValues& v) {
-  std::string row = std::to_string(v.index) + '\t' + format_double(v.q_over_a) + '\t' + format_double(v.b_over_a) + '\t' +
-                    status_name(v.status);
+  std::string row = std::to_string(v.index) + '\t' + format_double(v.q_over_a) + '\t' + format_double(v.b_over_a) + '\t' + status_name(v.status);
   auto add = [&row](double x) { row += '\t' + format_double(x); };
   for (Observable o : kAllObservables) {
     if (!spec.observables.has(o)) continue;
     switch (o) {
       case Observable::Covering: add(v.covering); break;
-      case Observable::Superstable: add(v.superstable); add(v.epsilon); break;
+      case Observable::Superstable:
+        add(v.superstable);
+        add(v.epsilon);
+        break;
       case Observable::Lyapunov: add(v.lyapunov); break;
       case Observable::Rate: add(v.rate); break;
       case Observable::Period: add(v.period); break;
-      case Observable::Certified: add(v.certified); add(v.certified_step); break;
+      case Observable::Certified:
+        add(v.certified);
+        add(v.certified_step);
+        break;
     }
   }
   row += '\t' + one_field(v.error) + '\n';

@@ -12,8 +12,8 @@
 #include <stdexcept>
 
 #include "dfchaos/errors.hpp"
-#include "kit/output.hpp"
 #include "kit/digest.hpp"
+#include "kit/output.hpp"
 #include "sweep/header.hpp"
 #include "sweep/seal.hpp"
 #include "sweep/stream.hpp"
@@ -63,8 +63,9 @@ Checkpoint::Checkpoint(const fs::path& file, std::string header, const Shard& sh
   if (fresh || !fs::exists(header_path, ec)) {
     write_file_atomically(header_path, header_, kOption);
   } else if (read_file(kOption, header_path) != header_) {
-    throw InvalidParameter(kOption, dir_.string() + " holds an interrupted run of another spec, build or shard; "
-                                                    "rerun that command, or remove the directory to start afresh");
+    throw InvalidParameter(kOption, dir_.string() +
+                                        " holds an interrupted run of another spec, build or shard; "
+                                        "rerun that command, or remove the directory to start afresh");
   }
   long long seen = 0;
   for (const auto& entry : fs::directory_iterator(dir_, ec)) {
@@ -118,7 +119,8 @@ std::string Checkpoint::read_chunk(const fs::path& path, const Interval& c) cons
     throw InvalidParameter(kOption, path.string() + " is a chunk of another run (its header differs: spec, build or shard)" + advice);
   const std::string rows(body.substr(header_.size()));
   if (seal.rows != c.size())
-    throw InvalidParameter(kOption, path.string() + " is damaged (its seal counts " + std::to_string(seal.rows) + " rows, its name " + std::to_string(c.size()) + ")" + advice);
+    throw InvalidParameter(kOption, path.string() + " is damaged (its seal counts " + std::to_string(seal.rows) + " rows, its name " +
+                                        std::to_string(c.size()) + ")" + advice);
   std::istringstream in(rows);
   try {
     check_rows(kOption, path.string(), in, shard_, c.begin, c.size(), columns_);

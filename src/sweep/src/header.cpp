@@ -31,8 +31,8 @@ std::string header_text(const Spec& spec, const std::optional<Shard>& shard) {
   for (const auto& line : spec.header_lines()) h += "# " + line + "\n";
   if (shard) {
     h += std::string(kShardPrefix) + shard->canonical() + "  (the cells with index mod " + std::to_string(shard->count) + " = " +
-         std::to_string(shard->index) + ": " + std::to_string(shard->size(spec.cells())) + " of " +
-         std::to_string(spec.cells()) + "; dfchaos sweep-merge joins the shards)\n";
+         std::to_string(shard->index) + ": " + std::to_string(shard->size(spec.cells())) + " of " + std::to_string(spec.cells()) +
+         "; dfchaos sweep-merge joins the shards)\n";
   }
   h += join_tabs(spec.columns()) + "\n";
   return h;
@@ -46,7 +46,8 @@ ParsedHeader read_header(const std::string& option, const std::string& file, std
     if (!std::getline(in, line) || in.eof())  // the column line must end in '\n' too
       throw InvalidParameter(option, file + " ends inside its header (not a complete sweep output)");
     if (n == 0) {
-      if (line != kTitleLine) throw InvalidParameter(option, file + " is not a sweep output (its first line is not '" + std::string(kTitleLine) + "')");
+      if (line != kTitleLine)
+        throw InvalidParameter(option, file + " is not a sweep output (its first line is not '" + std::string(kTitleLine) + "')");
       titled = true;
     }
     if (starts_with(line, kShardPrefix)) {
@@ -71,8 +72,7 @@ ParsedHeader read_header(const std::string& option, const std::string& file, std
         if (tab == std::string::npos) break;
         at = tab + 1;
       }
-      if (h.columns.size() < 5 || h.columns[1] != "q_over_a" || h.columns[2] != "b_over_a" || h.columns[3] != "status" ||
-          h.columns.back() != "error")
+      if (h.columns.size() < 5 || h.columns[1] != "q_over_a" || h.columns[2] != "b_over_a" || h.columns[3] != "status" || h.columns.back() != "error")
         throw InvalidParameter(option, file + ": malformed column line (index, q_over_a, b_over_a, status, ..., error expected)");
       if (h.shard && h.shard->count > h.cells) throw InvalidParameter(option, file + ": more shards than cells");
       return h;
@@ -113,27 +113,27 @@ std::string row_problem(std::string_view row, long long index, const std::vector
     if (!canonical_number(f[k], x)) return columns[k] + " is not a number as the sweep writes it";
     const std::string& c = columns[k];
     if ((c == "covering" || c == "superstable" || c == "certified") && !(x == 0 || x == 1 || std::isnan(x))) return c + " is not 0, 1 or nan";
-    if (c == "certified_step" && !std::isnan(x) &&
-        !(x >= 0 && x == std::floor(x) && x <= static_cast<int>(std::size(kAllCertifiedSteps)) - 1))
+    if (c == "certified_step" && !std::isnan(x) && !(x >= 0 && x == std::floor(x) && x <= static_cast<int>(std::size(kAllCertifiedSteps)) - 1))
       return "certified_step is not a step code";
     if (c == "period" && !std::isnan(x) && !(x >= 0 && x == std::floor(x) && x <= 1e18)) return "period is not a count";
     if (status == "inadmissible" && !std::isnan(x)) return c + " is not nan in an inadmissible cell";
   }
   const std::string_view error = f.back();
-  if ((status == "error") == (error == "-" || error.empty())) return status == "error" ? "an error cell without its message" : "an error message in a cell that is not in error";
+  if ((status == "error") == (error == "-" || error.empty()))
+    return status == "error" ? "an error cell without its message" : "an error message in a cell that is not in error";
   return "";
 }
 
-void check_rows(const std::string& option, const std::string& what, std::istream& in, const Shard& shard, long long first,
-                long long count, const std::vector<std::string>& columns, Sealer* rows_seen) {
+void check_rows(const std::string& option, const std::string& what, std::istream& in, const Shard& shard, long long first, long long count,
+                const std::vector<std::string>& columns, Sealer* rows_seen) {
   std::string row;
   for (long long p = first; p < first + count; ++p) {
     if (!std::getline(in, row) || in.eof())  // every row ends in '\n'
       throw InvalidParameter(option, what + " has " + std::to_string(p - first) + " of its " + std::to_string(count) + " rows (incomplete)");
     const std::string problem = row_problem(row, shard.cell(p), columns);
     if (!problem.empty())
-      throw InvalidParameter(option, what + ": row " + std::to_string(p - first + 1) + " is not a valid row of cell " + std::to_string(shard.cell(p)) +
-                                         " (" + problem + ")");
+      throw InvalidParameter(option, what + ": row " + std::to_string(p - first + 1) + " is not a valid row of cell " +
+                                         std::to_string(shard.cell(p)) + " (" + problem + ")");
     if (rows_seen) {
       row += '\n';
       rows_seen->add(row, 1);
@@ -150,8 +150,8 @@ CheckedFile check_sweep_file(const std::string& option, const std::string& file,
   const Shard shard = c.header.shard.value_or(Shard{});
   const long long rows = shard.size(c.header.cells);
   if (sealed.seal.rows != rows)
-    throw InvalidParameter(option, file + " is damaged (its seal counts " + std::to_string(sealed.seal.rows) + " rows, shard " +
-                                       shard.canonical() + " of " + std::to_string(c.header.cells) + " cells has " + std::to_string(rows) + ")");
+    throw InvalidParameter(option, file + " is damaged (its seal counts " + std::to_string(sealed.seal.rows) + " rows, shard " + shard.canonical() +
+                                       " of " + std::to_string(c.header.cells) + " cells has " + std::to_string(rows) + ")");
   check_rows(option, file, in, shard, 0, rows, c.header.columns);
   if (static_cast<std::uintmax_t>(in.tellg()) != sealed.body_bytes)
     throw InvalidParameter(option, file + " has more rows than the " + std::to_string(rows) + " of shard " + shard.canonical());

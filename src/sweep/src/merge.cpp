@@ -68,7 +68,9 @@ void merge_shards(const std::vector<std::string>& files, Stream& out) {
                                           headers[0].shard->canonical() + " (mixed shard counts)");
     if (by_shard.empty()) by_shard.assign(static_cast<std::size_t>(h.shard->count), -1);
     auto& slot = by_shard[static_cast<std::size_t>(h.shard->index)];
-    if (slot >= 0) throw InvalidParameter(kOption, "shard " + h.shard->canonical() + " given twice (" + files[static_cast<std::size_t>(slot)] + " and " + files[f] + ")");
+    if (slot >= 0)
+      throw InvalidParameter(kOption,
+                             "shard " + h.shard->canonical() + " given twice (" + files[static_cast<std::size_t>(slot)] + " and " + files[f] + ")");
     slot = static_cast<long long>(f);
   }
   for (std::size_t s = 0; s < by_shard.size(); ++s)

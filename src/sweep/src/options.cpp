@@ -18,16 +18,27 @@ long long count(const std::string& name, const std::string& text, long long lo, 
 }  // namespace
 
 void SweepArguments::add_to(CLI::App* app) {
-  app->add_option("--a", a, "forcing amplitude, " + format_double(kMinA) + " <= a <= " + format_double(kMaxA) + " (default 1; only q/a and b/a matter)")->type_name("FLOAT");
+  app->add_option("--a", a,
+                  "forcing amplitude, " + format_double(kMinA) + " <= a <= " + format_double(kMaxA) + " (default 1; only q/a and b/a matter)")
+      ->type_name("FLOAT");
   app->add_option("--q-range", q_range, "q/a axis lo:hi:n[:lin|log|mid] (every q/a > 0)")->required()->type_name("LO:HI:N[:KIND]");
-  app->add_option("--b-range", b_range, "b/a axis lo:hi:n[:lin|log|mid] (every b/a in [" + format_double(kMinMapRatio) + ", 1/2))")->required()->type_name("LO:HI:N[:KIND]");
-  app->add_option("--observables", observables, "comma-separated: covering,superstable,lyapunov,rate,period,certified\n"
-                  "(default " + std::string(kDefaultObservables) + ": all but certified, a proof per cell of about 5-40 ms)")->type_name("LIST");
-  app->add_option("--max-branches", max_branches, "covering's work budget per cell: a cell whose [t2, 3pi/2] holds more branches of T1\n"
-                  "(about 0.16 a/b) is an error cell naming it (certified: more than N/" + std::to_string(kDenseCostFactor) + "), 1.." + std::to_string(kMaxCoveringBranches) + " (default " + std::to_string(kDefaultMaxCoveringBranches) + ")")
+  app->add_option("--b-range", b_range, "b/a axis lo:hi:n[:lin|log|mid] (every b/a in [" + format_double(kMinMapRatio) + ", 1/2))")
+      ->required()
+      ->type_name("LO:HI:N[:KIND]");
+  app->add_option("--observables", observables,
+                  "comma-separated: covering,superstable,lyapunov,rate,period,certified\n"
+                  "(default " +
+                      std::string(kDefaultObservables) + ": all but certified, a proof per cell of about 5-40 ms)")
+      ->type_name("LIST");
+  app->add_option("--max-branches", max_branches,
+                  "covering's work budget per cell: a cell whose [t2, 3pi/2] holds more branches of T1\n"
+                  "(about 0.16 a/b) is an error cell naming it (certified: more than N/" +
+                      std::to_string(kDenseCostFactor) + "), 1.." + std::to_string(kMaxCoveringBranches) + " (default " +
+                      std::to_string(kDefaultMaxCoveringBranches) + ")")
       ->type_name("N");
-  app->add_option("--superstable-scan", superstable_scan, "scan of superstable_check, " + std::to_string(kMinSuperstableScan) + ".." +
-                                                              std::to_string(kMaxSuperstableScan) + " (default 400)")->type_name("N");
+  app->add_option("--superstable-scan", superstable_scan,
+                  "scan of superstable_check, " + std::to_string(kMinSuperstableScan) + ".." + std::to_string(kMaxSuperstableScan) + " (default 400)")
+      ->type_name("N");
   app->add_option("--theta0", theta0, "orbit start as a fraction f in [0, 1): theta_0 = t2 + f (t3 - t2) (default 0.5)")->type_name("F");
   app->add_option("--transient", transient, "orbit steps discarded, 0.." + std::to_string(kMaxTransient) + " (default 1000)")->type_name("N");
   app->add_option("--steps", steps, "orbit steps averaged, 1.." + std::to_string(kMaxSteps) + " (default 1000)")->type_name("N");
@@ -38,8 +49,9 @@ void SweepArguments::add_to(CLI::App* app) {
   auto* r = app->add_option("--resume", resume, "write to FILE, keeping finished chunks in FILE.chunks/; rerun to continue an interrupted run")
                 ->type_name("FILE");
   o->excludes(r);
-  app->add_option("--chunk", chunk, "cells per chunk (the unit of --resume), 1.." + std::to_string(kMaxChunk) + " (default " +
-                                        std::to_string(kDefaultChunk) + ")")->type_name("N");
+  app->add_option("--chunk", chunk,
+                  "cells per chunk (the unit of --resume), 1.." + std::to_string(kMaxChunk) + " (default " + std::to_string(kDefaultChunk) + ")")
+      ->type_name("N");
   app->add_option("--max-chunks", max_chunks, "with --resume: stop after N new chunks, exit status 3 (0: no limit)")->type_name("N");
   app->add_flag("--progress", progress, "progress on stderr even when it is not a terminal");
   app->footer(
@@ -55,7 +67,9 @@ void SweepArguments::add_to(CLI::App* app) {
       "  period       smallest k <= period-max with |T^k(e) - e| <= period-tol, e = T^(transient+steps)(theta_0); 0 if none\n"
       "  certified    Lemma 4 proved in ball arithmetic (Arb) at the cell's double parameters (1) or not proved (0):\n"
       "               a proof at that point, not over the cell (as 'dfchaos certify covering'); then certified_step,\n"
-      "               the code of the step not proved: " + certified_step_legend() + "\n"
+      "               the code of the step not proved: " +
+      certified_step_legend() +
+      "\n"
       "  error        'observable: message' for each observable that threw, '-' if none\n"
       "The last line is the seal '# end: N rows, sha256 HEX (of every byte above this line)': sweep-merge and --resume\n"
       "refuse a file without it (cut short) or whose bytes or rows do not match it (damaged). --out follows a symlink and\n"

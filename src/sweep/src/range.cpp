@@ -37,8 +37,7 @@ Range Range::parse(const std::string& option, const std::string& text) {
   constexpr std::size_t kMaxParts = 4;
   const auto parts = split(text, kMaxParts);
   const std::string form = "write lo:hi:n or lo:hi:n:lin|log|mid";
-  if (parts.size() < 3 || parts.size() > kMaxParts)
-    throw InvalidParameter(option, form + " (got '" + text + "')");
+  if (parts.size() < 3 || parts.size() > kMaxParts) throw InvalidParameter(option, form + " (got '" + text + "')");
   Range r;
   r.lo_ = kit::parse_number(option + " lo", parts[0], false);
   r.hi_ = kit::parse_number(option + " hi", parts[1], false);
@@ -47,10 +46,14 @@ Range Range::parse(const std::string& option, const std::string& text) {
     throw InvalidParameter(option + " n", "1 <= n <= " + format_double(static_cast<double>(kMaxAxisPoints)), n);
   r.n_ = static_cast<long long>(n);
   if (parts.size() == kMaxParts) {
-    if (parts[3] == "lin") r.spacing_ = Spacing::Linear;
-    else if (parts[3] == "log") r.spacing_ = Spacing::Log;
-    else if (parts[3] == "mid") r.spacing_ = Spacing::Mid;
-    else throw InvalidParameter(option, "the spacing must be lin, log or mid (got '" + parts[3] + "')");
+    if (parts[3] == "lin")
+      r.spacing_ = Spacing::Linear;
+    else if (parts[3] == "log")
+      r.spacing_ = Spacing::Log;
+    else if (parts[3] == "mid")
+      r.spacing_ = Spacing::Mid;
+    else
+      throw InvalidParameter(option, "the spacing must be lin, log or mid (got '" + parts[3] + "')");
   }
   const bool single = r.n_ == 1 && r.spacing_ != Spacing::Mid;
   if (single && r.lo_ != r.hi_)
@@ -58,10 +61,14 @@ Range Range::parse(const std::string& option, const std::string& text) {
   if (!single && !(r.lo_ < r.hi_)) throw InvalidParameter(option, "lo < hi (got " + r.canonical() + ")");
   if (r.spacing_ == Spacing::Log && !(r.lo_ > 0)) throw InvalidParameter(option, "a log range needs lo > 0 (got " + r.canonical() + ")");
   const int ni = static_cast<int>(r.n_);
-  if (single) r.axis_ = kit::Axis::centres(r.lo_, r.lo_, 1);  // the single value lo, exactly
-  else if (r.spacing_ == Spacing::Linear) r.axis_ = kit::Axis::linear(r.lo_, r.hi_, ni);
-  else if (r.spacing_ == Spacing::Log) r.axis_ = kit::Axis::log(r.lo_, r.hi_, ni);
-  else r.axis_ = kit::Axis::centres(r.lo_, r.hi_, ni);
+  if (single)
+    r.axis_ = kit::Axis::centres(r.lo_, r.lo_, 1);  // the single value lo, exactly
+  else if (r.spacing_ == Spacing::Linear)
+    r.axis_ = kit::Axis::linear(r.lo_, r.hi_, ni);
+  else if (r.spacing_ == Spacing::Log)
+    r.axis_ = kit::Axis::log(r.lo_, r.hi_, ni);
+  else
+    r.axis_ = kit::Axis::centres(r.lo_, r.hi_, ni);
   for (long long i = 0; i < r.n_; ++i)  // rounding (e.g. of pow) must not leave a non-finite point
     if (!std::isfinite(r[i])) throw InvalidParameter(option, "every point must be finite (got " + r.canonical() + ")");
   return r;

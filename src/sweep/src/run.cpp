@@ -40,8 +40,9 @@ Run::Run(RunOptions options) : o_(std::move(options)) {
     throw InvalidParameter("shard", "0 <= i < N <= cells (got " + shard_.canonical() + ")");
   positions_ = shard_.size(o_.spec.cells());
   if ((positions_ + o_.chunk - 1) / o_.chunk > kMaxChunks)
-    throw InvalidParameter("chunk", "at most " + std::to_string(kMaxChunks) + " chunks: chunk >= " +
-                                        std::to_string((positions_ + kMaxChunks - 1) / kMaxChunks) + " for " + std::to_string(positions_) + " cells",
+    throw InvalidParameter("chunk",
+                           "at most " + std::to_string(kMaxChunks) + " chunks: chunk >= " +
+                               std::to_string((positions_ + kMaxChunks - 1) / kMaxChunks) + " for " + std::to_string(positions_) + " cells",
                            static_cast<double>(o_.chunk));
   const std::string header = header_text(o_.spec, o_.shard);
   std::vector<Interval> done;
@@ -64,8 +65,9 @@ Run::Run(RunOptions options) : o_(std::move(options)) {
       in.seekg(0);
       in.read(head.data(), static_cast<std::streamsize>(head.size()));
       if (!in || head != header)
-        throw InvalidParameter("resume", file.string() + " exists and is not the output of this run (another spec, build or shard); "
-                                                         "remove it or choose another FILE");
+        throw InvalidParameter("resume", file.string() +
+                                             " exists and is not the output of this run (another spec, build or shard); "
+                                             "remove it or choose another FILE");
       already_complete_ = true;
       std::fprintf(stderr, "sweep: %s is already complete\n", file.c_str());
     } else {
@@ -75,8 +77,10 @@ Run::Run(RunOptions options) : o_(std::move(options)) {
         std::fprintf(stderr, "sweep: resuming %s: %lld of %lld cells already done\n", file.c_str(), checkpoint_->done_positions(), positions_);
     }
   } else {
-    if (o_.out.empty()) stream_ = std::make_unique<StdoutStream>();
-    else stream_ = std::make_unique<AtomicFile>(o_.out);
+    if (o_.out.empty())
+      stream_ = std::make_unique<StdoutStream>();
+    else
+      stream_ = std::make_unique<AtomicFile>(o_.out);
     stream_->write(header);
     sealer_.add(header, 0);
   }
@@ -98,7 +102,8 @@ std::vector<long long> Run::cells_of(const Interval& chunk) const {
 
 void Run::deliver(std::size_t k, const std::string& rows) {
   if (k != delivered_ || k >= chunks_.size()) throw std::logic_error("Run::deliver: chunks must be delivered once each, in order");
-  if (checkpoint_) checkpoint_->save(chunks_[k], rows);
+  if (checkpoint_)
+    checkpoint_->save(chunks_[k], rows);
   else {
     stream_->write(rows);
     sealer_.add(rows, chunks_[k].size());

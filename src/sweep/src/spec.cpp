@@ -32,8 +32,8 @@ void Spec::validate() const {
       throw InvalidParameter("a", "a * (q/a) and a * (b/a) must be finite, positive and normal for every cell", a);
   // The product is checked in floating point first: n_q and n_b are each at most 10^8.
   if (static_cast<double>(q_over_a.size()) * static_cast<double>(b_over_a.size()) > static_cast<double>(kMaxCells))
-    throw InvalidParameter("q-range", "n_q * n_b <= " + count_text(kMaxCells) + " cells (got " + count_text(q_over_a.size()) +
-                                          " * " + count_text(b_over_a.size()) + ")");
+    throw InvalidParameter("q-range", "n_q * n_b <= " + count_text(kMaxCells) + " cells (got " + count_text(q_over_a.size()) + " * " +
+                                          count_text(b_over_a.size()) + ")");
   if (superstable_scan < kMinSuperstableScan || superstable_scan > kMaxSuperstableScan)
     throw InvalidParameter("superstable-scan", count_text(kMinSuperstableScan) + " <= superstable-scan <= " + count_text(kMaxSuperstableScan),
                            static_cast<double>(superstable_scan));
@@ -50,8 +50,8 @@ void Spec::validate() const {
   if (!(period.tol >= kMinPeriodTol && period.tol <= kMaxPeriodTol))
     throw InvalidParameter("period-tol", format_double(kMinPeriodTol) + " <= period-tol <= " + format_double(kMaxPeriodTol), period.tol);
   if (observables.needs_orbit()) {
-    const double work = static_cast<double>(cells()) *
-                        static_cast<double>(orbit.transient + orbit.steps + (observables.has(Observable::Period) ? period.max : 0));
+    const double work =
+        static_cast<double>(cells()) * static_cast<double>(orbit.transient + orbit.steps + (observables.has(Observable::Period) ? period.max : 0));
     if (work > kMaxOrbitEvaluations)
       throw InvalidParameter("steps", "cells * (transient + steps + period-max) <= 1e12 evaluations of T (got " + format_double(work) + ")");
   }
@@ -65,8 +65,8 @@ std::vector<std::string> Spec::header_lines() const {
   h.push_back("observables = " + observables.canonical());
   if (observables.has(Observable::Covering) || observables.has(Observable::Certified))
     h.push_back("max_branches = " + count_text(covering_max_branches) +
-                "  (work budget per cell: most branches of T1 in [t2, 3pi/2] for covering, max_branches / " +
-                count_text(kDenseCostFactor) + " for certified)");
+                "  (work budget per cell: most branches of T1 in [t2, 3pi/2] for covering, max_branches / " + count_text(kDenseCostFactor) +
+                " for certified)");
   if (observables.has(Observable::Superstable)) h.push_back("superstable_scan = " + count_text(superstable_scan));
   if (observables.needs_orbit()) {
     h.push_back("theta0 = " + format_double(orbit.theta0_fraction) + "  (theta_0 = t2 + theta0 (t3 - t2))");
@@ -86,8 +86,9 @@ std::vector<std::string> Spec::header_lines() const {
                 "a proof at one point, not over the cell)");
   h.push_back("cells = " + count_text(cells()) + "  (index = i * " + count_text(b_over_a.size()) +
               " + j, i over q_over_a, j over b_over_a; a = A, q = q_over_a A, b = b_over_a A)");
-  h.push_back("status: ok | inadmissible (q/a <= 2 b/a: T undefined; values nan) | error (an observable threw: "
-              "its values nan, the message in the error column)");
+  h.push_back(
+      "status: ok | inadmissible (q/a <= 2 b/a: T undefined; values nan) | error (an observable threw: "
+      "its values nan, the message in the error column)");
   return h;
 }
 

@@ -17,7 +17,6 @@ namespace dfchaos::sweep {
 
 namespace fs = std::filesystem;
 
-
 void StdoutStream::write(std::string_view text) {
   if (text.empty()) return;
   if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size() || std::ferror(stdout))
@@ -25,8 +24,7 @@ void StdoutStream::write(std::string_view text) {
 }
 
 void StdoutStream::commit() {
-  if (std::fflush(stdout) != 0 || std::ferror(stdout))
-    throw kit::OutputError(std::string("cannot write the output: ") + std::strerror(errno), false);
+  if (std::fflush(stdout) != 0 || std::ferror(stdout)) throw kit::OutputError(std::string("cannot write the output: ") + std::strerror(errno), false);
 }
 
 AtomicFile::AtomicFile(const fs::path& path, const std::string& option)
@@ -72,7 +70,8 @@ void require_regular_file(const std::string& option, const fs::path& path) {
   std::error_code ec;
   const fs::file_status st = fs::status(path, ec);
   if (!fs::exists(st)) throw InvalidParameter(option, "cannot read " + path.string() + ": no such file");
-  if (!fs::is_regular_file(st)) throw InvalidParameter(option, path.string() + " is not a regular file (a sweep file or chunk is; not a pipe, FIFO, device or directory)");
+  if (!fs::is_regular_file(st))
+    throw InvalidParameter(option, path.string() + " is not a regular file (a sweep file or chunk is; not a pipe, FIFO, device or directory)");
 }
 
 std::string read_file(const std::string& option, const fs::path& path) {

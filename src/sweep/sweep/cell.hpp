@@ -17,8 +17,7 @@ namespace dfchaos::sweep {
 /// branch by branch (CoveringSearch::branchwise) within a budget of `max_branches` branches of
 /// \f$T_1\f$. The rule of the `covering` column of a sweep and of experiments/thm1_parameter_plane.
 /// @throws as lemma4_covering (InvalidParameter, GaveUp when the budget is exceeded).
-Lemma4Covering plane_covering(const Parameters& p, long long max_branches = kDefaultMaxCoveringBranches,
-                              CoveringSearchStats* stats = nullptr);
+Lemma4Covering plane_covering(const Parameters& p, long long max_branches = kDefaultMaxCoveringBranches, CoveringSearchStats* stats = nullptr);
 
 /// Theorem 2 at one point of the plane: \f$t_2\f$ is superstable when \f$T(t_2) = t_2\f$ and
 /// \f$T = t_2\f$ on an arc \f$[t_2, t_2 + \varepsilon)\f$ with \f$\varepsilon > 0\f$ (superstable_check
@@ -47,8 +46,8 @@ enum class CertifiedStep {
 };
 
 /// Every CertifiedStep, in code order.
-inline constexpr CertifiedStep kAllCertifiedSteps[] = {CertifiedStep::Proved,  CertifiedStep::Admissibility, CertifiedStep::Candidates,
-                                                       CertifiedStep::Inside,  CertifiedStep::TopEnd,        CertifiedStep::T2End,
+inline constexpr CertifiedStep kAllCertifiedSteps[] = {CertifiedStep::Proved,    CertifiedStep::Admissibility, CertifiedStep::Candidates,
+                                                       CertifiedStep::Inside,    CertifiedStep::TopEnd,        CertifiedStep::T2End,
                                                        CertifiedStep::Continuity};
 
 /// The step's name exactly as prove_covering's Outcome::step spells it ("proved" for Proved).
@@ -63,8 +62,8 @@ std::string certified_step_legend();
 
 /// Lemma 4 proved at one point of the plane (the `certified` and `certified_step` columns).
 struct PlaneCertified {
-  bool proved = false;                          ///< prove_covering's verdict
-  CertifiedStep step = CertifiedStep::Proved;   ///< the step not proved (Proved when proved)
+  bool proved = false;                         ///< prove_covering's verdict
+  CertifiedStep step = CertifiedStep::Proved;  ///< the step not proved (Proved when proved)
 };
 
 /// The rule of the `certified` and `certified_step` columns: certified::prove_covering at the point
@@ -87,22 +86,22 @@ enum class CellStatus {
 
 /// The observables of one cell (NaN where not computed).
 struct CellValues {
-  long long index = 0;      ///< the cell
-  double q_over_a = 0;      ///< its q/a
-  double b_over_a = 0;      ///< its b/a
+  long long index = 0;                 ///< the cell
+  double q_over_a = 0;                 ///< its q/a
+  double b_over_a = 0;                 ///< its b/a
   CellStatus status = CellStatus::Ok;  ///< ok, inadmissible or error
-  double covering = NAN;    ///< plane_covering(p).holds as 0/1
-  double superstable = NAN; ///< plane_superstable(p, scan).superstable as 0/1
-  double epsilon = NAN;     ///< plane_superstable(p, scan).epsilon
-  double lyapunov = NAN;    ///< orbit_statistics: Lyapunov exponent (-inf when a step stops)
-  double rate = NAN;        ///< orbit_statistics: penetration rate
-  double period = NAN;      ///< the period of the cycle at the orbit's end, 0 if none (see Spec)
-  double certified = NAN;   ///< plane_certified(p).proved as 0/1
-  double certified_step = NAN;  ///< plane_certified(p).step as its code (0 when proved)
+  double covering = NAN;               ///< plane_covering(p).holds as 0/1
+  double superstable = NAN;            ///< plane_superstable(p, scan).superstable as 0/1
+  double epsilon = NAN;                ///< plane_superstable(p, scan).epsilon
+  double lyapunov = NAN;               ///< orbit_statistics: Lyapunov exponent (-inf when a step stops)
+  double rate = NAN;                   ///< orbit_statistics: penetration rate
+  double period = NAN;                 ///< the period of the cycle at the orbit's end, 0 if none (see Spec)
+  double certified = NAN;              ///< plane_certified(p).proved as 0/1
+  double certified_step = NAN;         ///< plane_certified(p).step as its code (0 when proved)
   /// With lyapunov or rate: the image of the orbit's last step with a stop (orbit_statistics'
   /// last_stop_image), NaN if none. Not a column of the output.
   double stop_image = NAN;
-  std::string error;        ///< "observable: message" of each observable that threw, joined by "; "
+  std::string error;  ///< "observable: message" of each observable that threw, joined by "; "
 };
 
 /// Computes the observables of cell `index` of `spec`. Never throws for a failure of the cell:

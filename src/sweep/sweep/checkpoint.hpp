@@ -27,8 +27,8 @@ namespace dfchaos::sweep {
 
 /// Positions [begin, end) of a shard.
 struct Interval {
-  long long begin = 0;  ///< first position
-  long long end = 0;    ///< one past the last
+  long long begin = 0;                            ///< first position
+  long long end = 0;                              ///< one past the last
   long long size() const { return end - begin; }  ///< number of positions
 };
 

@@ -44,10 +44,10 @@ std::string header_text(const Spec& spec, const std::optional<Shard>& shard);
 
 /// A header read back from a file.
 struct ParsedHeader {
-  std::string common;            ///< every header line but the shard line, with the column line, as text
-  std::optional<Shard> shard;    ///< from the shard line, if any
-  long long cells = 0;           ///< from the cells line
-  std::size_t fields = 0;        ///< the number of columns
+  std::string common;                ///< every header line but the shard line, with the column line, as text
+  std::optional<Shard> shard;        ///< from the shard line, if any
+  long long cells = 0;               ///< from the cells line
+  std::size_t fields = 0;            ///< the number of columns
   std::vector<std::string> columns;  ///< the column names
 };
 
@@ -67,8 +67,8 @@ std::string row_problem(std::string_view row, long long index, const std::vector
 /// of `shard` under `columns`, each ending in '\n' and well-formed (row_problem); adds each (with
 /// its '\n') to `rows_seen` if given. @throws InvalidParameter naming `option` and `what` at the
 /// first row that is missing or not well-formed.
-void check_rows(const std::string& option, const std::string& what, std::istream& in, const Shard& shard, long long first,
-                long long count, const std::vector<std::string>& columns, Sealer* rows_seen = nullptr);
+void check_rows(const std::string& option, const std::string& what, std::istream& in, const Shard& shard, long long first, long long count,
+                const std::vector<std::string>& columns, Sealer* rows_seen = nullptr);
 
 /// A whole sweep file read back and checked.
 struct CheckedFile {

@@ -30,7 +30,7 @@ enum class Observable { Covering, Superstable, Lyapunov, Rate, Period, Certified
 
 /// All observables, in column order.
 inline constexpr Observable kAllObservables[] = {Observable::Covering, Observable::Superstable, Observable::Lyapunov,
-                                                  Observable::Rate,     Observable::Period,      Observable::Certified};
+                                                 Observable::Rate,     Observable::Period,      Observable::Certified};
 
 /// The observables computed when none are named (`--observables` omitted): all but `certified`.
 inline constexpr const char* kDefaultObservables = "covering,superstable,lyapunov,rate,period";

@@ -37,10 +37,10 @@ class Range {
   /// that condition in the error. @throws InvalidParameter naming `option`.
   void require_within(const std::string& option, double open_lo, double open_hi, const std::string& what) const;
 
-  long long size() const { return n_; }   ///< number of points n
-  double operator[](long long i) const;   ///< the i-th point, 0 <= i < size()
-  double lo() const { return lo_; }       ///< as written
-  double hi() const { return hi_; }       ///< as written
+  long long size() const { return n_; }         ///< number of points n
+  double operator[](long long i) const;         ///< the i-th point, 0 <= i < size()
+  double lo() const { return lo_; }             ///< as written
+  double hi() const { return hi_; }             ///< as written
   Spacing spacing() const { return spacing_; }  ///< lin, log or mid
   /// The canonical text `lo:hi:n:kind` (numbers in %.17g).
   std::string canonical() const;

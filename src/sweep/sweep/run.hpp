@@ -35,13 +35,13 @@ inline constexpr long long kMaxChunks = 1'000'000;
 
 /// Everything a run is asked to do.
 struct RunOptions {
-  Spec spec;                   ///< what to compute
-  std::optional<Shard> shard;  ///< only this share of the cells (a shard file, with a shard line)
-  std::string out;             ///< the output file ("" and no resume: stdout)
-  std::string resume;          ///< the output file of a resumable run (checkpoints in FILE.chunks/)
+  Spec spec;                        ///< what to compute
+  std::optional<Shard> shard;       ///< only this share of the cells (a shard file, with a shard line)
+  std::string out;                  ///< the output file ("" and no resume: stdout)
+  std::string resume;               ///< the output file of a resumable run (checkpoints in FILE.chunks/)
   long long chunk = kDefaultChunk;  ///< cells per chunk, 1..kMaxChunk (it never changes the output)
-  long long max_chunks = 0;    ///< with resume: stop after this many new chunks (0: no limit)
-  bool progress = false;       ///< progress on stderr even when it is not a terminal
+  long long max_chunks = 0;         ///< with resume: stop after this many new chunks (0: no limit)
+  bool progress = false;            ///< progress on stderr even when it is not a terminal
 };
 
 /// One run. Not copyable.
@@ -55,8 +55,8 @@ class Run {
   Run(const Run&) = delete;
   Run& operator=(const Run&) = delete;
 
-  const Spec& spec() const { return o_.spec; }          ///< the spec
-  const Shard& shard() const { return shard_; }         ///< the shard (0/1 for the whole sweep)
+  const Spec& spec() const { return o_.spec; }   ///< the spec
+  const Shard& shard() const { return shard_; }  ///< the shard (0/1 for the whole sweep)
   /// The chunks to compute in this run, in order (positions of the shard; cell = shard().cell(p)).
   const std::vector<Interval>& chunks() const { return chunks_; }
   /// The cell indices of a chunk.

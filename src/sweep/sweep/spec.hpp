@@ -29,12 +29,12 @@
 
 namespace dfchaos::sweep {
 
-inline constexpr long long kMaxCells = 100'000'000;          ///< most cells in one sweep
-inline constexpr long long kMaxTransient = 10'000'000;       ///< most transient steps per cell
-inline constexpr long long kMaxSteps = 10'000'000;           ///< most averaged steps per cell
-inline constexpr long long kMaxPeriod = 10'000;              ///< largest period searched for
-inline constexpr long long kMinSuperstableScan = 2;          ///< superstable_check's least scan
-inline constexpr long long kMaxSuperstableScan = 1'000'000;  ///< most scan points of superstable_check
+inline constexpr long long kMaxCells = 100'000'000;               ///< most cells in one sweep
+inline constexpr long long kMaxTransient = 10'000'000;            ///< most transient steps per cell
+inline constexpr long long kMaxSteps = 10'000'000;                ///< most averaged steps per cell
+inline constexpr long long kMaxPeriod = 10'000;                   ///< largest period searched for
+inline constexpr long long kMinSuperstableScan = 2;               ///< superstable_check's least scan
+inline constexpr long long kMaxSuperstableScan = 1'000'000;       ///< most scan points of superstable_check
 inline constexpr long long kMaxCoveringBranches = 1'000'000'000;  ///< largest covering work budget per cell
 /// Most evaluations of T by the orbits of a whole sweep, cells·(transient + steps + period_max):
 /// 10^12, some 25 core-days at 2 µs per evaluation.
@@ -53,22 +53,22 @@ struct OrbitSettings {
 
 /// The search for the period of the attracting cycle.
 struct PeriodSettings {
-  long long max = 64;   ///< largest k tried, 1..kMaxPeriod
-  double tol = 1e-9;    ///< the closing tolerance on the circle
+  long long max = 64;  ///< largest k tried, 1..kMaxPeriod
+  double tol = 1e-9;   ///< the closing tolerance on the circle
 };
 
 /// A sweep of the (q/a, b/a) plane.
 struct Spec {
-  double a = 1;                  ///< the forcing amplitude (the dynamics depend only on q/a and b/a)
-  Range q_over_a;                ///< first axis (slowest)
-  Range b_over_a;                ///< second axis
-  ObservableSet observables;     ///< what each cell computes
+  double a = 1;                      ///< the forcing amplitude (the dynamics depend only on q/a and b/a)
+  Range q_over_a;                    ///< first axis (slowest)
+  Range b_over_a;                    ///< second axis
+  ObservableSet observables;         ///< what each cell computes
   long long superstable_scan = 400;  ///< scan of superstable_check (as in thm1_parameter_plane)
   /// The covering search's work budget per cell (CoveringSearch::max_branches, 1..kMaxCoveringBranches):
   /// a cell with more branches of T1 in [t2, 3pi/2] is an error cell naming the budget.
   long long covering_max_branches = kDefaultMaxCoveringBranches;
-  OrbitSettings orbit;           ///< the orbit (lyapunov, rate, period)
-  PeriodSettings period;         ///< the period search
+  OrbitSettings orbit;    ///< the orbit (lyapunov, rate, period)
+  PeriodSettings period;  ///< the period search
 
   /// Checks every bound and admissibility condition before any work: a in [kMinA, kMaxA], and
   /// a·(q/a), a·(b/a) normal numbers for every cell; every q/a in
@@ -77,7 +77,7 @@ struct Spec {
   /// bounded (the k* constants). @throws InvalidParameter naming the option (as on the command line).
   void validate() const;
 
-  long long cells() const { return q_over_a.size() * b_over_a.size(); }  ///< n_q·n_b
+  long long cells() const { return q_over_a.size() * b_over_a.size(); }             ///< n_q·n_b
   double q_at(long long index) const { return q_over_a[index / b_over_a.size()]; }  ///< (q/a) of a cell
   double b_at(long long index) const { return b_over_a[index % b_over_a.size()]; }  ///< (b/a) of a cell
 
