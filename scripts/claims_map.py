@@ -71,7 +71,8 @@ NUMBER = re.compile(r"(?<![\w.\-/^{}])\d+(?:\.\d+)?(?:e[-+]?\d+)?(?![\w/^}]|\.\d
 
 def variant(cid):
     """A claim id split into its family and variant: cert.lemma4.A -> (cert.lemma4., A),
-    cert.thm2.window3 -> (cert.thm2.window, 3), else (id, None); as scripts/recheck_certificates.py."""
+    cert.thm2.window3 -> (cert.thm2.window, 3), else (id, None). scripts/recheck_certificates.py groups
+    certificates by it too."""
     m = re.fullmatch(r"(.*\.)([A-Z])", cid) or re.fullmatch(r"(.*[a-z_])(\d+)", cid)
     return (m.group(1), m.group(2)) if m else (cid, None)
 

@@ -32,6 +32,9 @@ import re
 import subprocess
 import sys
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from claims_map import variant as family  # noqa: E402  (one definition of a claim family)
+
 
 def fail(msg):
     sys.exit(f"recheck_certificates: {msg}")
@@ -214,13 +217,6 @@ def write(path, text):
     with open(tmp, "w") as f:
         f.write(text)
     os.replace(tmp, path)
-
-
-def family(cid):
-    """The claim id without its variant: cert.lemma4.A -> (cert.lemma4., A), cert.thm2.window3 ->
-    (cert.thm2.window, 3); an id without a variant is its own family."""
-    m = re.fullmatch(r"(.*\.)([A-Z])", cid) or re.fullmatch(r"(.*[a-z_])(\d+)", cid)
-    return (m.group(1), m.group(2)) if m else (cid, None)
 
 
 def grouped(listed, premise_of=None):
