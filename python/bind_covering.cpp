@@ -84,7 +84,7 @@ py::list covering_segments_py(const Parameters& p, std::optional<double> lo, std
   const double t = top ? finite("top", *top) : 1.5 * pi;
   const double t2 = p.t2_required(), t3 = p.t3_required();
   if (!(t > t2 && t < t3))  // T lies in [t2, t3): any other top gives no segment, or empty ones
-    throw InvalidParameter("top", "t2 < top < t3 = (" + format_double(t2) + ", " + format_double(t3) + ")", t);
+    throw InvalidParameter("top", "t2 < top < t3 = (" + format_shortest(t2) + ", " + format_shortest(t3) + ")", t);
   const CoveringSearch s = search_options(method, scan, uniform, recheck, refine, descend, max_segments, max_branches);
   std::vector<CoveringSegment> segs;
   {

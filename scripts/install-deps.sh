@@ -4,7 +4,8 @@
 #
 #   scripts/install-deps.sh build    compiler, CMake, Eigen, GSL, GoogleTest, CLI11, nlohmann-json, OpenSSL, Arb, MPFI, OpenMPI (for `make test`;
 #                                    OpenMPI builds dfchaos-sweep-mpi and its test; python3-yaml reads CITATION.cff in the test citation;
-#                                    git lists the sources for the tests spdx and dist, and for make dist)
+#                                    git lists the sources for the tests spdx and dist, and for make dist; python3-pandas
+#                                    reads every output in the test python_load_outputs)
 #   scripts/install-deps.sh report   build + gnuplot, LaTeX, Doxygen (for `make reproduce`)
 #   scripts/install-deps.sh check    build + clang and its OpenMP runtime (for `make test-clang`) and
 #                                    clang-format (for `make format-check`)
@@ -16,7 +17,7 @@ set -euo pipefail
 profile=${1:-build}
 build_pkgs=(g++ cmake make pkg-config git python3 python3-mpmath libeigen3-dev libgsl-dev libgtest-dev libgmock-dev
             libcli11-dev nlohmann-json3-dev libbenchmark-dev libssl-dev libflint-arb-dev libflint-dev libmpfr-dev libgmp-dev libmpfi-dev
-            pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib python3-yaml libopenmpi-dev openmpi-bin)
+            pybind11-dev python3-dev python3-numpy python3-pandas python3-pytest python3-matplotlib python3-yaml libopenmpi-dev openmpi-bin)
 report_pkgs=(gnuplot-nox latexmk texlive-latex-base texlive-latex-recommended
              texlive-latex-extra texlive-fonts-recommended texlive-pictures doxygen poppler-utils)
 

@@ -152,7 +152,17 @@ expect_ok "^# dfchaos sweep: " sweep-merge "$tmp/sh1.tsv" "$tmp/sh0.tsv"
 
 expect_ok "^theta	T1	T	scenario	elapsed	penetration$" map "${P[@]}" --theta 3.5 4.5
 expect_ok "^n	theta	scenario	elapsed	penetration	time	y$" orbit "${P[@]}" --theta0 3.5 --steps 5
-expect_ok "^t	phase	before	after	kind" simulate "${P[@]}" --x0 0 --y0 0 --v0 0 --t0 4 --t-end 100 --sample 1
+expect_ok "^t	phase	before	after	kind" simulate "${P[@]}" --x0 0 --y0 0 --v0 0 --t0 4 --t-end 100 --sample 1 --samples-out "$tmp/smp.tsv"
+checks=$((checks + 1))
+if [[ $(head -n 1 "$tmp/smp.tsv") != $'t\tx\ty\tv\tregime' || $(grep -vc '^#' "$tmp/smp.tsv") -ne 98 ]]; then
+  echo "FAIL: the samples file: column line and 97 rows expected"; fails=$((fails + 1))
+fi
+# The samples are a table of their own: --sample needs --samples-out, and the other way round.
+expect_error "sample: .*--samples-out" simulate "${P[@]}" --x0 0 --y0 0 --v0 0 --t0 4 --t-end 100 --sample 1
+expect_error "samples-out:" simulate "${P[@]}" --x0 0 --y0 0 --v0 0 --t0 4 --t-end 100 --samples-out "$tmp/smp2.tsv"
+expect_error "samples-out" simulate "${P[@]}" --x0 0 --y0 0 --v0 0 --t0 4 --t-end 100 --sample 1 --samples-out "$tmp"
+checks=$((checks + 1))
+[[ -e "$tmp/smp2.tsv" ]] && { echo "FAIL: a refused simulate left a samples file"; fails=$((fails + 1)); }
 expect_ok "^quantity	value" info "${P[@]}"
 expect_ok "^theta	T1	T" map --a 1 --b 1e-12 --q 0.85 --theta 3.5 4 5
 # The double just below t3 is not a fixed point (the t3 edge): scenario C, T = t2.

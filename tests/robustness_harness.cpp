@@ -196,7 +196,10 @@ int main(int argc, char** argv) {
       case 3:  // simulate
         args.insert(args.end(), {"--x0", coin(0.8) ? "0" : pick(kNumbers), "--y0", "0", "--v0", coin(0.8) ? "0" : pick(kNumbers), "--t0",
                                  coin(0.8) ? "4" : pick(kNumbers), "--t-end", coin(0.8) ? pick({"10", "50", "4"}) : pick(kNumbers)});
-        if (coin(0.3)) args.insert(args.end(), {"--sample", coin(0.7) ? "0.5" : pick(kNumbers)});
+        if (coin(0.3)) {
+          args.insert(args.end(), {"--sample", coin(0.7) ? "0.5" : pick(kNumbers)});
+          if (coin(0.9)) args.insert(args.end(), {"--samples-out", std::string(dir) + "/samples.tsv"});
+        }
         if (coin(0.2)) args.insert(args.end(), {"--max-events", pick(kCounts)});
         break;
       default: break;

@@ -200,7 +200,10 @@ TEST(Format, ShortestReadsBackToTheSameDouble) {
   EXPECT_EQ(dfchaos::format_shortest(0.85), "0.85");
   EXPECT_EQ(dfchaos::format_double(0.85), "0.84999999999999998");
   EXPECT_EQ(dfchaos::format_shortest(0.1 + 0.2), "0.30000000000000004");
-  EXPECT_EQ(dfchaos::format_shortest(5e-5), "5e-05");
+  EXPECT_EQ(dfchaos::format_shortest(5e-5), "5e-5");  // not to_chars's "5e-05"
+  EXPECT_EQ(dfchaos::format_shortest(1e300), "1e300");
+  EXPECT_EQ(dfchaos::format_shortest(-2.5e-300), "-2.5e-300");
+  EXPECT_EQ(dfchaos::format_shortest(1e-100), "1e-100");
   // Every double of a spread of magnitudes reads back exactly, and no shorter decimal would.
   double x = 1.2345678901234567e-12;
   for (int k = 0; k < 200; ++k, x *= 1.3771) {

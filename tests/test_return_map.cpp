@@ -165,7 +165,7 @@ TEST(MapDomain, IsTheHalfOpenArcFromT2ToT3) {
     ADD_FAILURE() << "t3 accepted";
   } catch (const InvalidParameter& e) {
     EXPECT_EQ(e.parameter(), "theta0");
-    EXPECT_NE(std::string(e.what()).find("t2 <= theta0 < t3 = [" + format_double(t2) + ", " + format_double(t3) + ")"), std::string::npos)
+    EXPECT_NE(std::string(e.what()).find("t2 <= theta0 < t3 = [" + format_shortest(t2) + ", " + format_shortest(t3) + ")"), std::string::npos)
         << e.what();
   }
   try {

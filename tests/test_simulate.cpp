@@ -270,11 +270,38 @@ std::vector<std::string> with(std::vector<std::string> args, const std::vector<s
   return args;
 }
 
+/// A text file's lines (the samples file of --samples-out).
+std::vector<std::string> file_lines(const std::string& path) {
+  std::vector<std::string> lines;
+  if (std::FILE* f = std::fopen(path.c_str(), "r")) {
+    std::string line;
+    for (int c; (c = std::fgetc(f)) != EOF;) {
+      if (c != '\n') {
+        line += static_cast<char>(c);
+        continue;
+      }
+      lines.push_back(line);
+      line.clear();
+    }
+    std::fclose(f);
+  }
+  return lines;
+}
+
+/// A file name for the samples of one test, removed first.
+std::string samples_path(const char* name) {
+  const std::string path = ::testing::TempDir() + "dfchaos-samples-" + name + ".tsv";
+  std::remove(path.c_str());
+  return path;
+}
+
 /// A short run under the same limit: the reference for the peak memory (and a check of the limit).
 ChildRun reference_run() {
-  const ChildRun r = run_simulate(with(kModel, {"--t-end", "10", "--sample", "1"}));
+  const std::string samples = samples_path("reference");
+  const ChildRun r = run_simulate(with(kModel, {"--t-end", "10", "--sample", "1", "--samples-out", samples}));
   EXPECT_EQ(r.status, 0) << r.err;
-  EXPECT_EQ(r.lines, 2 + 3 + 2 + 1 + 11) << "initial regime, event header, 3 events, 2 blank lines, sample header, 11 samples";
+  EXPECT_EQ(r.lines, 1 + 1 + 3 + 1) << "column line, initial regime, 3 events, final state";
+  EXPECT_EQ(file_lines(samples).size(), 2U + 11U) << "column line, comment, 11 samples";
   return r;
 }
 
@@ -284,11 +311,9 @@ TEST(SimulateStreaming, Regression_28_7_EventsStreamInFlatMemory) {
   const ChildRun ref = reference_run();
   const ChildRun r = run_simulate(with(kModel, {"--t-end", "1e12", "--max-events", "1e6"}));
   EXPECT_EQ(r.status, 1);
-  EXPECT_EQ(r.err,
-            "dfchaos: gave up: simulate: more than 1000000 events before t-end=1000000000000; raise the event limit or "
-            "shorten the time span\n");
-  EXPECT_EQ(r.first, "# initial regime: s");
-  EXPECT_EQ(r.lines, 2 + 1'000'000) << "initial regime, event header, the first 1e6 events";
+  EXPECT_EQ(r.err, "dfchaos: gave up: simulate: more than 1000000 events before t-end=1e12; raise the event limit or shorten the time span\n");
+  EXPECT_EQ(r.first, "t\tphase\tbefore\tafter\tkind\tx\ty\tv_before\tv_after");
+  EXPECT_EQ(r.lines, 2 + 1'000'000) << "column line, initial regime, the first 1e6 events (no final state)";
   EXPECT_EQ(r.sample_header, -1);
   EXPECT_EQ(r.blank_lines, 0);
   EXPECT_LT(r.maxrss_kib - ref.maxrss_kib, kFlatGrowthKiB)
@@ -297,16 +322,23 @@ TEST(SimulateStreaming, Regression_28_7_EventsStreamInFlatMemory) {
 
 TEST(SimulateStreaming, Regression_28_7_SamplesSpoolInFlatMemory) {
   // The issue's `--sample 1 --t-end 4.9e6` with 1e6 samples (and about 3.2e5 events): complete, the
-  // sample table after the events and two blank lines, exit status 0.
+  // events on stdout, the sample table in its own file (streamed into a temporary beside it), exit
+  // status 0.
   const ChildRun ref = reference_run();
-  const ChildRun r = run_simulate(with(kModel, {"--t-end", "1e6", "--sample", "1", "--max-events", "1e8"}));
+  const std::string samples = samples_path("million");
+  const ChildRun r = run_simulate(with(kModel, {"--t-end", "1e6", "--sample", "1", "--max-events", "1e8", "--samples-out", samples}));
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.err, "");
-  EXPECT_EQ(r.first, "# initial regime: s");
-  EXPECT_GT(r.sample_header, 100'000) << "the events come first";
-  EXPECT_EQ(r.blank_lines, 2);
-  EXPECT_EQ(r.lines - 1 - r.sample_header, 1'000'001) << "samples at t = 0, 1, ..., 1e6";
-  EXPECT_EQ(r.last.substr(0, 8), "1000000\t");
+  EXPECT_EQ(r.first, "t\tphase\tbefore\tafter\tkind\tx\ty\tv_before\tv_after");
+  EXPECT_GT(r.lines, 100'000) << "the events";
+  EXPECT_EQ(r.sample_header, -1) << "no sample table on stdout";
+  EXPECT_EQ(r.blank_lines, 0);
+  EXPECT_EQ(r.last.substr(0, 20), "# final state: t = 1");
+  const std::vector<std::string> rows = file_lines(samples);
+  ASSERT_EQ(rows.size(), 2U + 1'000'001U) << "column line, comment, samples at t = 0, 1, ..., 1e6";
+  EXPECT_EQ(rows[0], "t\tx\ty\tv\tregime");
+  EXPECT_EQ(rows.back().substr(0, 8), "1000000\t");
+  std::remove(samples.c_str());
   EXPECT_LT(r.maxrss_kib - ref.maxrss_kib, kFlatGrowthKiB)
       << "peak resident memory " << r.maxrss_kib << " KiB against " << ref.maxrss_kib << " KiB for 10 time units";
 }

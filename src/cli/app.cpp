@@ -24,6 +24,7 @@
 #include "cli.hpp"
 #include "dfchaos/errors.hpp"
 #include "kit/budget.hpp"
+#include "kit/format.hpp"
 #include "kit/output.hpp"
 #include "kit/provenance.hpp"
 
@@ -60,7 +61,10 @@ int run_command(int argc, char** argv) {
   app.footer(
       "Exit status: 0 success, 1 a bounded computation gave up or writing failed, 2 bad input,\n"
       "3 a sweep stopped by --max-chunks before it was complete (rerun it to continue).\n"
-      "'dfchaos COMMAND --help' describes each command's options and output columns.");
+      "'dfchaos COMMAND --help' describes each command's options and output columns.\n"
+      "Tables (info, map, orbit, simulate, sweep, and the experiments' data files): tab-separated, the column line\n"
+      "first, every other line that is not a row starting with '#'. One call reads one in Python:\n" +
+      std::string(kit::kLoadInPython) + ".\nCertificates and 'certify' verdicts are JSON (json.load).");
   const std::vector<Command> commands = {add_info(app),     add_map(app),        add_orbit(app),
                                          add_simulate(app), add_provenance(app), add_certify_command(app),
                                          add_sweep(app),    add_sweep_merge(app)};

@@ -11,9 +11,9 @@
 namespace dfchaos::cli {
 
 void ModelOptions::add_to(CLI::App* app) {
-  const std::string range = format_double(kMinParameter) + " <= X <= " + format_double(kMaxParameter);
+  const std::string range = format_shortest(kMinParameter) + " <= X <= " + format_shortest(kMaxParameter);
   app->add_option("--a", a, "forcing amplitude a, " + range)->required()->type_name("FLOAT");
-  app->add_option("--b", b, "half the constant force b, " + range + "; the return map needs b < a/2 and b/a >= " + format_double(kMinMapRatio))
+  app->add_option("--b", b, "half the constant force b, " + range + "; the return map needs b < a/2 and b/a >= " + format_shortest(kMinMapRatio))
       ->required()
       ->type_name("FLOAT");
   app->add_option("--q", q, "maximal dry-friction force q, " + range + "; the return map needs q > 2b")->required()->type_name("FLOAT");

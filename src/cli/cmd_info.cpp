@@ -17,19 +17,19 @@ Command add_info(CLI::App& app) {
   return {cmd, [m] {
             const Parameters p = m->model();
             Writer w;
-            auto opt = [](const std::optional<double>& v) { return v ? format_double(*v) : std::string("undefined"); };
+            auto opt = [](const std::optional<double>& v) { return v ? format_shortest(*v) : std::string("undefined"); };
             w.row({"quantity", "value"});
-            w.row({"a", format_double(p.a())});
-            w.row({"b", format_double(p.b())});
-            w.row({"q", format_double(p.q())});
-            w.row({"b/a", format_double(p.b() / p.a())});
-            w.row({"q/a", format_double(p.q() / p.a())});
+            w.row({"a", format_shortest(p.a())});
+            w.row({"b", format_shortest(p.b())});
+            w.row({"q", format_shortest(p.q())});
+            w.row({"b/a", format_shortest(p.b() / p.a())});
+            w.row({"q/a", format_shortest(p.q() / p.a())});
             w.row({"t0", opt(p.t0())});
             w.row({"t1", opt(p.t1())});
             w.row({"t2", opt(p.t2())});
             w.row({"t3", opt(p.t3())});
-            w.row({"vartheta0", format_double(vartheta0())});
-            w.row({"a*sin(vartheta0)", format_double(p.a() * sin_vartheta0())});
+            w.row({"vartheta0", format_shortest(vartheta0())});
+            w.row({"a*sin(vartheta0)", format_shortest(p.a() * sin_vartheta0())});
             w.row({"assumptions", p.assumptions().describe()});
             std::string map = "defined";
             try {

@@ -35,7 +35,7 @@ Command add_map(CLI::App& app) {
       "  penetration  the advance of the delimiter during that time\n"
       "Accuracy (docs/accuracy.md; checked against a 40-digit reference by the test precision_reference):\n"
       "  needs b/a >= " +
-      format_double(kMinMapRatio) +
+      format_shortest(kMinMapRatio) +
       " (refused below, exit 2).\n"
       "  T: within 1e-11 of the exact T(theta) (radians); within 1e-9 down to a relative distance of\n"
       "     1e-11 from a discontinuity of T1; at a discontinuity either one-sided value may be returned.\n"
@@ -53,7 +53,7 @@ Command add_map(CLI::App& app) {
               const double lo = number("grid LO", o->grid[0]), hi = number("grid HI", o->grid[1]);
               const long long n = count("grid N", o->grid[2], 1, 10'000'000);
               p.require_in_map_domain(lo, "grid LO");
-              if (!(hi > lo && hi <= t3)) throw InvalidParameter("grid HI", "LO < HI <= t3 = " + format_double(t3), hi);
+              if (!(hi > lo && hi <= t3)) throw InvalidParameter("grid HI", "LO < HI <= t3 = " + format_shortest(t3), hi);
               th.reserve(static_cast<std::size_t>(n));
               for (long long i = 0; i < n; ++i) th.push_back(lo + (hi - lo) * static_cast<double>(i) / static_cast<double>(n));
             } else if (!o->arc.empty()) {

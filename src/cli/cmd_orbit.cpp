@@ -34,7 +34,7 @@ Command add_orbit(CLI::App& app) {
       "Rows are streamed as computed: a step at which the computation gives up (exit 1, one line on stderr) ends\n"
       "the output after the rows of the steps before it.\n"
       "Accuracy (docs/accuracy.md): needs b/a >= " +
-      format_double(kMinMapRatio) +
+      format_shortest(kMinMapRatio) +
       ". Each step is one evaluation of T with the\n"
       "accuracy stated by 'dfchaos map --help'; along an orbit these errors are amplified by |T'| (large for small b/a),\n"
       "so a long orbit is a faithful pseudo-orbit, not the exact orbit of theta0. time and y sum elapsed and penetration\n"

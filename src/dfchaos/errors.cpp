@@ -9,7 +9,7 @@
 namespace dfchaos {
 
 InvalidParameter::InvalidParameter(const std::string& parameter, const std::string& condition, double value)
-    : std::invalid_argument(parameter + ": must satisfy " + condition + " (got " + format_double(value) + ")"), parameter_(parameter) {}
+    : std::invalid_argument(parameter + ": must satisfy " + condition + " (got " + format_shortest(value) + ")"), parameter_(parameter) {}
 
 InvalidParameter::InvalidParameter(const std::string& parameter, const std::string& condition)
     : std::invalid_argument(parameter + ": " + condition), parameter_(parameter) {}
@@ -17,7 +17,18 @@ InvalidParameter::InvalidParameter(const std::string& parameter, const std::stri
 std::string format_shortest(double x) {
   char buf[40];
   const auto r = std::to_chars(buf, buf + sizeof buf, x);
-  return std::string(buf, r.ptr);
+  std::string s(buf, r.ptr);
+  // to_chars writes at least two exponent digits ("1e-04"): drop the leading zeros ("1e-4").
+  const std::size_t e = s.find('e');
+  if (e != std::string::npos) {
+    std::size_t d = e + 1;
+    if (d < s.size() && (s[d] == '-' || s[d] == '+')) ++d;
+    std::size_t z = d;
+    while (z + 1 < s.size() && s[z] == '0') ++z;
+    s.erase(d, z - d);
+    if (s[e + 1] == '+') s.erase(e + 1, 1);
+  }
+  return s;
 }
 
 std::string format_double(double x) {

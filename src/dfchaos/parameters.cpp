@@ -98,22 +98,23 @@ double Parameters::t3_required() const {
 
 void Parameters::require_in_map_domain(double theta, const std::string& name) const {
   const double t2 = t2_required(), t3 = t3_required();
-  if (!in_map_domain(theta)) throw InvalidParameter(name, "t2 <= " + name + " < t3 = [" + format_double(t2) + ", " + format_double(t3) + ")", theta);
+  if (!in_map_domain(theta))
+    throw InvalidParameter(name, "t2 <= " + name + " < t3 = [" + format_shortest(t2) + ", " + format_shortest(t3) + ")", theta);
 }
 
 void Parameters::require_return_map() const {
   if (!(2 * b_ < a_)) throw InvalidParameter("b", "0 < b < a/2 for the return map T (Eq. 2)", b_);
   if (!(q_ > 2 * b_)) throw InvalidParameter("q", "q > 2b for the return map T (otherwise progression need not stop)", q_);
   if (!(b_ >= kMinMapRatio * a_))
-    throw InvalidParameter("b", "b/a >= 1e-12 for the return map T (its accuracy floor, docs/accuracy.md; here b/a = " + format_double(b_ / a_) + ")",
-                           b_);
+    throw InvalidParameter(
+        "b", "b/a >= 1e-12 for the return map T (its accuracy floor, docs/accuracy.md; here b/a = " + format_shortest(b_ / a_) + ")", b_);
 }
 
 void Parameters::require_eq2() const {
   if (!(2 * b_ < a_)) throw InvalidParameter("b", "0 < b < a/2 (assumption (2))", b_);
   const double lo = a_ * sin_vartheta0();
   if (!(q_ > lo && q_ < a_))
-    throw InvalidParameter("q", "a sin(vartheta0) < q < a (assumption (2)), i.e. " + format_double(lo) + " < q < " + format_double(a_), q_);
+    throw InvalidParameter("q", "a sin(vartheta0) < q < a (assumption (2)), i.e. " + format_shortest(lo) + " < q < " + format_shortest(a_), q_);
 }
 
 Assumptions Parameters::assumptions() const {

@@ -43,13 +43,13 @@ MechanicalState simulate(const Parameters& p, double x0, double y0, double v0, d
   finite("t-end", t_end);
   // Positions and velocities on the scale of the parameters' range: beyond it x(t) can overflow.
   for (const auto& [name, v] : {std::pair{"x0", x0}, std::pair{"y0", y0}, std::pair{"v0", v0}})
-    if (!(std::fabs(v) <= kMaxParameter)) throw InvalidParameter(name, std::string("|") + name + "| <= " + format_double(kMaxParameter), v);
+    if (!(std::fabs(v) <= kMaxParameter)) throw InvalidParameter(name, std::string("|") + name + "| <= " + format_shortest(kMaxParameter), v);
   for (const auto& [name, v] : {std::pair{"t0", t0}, std::pair{"t-end", t_end}})
     if (!(std::fabs(v) <= kMaxSimulationTime))
       throw InvalidParameter(
-          name, std::string("|") + name + "| <= " + format_double(kMaxSimulationTime) + " (beyond it a double time no longer resolves 1e-4)", v);
+          name, std::string("|") + name + "| <= " + format_shortest(kMaxSimulationTime) + " (beyond it a double time no longer resolves 1e-4)", v);
   if (x0 > y0) throw InvalidParameter("x0", "x0 <= y0 (the mass cannot pass the delimiter)", x0);
-  if (t_end < t0) throw InvalidParameter("t-end", "t-end >= t0 = " + format_double(t0), t_end);
+  if (t_end < t0) throw InvalidParameter("t-end", "t-end >= t0 = " + format_shortest(t0), t_end);
   if (!std::isfinite(options.sample_dt) || options.sample_dt < 0) throw InvalidParameter("sample", "sample >= 0 and finite", options.sample_dt);
   long n_samples = 0;
   if (options.sample_dt > 0) {
@@ -84,7 +84,7 @@ MechanicalState simulate(const Parameters& p, double x0, double y0, double v0, d
     if (!tr || before(stop, tr->t)) break;
     emit_samples_until(tr->t, false);
     if (n_events >= options.max_events)
-      throw GaveUp("simulate: more than " + std::to_string(options.max_events) + " events before t-end=" + format_double(t_end) +
+      throw GaveUp("simulate: more than " + std::to_string(options.max_events) + " events before t-end=" + format_shortest(t_end) +
                    "; raise the event limit or shorten the time span");
     SimulationEvent e;
     e.when = tr->t;

@@ -115,18 +115,20 @@ def test_orbit(cli, abq, theta0, steps):
     assert_bits("y", o["y"], floats(col[6]))
 
 
-def parse_simulate(out):
-    """The tool's simulate output: initial regime, event rows, sample rows (after two blank lines)."""
+def parse_simulate(out, samples_text=None):
+    """The tool's simulate output: the column line, the initial regime, event rows, the final state;
+    the sample rows from their own file (--samples-out)."""
     lines = out.split("\n")
-    assert lines[0].startswith("# initial regime: ")
-    initial = lines[0].split(": ")[1]
-    assert lines[1].split("\t") == ["t", "phase", "before", "after", "kind", "x", "y", "v_before", "v_after"]
-    events, samples, k = [], [], 2
-    while k < len(lines) and lines[k] != "":
-        events.append(lines[k].split("\t"))
-        k += 1
-    if k + 2 < len(lines) and lines[k + 2].startswith("t\tx"):
-        samples = [l.split("\t") for l in lines[k + 3:] if l]
+    assert lines[0].split("\t") == ["t", "phase", "before", "after", "kind", "x", "y", "v_before", "v_after"]
+    assert lines[1].startswith("# initial regime: ")
+    initial = lines[1].split(": ")[1]
+    events = [l.split("\t") for l in lines[2:] if l and not l.startswith("#")]
+    assert lines[-2].startswith("# final state: ") and lines[-1] == ""
+    samples = []
+    if samples_text is not None:
+        s = samples_text.split("\n")
+        assert s[0] == "t\tx\ty\tv\tregime" and s[1].startswith("# simulate samples: ")
+        samples = [l.split("\t") for l in s[2:] if l]
     return initial, events, samples
 
 
@@ -137,17 +139,22 @@ def parse_simulate(out):
     ((1.0, 0.2, 1.5), (-1.0, 0.0, -2.0, 0.0), 60.0, 0.3),   # q > a
     ((2.5, 0.03, 1.9), (0.0, 0.0, 2.0, 1.0), 200.0, None),
 ])
-def test_simulate(cli, abq, start, t_end, sample):
+def test_simulate(cli, abq, start, t_end, sample, tmp_path):
     """`dfchaos simulate`: the initial regime, every event column, every sample column."""
     p = dfchaos.Parameters(*abq)
     x0, y0, v0, t0 = start
-    extra = ["--sample", repr(sample)] if sample else []
+    samples_file = tmp_path / "samples.tsv"
+    extra = ["--sample", repr(sample), "--samples-out", samples_file] if sample else []
     rc, out, err = cli.run("simulate", *args(*abq), "--x0", repr(x0), "--y0", repr(y0), "--v0", repr(v0),
                            "--t0", repr(t0), "--t-end", repr(t_end), *extra)
     assert rc == 0, err
-    initial, events, samples = parse_simulate(out)
+    initial, events, samples = parse_simulate(out, samples_file.read_text() if sample else None)
     r = dfchaos.simulate(p, x0, y0, v0, t0, t_end, sample=sample)
     assert r["initial_regime"] == initial
+    final = dict(kv.split(" = ") for kv in out.split("\n")[-2][len("# final state: "):].split(", "))
+    assert final["regime"] == r["final"]["regime"]
+    for name in ("t", "phase", "x", "y", "v"):
+        assert float(final[name]) == r["final"][name], name
     ev = r["events"]
     assert len(events) > 0 and len(ev["t"]) == len(events)
     col = list(zip(*events))

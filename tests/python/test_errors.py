@@ -38,6 +38,8 @@ def sim_cli(**kw):
             args[args.index(flag) + 1] = value
         else:
             args += [flag, value]
+    if "sample" in kw:  # the tool writes samples to a file of their own (refused here before it is opened)
+        args += ["--samples-out", "/nonexistent-dfchaos-dir/samples.tsv"]
     return args
 
 

@@ -19,7 +19,7 @@ std::string claim_of(const Result& c) { return c.record.value().at("statement").
 
 /// x itself, after checking |x| <= kMaxParameter (which also refuses NaN). @throws InvalidParameter naming `name`.
 double bounded(const std::string& name, double x) {
-  if (!(std::fabs(x) <= kMaxParameter)) throw InvalidParameter(name, "|" + name + "| <= " + format_double(kMaxParameter), x);
+  if (!(std::fabs(x) <= kMaxParameter)) throw InvalidParameter(name, "|" + name + "| <= " + format_shortest(kMaxParameter), x);
   return x;
 }
 
@@ -28,7 +28,7 @@ Range bounded(const std::string& name, const Range& r) {
   bounded(name, r.lo);
   if (r.lo == r.hi) return r;
   bounded(name, r.hi);
-  if (!(r.lo <= r.hi)) throw InvalidParameter(name, "LO <= HI in LO:HI (got '" + format_double(r.lo) + ":" + format_double(r.hi) + "')");
+  if (!(r.lo <= r.hi)) throw InvalidParameter(name, "LO <= HI in LO:HI (got '" + format_shortest(r.lo) + ":" + format_shortest(r.hi) + "')");
   return r;
 }
 
@@ -63,7 +63,7 @@ Candidate candidate(const std::string& name, const SegmentEnds& e, const Paramet
   const double t2 = *corner.t2(), top = 1.5 * M_PI;
   for (double x : {e.theta_top, e.theta_t2})
     if (!(x >= t2 && x <= top))
-      throw InvalidParameter(name, "both ends in [t2(b_hi), 3pi/2] = [" + format_double(t2) + ", " + format_double(top) + "]", x);
+      throw InvalidParameter(name, "both ends in [t2(b_hi), 3pi/2] = [" + format_shortest(t2) + ", " + format_shortest(top) + "]", x);
   return Candidate{e.theta_top, e.theta_t2};
 }
 

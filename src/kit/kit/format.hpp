@@ -13,6 +13,13 @@ namespace dfchaos::kit {
 /// Round-trip exact %.17g (from the core: every output prints numbers this way).
 using dfchaos::format_double;
 
+/// How every table the project writes (the tool's outputs, the experiments' data files) is read
+/// in Python in one call: the column line first, every other line that is not a row starting with
+/// '#'. pandas needs float_precision='round_trip' to read each %.17g number back to its double.
+inline constexpr const char* kLoadInPython =
+    "pandas.read_csv(f, sep='\\t', comment='#', float_precision='round_trip') or\n"
+    "numpy.genfromtxt(f, names=True, delimiter='\\t', comments='#', dtype=None, encoding=None)";
+
 /// A number with the given count of significant digits (printf's %.*g).
 std::string format_significant(double x, int digits);
 

@@ -20,6 +20,12 @@ class Table {
   Table& row(std::vector<Cell> cells);
   std::size_t rows() const { return rows_.size(); }  ///< number of rows so far
   std::string render() const;                        ///< header line and rows, tab-separated
+  /// The table with `comments` ('#' lines, each ending in a newline) between the column line and
+  /// the rows: the layout of every data file (docs/architecture.md, "Data files"), which
+  /// `pandas.read_csv(f, sep="\t", comment="#")` and `numpy.genfromtxt(f, names=True,
+  /// delimiter="\t", comments="#", dtype=None, encoding=None)` both read in one call (the latter
+  /// takes its names from the first line).
+  std::string render(const std::string& comments) const;
 
  private:
   std::vector<std::string> columns_;

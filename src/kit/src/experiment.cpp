@@ -142,7 +142,7 @@ int Experiment::run_main(const std::string& name, int argc, char** argv) const {
         out.parameter(s.record_key(), values.real(s.name));
       else {
         std::string t;
-        for (double x : values.reals(s.name)) t += (t.empty() ? "" : " ") + format_double(x);
+        for (double x : values.reals(s.name)) t += (t.empty() ? "" : " ") + format_shortest(x);
         out.parameter(s.record_key(), t);
       }
     }

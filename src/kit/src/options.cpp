@@ -13,7 +13,7 @@ namespace dfchaos::kit {
 namespace {
 std::string bound_text(OptionType type, double v) {
   if (type == OptionType::Count) return std::to_string(static_cast<long long>(v));
-  return format_double(v);
+  return format_shortest(v);
 }
 }  // namespace
 

@@ -225,7 +225,7 @@ void write_atomically(const fs::path& path, const std::string& content) { write_
 Output::Output(std::string name, fs::path root) : name_(std::move(name)), root_(std::move(root)) {}
 
 void Output::parameter(const std::string& key, const std::string& value) { parameters_.emplace_back(key, value); }
-void Output::parameter(const std::string& key, double value) { parameters_.emplace_back(key, format_double(value)); }
+void Output::parameter(const std::string& key, double value) { parameters_.emplace_back(key, format_shortest(value)); }
 
 std::string Output::header() const {
   std::string h = "# experiment: " + name_ + "\n# dfchaos " + version() + " (" + git_hash() + "), " + compiler_id() + "\n";
@@ -235,7 +235,7 @@ std::string Output::header() const {
 
 void Output::table(const std::string& part, const Table& t, const std::string& description) {
   const std::string file = part.empty() ? name_ : name_ + "-" + part;
-  files_.emplace_back(root_ / "data" / (file + ".tsv"), header() + "# " + description + "\n" + t.render());
+  files_.emplace_back(root_ / "data" / (file + ".tsv"), t.render(header() + "# " + description + "\n"));
   written_.emplace_back("data", part);
 }
 

@@ -15,10 +15,12 @@ Table& Table::row(std::vector<Cell> cells) {
   return *this;
 }
 
-std::string Table::render() const {
+std::string Table::render() const { return render(""); }
+
+std::string Table::render(const std::string& comments) const {
   std::string out;
   for (std::size_t k = 0; k < columns_.size(); ++k) out += (k ? "\t" : "") + columns_[k];
-  out += "\n";
+  out += "\n" + comments;
   for (const auto& r : rows_) {
     for (std::size_t k = 0; k < r.size(); ++k) {
       if (k) out += "\t";

@@ -26,7 +26,7 @@ bool starts_with(std::string_view s, std::string_view prefix) { return s.substr(
 }  // namespace
 
 std::string header_text(const Spec& spec, const std::optional<Shard>& shard) {
-  std::string h(kTitleLine);
+  std::string h = join_tabs(spec.columns()) + "\n" + std::string(kTitleLine);
   h += "\n# dfchaos " + std::string(kit::version()) + " (" + kit::git_hash() + "), " + kit::compiler_id() + "\n";
   for (const auto& line : spec.header_lines()) h += "# " + line + "\n";
   if (shard) {
@@ -34,24 +34,41 @@ std::string header_text(const Spec& spec, const std::optional<Shard>& shard) {
          std::to_string(shard->index) + ": " + std::to_string(shard->size(spec.cells())) + " of " + std::to_string(spec.cells()) +
          "; dfchaos sweep-merge joins the shards)\n";
   }
-  h += join_tabs(spec.columns()) + "\n";
   return h;
 }
 
 ParsedHeader read_header(const std::string& option, const std::string& file, std::istream& in) {
   ParsedHeader h;
   std::string line;
-  bool titled = false, has_cells = false;
+  // The column line comes first (so that numpy.genfromtxt(names=True) takes its names from it).
+  if (!std::getline(in, line) || in.eof())  // every header line ends in '\n'
+    throw InvalidParameter(option, file + " ends inside its header (not a complete sweep output)");
+  if (!starts_with(line, "index\t"))
+    throw InvalidParameter(option, file + " is not a sweep output (its first line is not the column line 'index<TAB>q_over_a<TAB>...')");
+  for (std::size_t at = 0;;) {
+    const std::size_t tab = line.find('\t', at);
+    h.columns.push_back(line.substr(at, tab == std::string::npos ? std::string::npos : tab - at));
+    if (tab == std::string::npos) break;
+    at = tab + 1;
+  }
+  h.fields = h.columns.size();
+  if (h.columns.size() < 5 || h.columns[1] != "q_over_a" || h.columns[2] != "b_over_a" || h.columns[3] != "status" || h.columns.back() != "error")
+    throw InvalidParameter(option, file + ": malformed column line (index, q_over_a, b_over_a, status, ..., error expected)");
+  h.common += line + "\n";
+  // Then the '#' lines: the title, the build, the spec (with the cell count) and, last, the shard line.
+  bool has_cells = false;
   for (int n = 0; n < kMaxHeaderLines; ++n) {
-    if (!std::getline(in, line) || in.eof())  // the column line must end in '\n' too
-      throw InvalidParameter(option, file + " ends inside its header (not a complete sweep output)");
-    if (n == 0) {
-      if (line != kTitleLine)
-        throw InvalidParameter(option, file + " is not a sweep output (its first line is not '" + std::string(kTitleLine) + "')");
-      titled = true;
+    if (in.peek() != '#') {
+      if (!has_cells) throw InvalidParameter(option, file + ": malformed sweep header (no cell count line)");
+      if (h.shard && h.shard->count > h.cells) throw InvalidParameter(option, file + ": more shards than cells");
+      return h;
     }
+    if (!std::getline(in, line) || in.eof()) throw InvalidParameter(option, file + " ends inside its header (not a complete sweep output)");
+    if (n == 0 && line != kTitleLine)
+      throw InvalidParameter(option, file + " is not a sweep output (its second line is not '" + std::string(kTitleLine) + "')");
+    if (starts_with(line, "# end:")) throw InvalidParameter(option, file + " has no rows after its header (not a complete sweep output)");
+    if (h.shard) throw InvalidParameter(option, file + ": a header line after the shard line");
     if (starts_with(line, kShardPrefix)) {
-      if (h.shard) throw InvalidParameter(option, file + " has two shard lines");
       const std::string text = line.substr(kShardPrefix.size(), line.find(' ', kShardPrefix.size()) - kShardPrefix.size());
       h.shard = Shard::parse(option + " (" + file + ")", text, kMaxShards);  // checked against the cells below
       continue;
@@ -62,21 +79,6 @@ ParsedHeader read_header(const std::string& option, const std::string& file, std
       has_cells = end != line.c_str() + kCellsPrefix.size() && h.cells >= 1 && h.cells <= kMaxCells;
     }
     h.common += line + "\n";
-    if (line.empty() || line[0] != '#') {  // the column line
-      if (!titled || !has_cells || !starts_with(line, "index\t"))
-        throw InvalidParameter(option, file + ": malformed sweep header (no cell count or column line)");
-      h.fields = static_cast<std::size_t>(std::count(line.begin(), line.end(), '\t')) + 1;
-      for (std::size_t at = 0;;) {
-        const std::size_t tab = line.find('\t', at);
-        h.columns.push_back(line.substr(at, tab == std::string::npos ? std::string::npos : tab - at));
-        if (tab == std::string::npos) break;
-        at = tab + 1;
-      }
-      if (h.columns.size() < 5 || h.columns[1] != "q_over_a" || h.columns[2] != "b_over_a" || h.columns[3] != "status" || h.columns.back() != "error")
-        throw InvalidParameter(option, file + ": malformed column line (index, q_over_a, b_over_a, status, ..., error expected)");
-      if (h.shard && h.shard->count > h.cells) throw InvalidParameter(option, file + ": more shards than cells");
-      return h;
-    }
   }
   throw InvalidParameter(option, file + ": header longer than " + std::to_string(kMaxHeaderLines) + " lines");
 }

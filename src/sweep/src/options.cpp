@@ -2,6 +2,7 @@
 #include "sweep/options.hpp"
 
 #include "dfchaos/errors.hpp"
+#include "kit/format.hpp"
 #include "kit/options.hpp"
 #include "sweep/cell.hpp"
 #include "sweep/header.hpp"
@@ -19,10 +20,10 @@ long long count(const std::string& name, const std::string& text, long long lo, 
 
 void SweepArguments::add_to(CLI::App* app) {
   app->add_option("--a", a,
-                  "forcing amplitude, " + format_double(kMinA) + " <= a <= " + format_double(kMaxA) + " (default 1; only q/a and b/a matter)")
+                  "forcing amplitude, " + format_shortest(kMinA) + " <= a <= " + format_shortest(kMaxA) + " (default 1; only q/a and b/a matter)")
       ->type_name("FLOAT");
   app->add_option("--q-range", q_range, "q/a axis lo:hi:n[:lin|log|mid] (every q/a > 0)")->required()->type_name("LO:HI:N[:KIND]");
-  app->add_option("--b-range", b_range, "b/a axis lo:hi:n[:lin|log|mid] (every b/a in [" + format_double(kMinMapRatio) + ", 1/2))")
+  app->add_option("--b-range", b_range, "b/a axis lo:hi:n[:lin|log|mid] (every b/a in [" + format_shortest(kMinMapRatio) + ", 1/2))")
       ->required()
       ->type_name("LO:HI:N[:KIND]");
   app->add_option("--observables", observables,
@@ -55,9 +56,11 @@ void SweepArguments::add_to(CLI::App* app) {
   app->add_option("--max-chunks", max_chunks, "with --resume: stop after N new chunks, exit status 3 (0: no limit)")->type_name("N");
   app->add_flag("--progress", progress, "progress on stderr even when it is not a terminal");
   app->footer(
-      "Output (TSV, stdout unless --out/--resume): '#' header lines (title; dfchaos version, git hash, compiler; the spec as\n"
-      "'key = value'; shard files also '# shard = i/N'), then the column names, then one row per cell in increasing index\n"
-      "(index = i*n_b + j, i over q/a, j over b/a), numbers in %.17g:\n"
+      "Output (TSV, stdout unless --out/--resume): the column names, then '#' header lines (title; dfchaos version, git hash,\n"
+      "compiler; the spec as 'key = value'; shard files last '# shard = i/N'), then one row per cell in increasing index\n"
+      "(index = i*n_b + j, i over q/a, j over b/a), numbers in %.17g. One call reads it with its names:\n" +
+      std::string(kit::kLoadInPython) +
+      ".\nThe columns:\n"
       "  index, q_over_a, b_over_a   the cell\n"
       "  status       ok | inadmissible (q/a <= 2 b/a) | error (an observable threw; its values nan)\n"
       "  covering     Lemma 4 / Theorem 1: two disjoint covering segments found (1) or not (0)\n"

@@ -43,7 +43,7 @@ Range Range::parse(const std::string& option, const std::string& text) {
   r.hi_ = kit::parse_number(option + " hi", parts[1], false);
   const double n = kit::parse_number(option + " n", parts[2], true);
   if (n < 1 || n > static_cast<double>(kMaxAxisPoints))
-    throw InvalidParameter(option + " n", "1 <= n <= " + format_double(static_cast<double>(kMaxAxisPoints)), n);
+    throw InvalidParameter(option + " n", "1 <= n <= " + format_shortest(static_cast<double>(kMaxAxisPoints)), n);
   r.n_ = static_cast<long long>(n);
   if (parts.size() == kMaxParts) {
     if (parts[3] == "lin")
@@ -84,7 +84,7 @@ void Range::require_within(const std::string& option, double open_lo, double ope
 double Range::operator[](long long i) const { return axis_[static_cast<int>(i)]; }
 
 std::string Range::canonical() const {
-  return format_double(lo_) + ":" + format_double(hi_) + ":" + std::to_string(n_) + ":" + spacing_name(spacing_);
+  return format_shortest(lo_) + ":" + format_shortest(hi_) + ":" + std::to_string(n_) + ":" + spacing_name(spacing_);
 }
 
 }  // namespace dfchaos::sweep

@@ -15,7 +15,8 @@ std::string count_text(long long v) { return std::to_string(v); }
 }  // namespace
 
 void Spec::validate() const {
-  if (!(a >= kMinA && a <= kMaxA)) throw InvalidParameter("a", format_double(kMinA) + " <= a <= " + format_double(kMaxA) + " (the model's range)", a);
+  if (!(a >= kMinA && a <= kMaxA))
+    throw InvalidParameter("a", format_shortest(kMinA) + " <= a <= " + format_shortest(kMaxA) + " (the model's range)", a);
   if (q_over_a.size() < 1 || b_over_a.size() < 1) throw InvalidParameter("q-range", "both ranges are required");
   q_over_a.require_within("q-range", 0, INFINITY, "every q/a must be positive and finite");
   for (double r : {q_over_a[0], q_over_a[q_over_a.size() - 1]})
@@ -24,7 +25,7 @@ void Spec::validate() const {
   // The axes are monotone: the smallest b/a is at one end.
   const double b_least = std::min(b_over_a[0], b_over_a[b_over_a.size() - 1]);
   if (!(b_least >= kMinMapRatio))
-    throw InvalidParameter("b-range", "every b/a >= " + format_double(kMinMapRatio) + " (the accuracy floor of T, docs/accuracy.md)", b_least);
+    throw InvalidParameter("b-range", "every b/a >= " + format_shortest(kMinMapRatio) + " (the accuracy floor of T, docs/accuracy.md)", b_least);
   // The parameters themselves, a·(q/a) and a·(b/a), must be finite and positive (a huge or tiny a
   // would overflow or underflow them).
   for (double r : {q_over_a[0], q_over_a[q_over_a.size() - 1], b_over_a[0], b_over_a[b_over_a.size() - 1]})
@@ -48,18 +49,18 @@ void Spec::validate() const {
   if (period.max < 1 || period.max > kMaxPeriod)
     throw InvalidParameter("period-max", "1 <= period-max <= " + count_text(kMaxPeriod), static_cast<double>(period.max));
   if (!(period.tol >= kMinPeriodTol && period.tol <= kMaxPeriodTol))
-    throw InvalidParameter("period-tol", format_double(kMinPeriodTol) + " <= period-tol <= " + format_double(kMaxPeriodTol), period.tol);
+    throw InvalidParameter("period-tol", format_shortest(kMinPeriodTol) + " <= period-tol <= " + format_shortest(kMaxPeriodTol), period.tol);
   if (observables.needs_orbit()) {
     const double work =
         static_cast<double>(cells()) * static_cast<double>(orbit.transient + orbit.steps + (observables.has(Observable::Period) ? period.max : 0));
     if (work > kMaxOrbitEvaluations)
-      throw InvalidParameter("steps", "cells * (transient + steps + period-max) <= 1e12 evaluations of T (got " + format_double(work) + ")");
+      throw InvalidParameter("steps", "cells * (transient + steps + period-max) <= 1e12 evaluations of T (got " + format_shortest(work) + ")");
   }
 }
 
 std::vector<std::string> Spec::header_lines() const {
   std::vector<std::string> h;
-  h.push_back("a = " + format_double(a));
+  h.push_back("a = " + format_shortest(a));
   h.push_back("q_over_a = " + q_over_a.canonical());
   h.push_back("b_over_a = " + b_over_a.canonical());
   h.push_back("observables = " + observables.canonical());
@@ -69,13 +70,13 @@ std::vector<std::string> Spec::header_lines() const {
                 " for certified)");
   if (observables.has(Observable::Superstable)) h.push_back("superstable_scan = " + count_text(superstable_scan));
   if (observables.needs_orbit()) {
-    h.push_back("theta0 = " + format_double(orbit.theta0_fraction) + "  (theta_0 = t2 + theta0 (t3 - t2))");
+    h.push_back("theta0 = " + format_shortest(orbit.theta0_fraction) + "  (theta_0 = t2 + theta0 (t3 - t2))");
     h.push_back("transient = " + count_text(orbit.transient));
     h.push_back("steps = " + count_text(orbit.steps));
   }
   if (observables.has(Observable::Period)) {
     h.push_back("period_max = " + count_text(period.max));
-    h.push_back("period_tol = " + format_double(period.tol) +
+    h.push_back("period_tol = " + format_shortest(period.tol) +
                 "  (period: the smallest k <= period_max with |T^k(e) - e| <= period_tol on the circle, "
                 "e = T^(transient+steps)(theta_0); 0 if none)");
   }
@@ -102,7 +103,7 @@ std::vector<std::string> Spec::columns() const {
 Spec report_plane(long long n, const std::string& observables) {
   Spec spec;
   spec.a = 1;
-  spec.q_over_a = Range::parse("q-range", format_double(sin_vartheta0()) + ":1:" + std::to_string(n) + ":mid");
+  spec.q_over_a = Range::parse("q-range", format_shortest(sin_vartheta0()) + ":1:" + std::to_string(n) + ":mid");
   spec.b_over_a = Range::parse("b-range", "1e-4:0.1:" + std::to_string(n) + ":log");
   spec.observables = ObservableSet::parse("observables", observables);
   spec.validate();

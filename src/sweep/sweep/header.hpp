@@ -31,20 +31,22 @@
 
 namespace dfchaos::sweep {
 
-/// The first line of every sweep output.
+/// The second line of every sweep output (the first is the column line).
 inline constexpr std::string_view kTitleLine = "# dfchaos sweep: observables over the (q/a, b/a) plane";
 /// The prefix of the shard line.
 inline constexpr std::string_view kShardPrefix = "# shard = ";
 /// The prefix of the cell-count line.
 inline constexpr std::string_view kCellsPrefix = "# cells = ";
 
-/// The header (comment lines and the column line, each ending in '\n') of the output of `spec`;
-/// with a shard line when `shard` is given.
+/// The header of the output of `spec`, each line ending in '\n': the column line, then the comment
+/// lines (the title kTitleLine, the build, the spec), and last the shard line when `shard` is given.
+/// The column line comes first so that one standard call reads the file with its names
+/// (docs/cluster.md, "Reading the output").
 std::string header_text(const Spec& spec, const std::optional<Shard>& shard);
 
 /// A header read back from a file.
 struct ParsedHeader {
-  std::string common;                ///< every header line but the shard line, with the column line, as text
+  std::string common;                ///< the column line and every header line but the shard line, as text
   std::optional<Shard> shard;        ///< from the shard line, if any
   long long cells = 0;               ///< from the cells line
   std::size_t fields = 0;            ///< the number of columns
