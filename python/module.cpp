@@ -30,4 +30,6 @@ the CLI's one-line message; dfchaos.GaveUp (a RuntimeError) when a bounded compu
   dp::bind_simulate(m);
   dp::bind_covering(m);
   dp::bind_certify(m);
+  dp::bind_orbit(m);
+  dp::bind_sweep(m);
 }
