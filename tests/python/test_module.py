@@ -70,7 +70,7 @@ def test_assumptions_and_requirements():
 
 def test_repr_and_pickle():
     p = dfchaos.Parameters(1.0, 0.1 + 0.2, 0.85)
-    assert repr(p) == "dfchaos.Parameters(a=1.0, b=0.30000000000000004, q=0.85)"
+    assert repr(p) == "dfchaos.Parameters(a=1, b=0.30000000000000004, q=0.85)"
     assert eval(repr(p), {"dfchaos": dfchaos}).b == p.b
     r = pickle.loads(pickle.dumps(p))
     assert (r.a, r.b, r.q, r.t2, r.t3) == (p.a, p.b, p.q, p.t2, p.t3)
