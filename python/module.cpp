@@ -29,7 +29,8 @@ The plane, the full system, Lemma 4 and the proofs:
   sweep(q_range, b_range, ...)     numpy columns of `dfchaos sweep` and its provenance
   simulate(p, x0, y0, v0, t0, t_end, sample=..., max_events=...)
   covering_segments(p), lemma4_covering(p)
-  certify(what, ...)               proofs in ball arithmetic, as `dfchaos certify`
+  certify(what, ...)               proofs in ball arithmetic, as `dfchaos certify`: a Certified
+                                   (the record as a dict; .proved, .statement, .J0, .J1 as Interval)
 Constants: vartheta0, sin_vartheta0, min_parameter, max_parameter, min_map_ratio,
 max_simulation_time, max_elements, scenario_names. help(dfchaos.NAME) gives the details.
 
@@ -40,6 +41,8 @@ Errors (the only two exception classes of the module):
   GaveUp             a bounded computation reached its bound without an answer (a motion that never
                      flies again, more events than max_events); a subclass of RuntimeError.
 A wrong type (a str for a number, a bool array) raises TypeError.
+Result types: Certified (certify's record, a dict with typed attributes) and Interval(lo, hi) (a
+closed interval of doubles); help(dfchaos.Certified) and help(dfchaos.Interval) describe them.
 Array arguments take any array-like (cast to contiguous float64) and give arrays of its shape; long
 loops run in C++ without the GIL.)doc";
   m.attr("__version__") = DFCHAOS_VERSION;
@@ -50,12 +53,13 @@ loops run in C++ without the GIL.)doc";
   dp::bind_certify(m);
   dp::bind_orbit(m);
   dp::bind_sweep(m);
-  // What help(dfchaos) documents: every public name but the two exception classes, documented once
-  // in the docstring above (pydoc would list some 75 inherited exception methods for each).
+  // What help(dfchaos) documents: every public name but the two exception classes and the two
+  // result types (a tuple and a dict subclass), documented in the docstring above (pydoc would list
+  // some 75 inherited methods for each exception and 100 for the dict).
   dp::py::list all;
   for (const auto& item : m.attr("__dict__").cast<dp::py::dict>()) {
     const auto name = item.first.cast<std::string>();
-    if (name.rfind('_', 0) != 0 && name != "InvalidParameter" && name != "GaveUp") all.append(name);
+    if (name.rfind('_', 0) != 0 && name != "InvalidParameter" && name != "GaveUp" && name != "Interval" && name != "Certified") all.append(name);
   }
   m.attr("__all__") = all;
 }

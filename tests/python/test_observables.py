@@ -145,7 +145,8 @@ def test_sweep_equals_the_tool_file(cli, tmp_path):
                                "rate", "period", "certified"], max_branches=60, superstable_scan=50, theta0_fraction=0.25,
                                transient=100, steps=200, period_max=20, period_tol=1e-7)
     assert list(cols) == names == prov["columns"]
-    assert prov["header"] == "".join(lines[:k + 1])
+    # The header names the build (version, git hash): rebuild both dfchaos_cli and dfchaos_python.
+    assert prov["header"] == "".join(lines[:k + 1]), "the module and the tool are not of the same build?"
     assert prov["version"] == dfchaos.__version__ and prov["a"] == "2" and prov["steps"] == "200"
     assert prov["q_over_a"] == "0.75:0.94999999999999996:3:lin"
     by_column = list(zip(*rows))
