@@ -4,6 +4,7 @@ whose attributes give proved, the statement, J0 and J1 as dfchaos.Interval, ever
 Interval rounded outward, and the certificate when asked for."""
 import json
 import math
+import pickle
 from decimal import Decimal
 from fractions import Fraction
 
@@ -34,6 +35,8 @@ def test_covering_as_an_object_equals_the_tool(cli):
     assert r.J0.lo in r.J0 and r.J1.lo not in r.J0 and math.isclose(r.J0.width, r.J0.hi - r.J0.lo)
     assert r.certificate is None
     assert repr(r).startswith("<dfchaos.Certified covering: proved=True, J0=Interval(lo=")
+    back = pickle.loads(pickle.dumps(r))
+    assert type(back) is dfchaos.Certified and back == r and back.what == "covering" and back.J1 == r.J1
 
 
 @pytest.mark.crossval
