@@ -238,3 +238,24 @@ def test_wrong_types_and_keywords():
         dfchaos.sweep("0.85:0.85:1", "0.01:0.01:1", theta0=0.5)  # a fraction: theta0_fraction
     with pytest.raises(TypeError):
         dfchaos.sweep(0.85, "0.01:0.01:1")
+
+
+def test_orbit_observables_from_threads():
+    """lyapunov and sweep release the GIL: four Python threads at once give the serial values."""
+    import threading
+    sets = [dfchaos.Parameters(1.0, b, 0.85) for b in (0.005, 0.01, 0.02, 0.05)]
+    ref = [dfchaos.lyapunov(p, steps=20000, transient=100) for p in sets]
+    ref_sweep = dfchaos.sweep("0.8:0.9:3", "0.01:0.03:3", observables="lyapunov,period")[0]["lyapunov"]
+    out, sweeps = [None] * 4, [None] * 4
+
+    def work(k):
+        out[k] = dfchaos.lyapunov(sets[k], steps=20000, transient=100)
+        sweeps[k] = dfchaos.sweep("0.8:0.9:3", "0.01:0.03:3", observables="lyapunov,period")[0]["lyapunov"]
+    threads = [threading.Thread(target=work, args=(k,)) for k in range(4)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    assert out == ref
+    for s in sweeps:
+        assert np.array_equal(s, ref_sweep)
