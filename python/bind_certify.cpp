@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 /// @file bind_certify.cpp
 /// @brief dfchaos.certify: the certified statements (certify/certify.hpp) from Python, with the same
-/// checks and the same records as `dfchaos certify`, returned as a dict.
+/// checks and the same records as `dfchaos certify`, returned as a dfchaos.Certified (the record as
+/// a dict, with typed attributes; J0, J1 and the enclosures as dfchaos.Interval).
+#include <pybind11/eval.h>
 #include <pybind11/stl.h>
 
 #include <cmath>
@@ -91,22 +93,110 @@ py::object certify_py(const std::string& what, double a, std::optional<NumberOrB
       }
     }
   }
-  return to_python(c.record.value());
+  py::object result = py::module_::import("dfchaos").attr("Certified")(to_python(c.record.value()));
+  result.attr("what") = what;
+  return result;
 }
+
+/// The Python side of the results: Interval (a closed interval of doubles, from a [lo, hi] pair or
+/// rounded outward from a decimal ball) and Certified (the record, a dict, with typed attributes).
+/// Pure Python types: no object of them holds C++ state.
+constexpr const char* kResultTypes = R"py(
+import collections as _collections
+import decimal as _decimal
+import fractions as _fractions
+import math as _math
+
+
+class Interval(_collections.namedtuple("Interval", "lo hi")):
+    """Interval(lo, hi): the closed interval [lo, hi] of doubles (exact binary numbers), lo <= hi.
+    x in I tests lo <= x <= hi. Interval.from_ball({'mid': '...', 'rad': '...'}) is the smallest
+    interval of doubles that contains the decimal ball mid +- rad of a certified record (rounded
+    outward: it contains everything the ball contains)."""
+    __slots__ = ()
+
+    def __contains__(self, x):
+        return self.lo <= x <= self.hi
+
+    @property
+    def width(self):
+        """hi - lo (rounded to nearest)."""
+        return self.hi - self.lo
+
+    @classmethod
+    def from_ball(cls, ball):
+        mid, rad = (_fractions.Fraction(_decimal.Decimal(ball[k])) for k in ("mid", "rad"))
+        lo, hi = mid - rad, mid + rad
+        down, up = float(lo), float(hi)
+        if _fractions.Fraction(down) > lo:
+            down = _math.nextafter(down, -_math.inf)
+        if _fractions.Fraction(up) < hi:
+            up = _math.nextafter(up, _math.inf)
+        return cls(down, up)
+
+
+def _is_ball(v):
+    return isinstance(v, dict) and set(v) == {"mid", "rad"}
+
+
+class Certified(dict):
+    """The answer of dfchaos.certify: the JSON record of `dfchaos certify` as a dict (equal to
+    json.loads of the tool's output but for the time taken), with typed attributes:
+      what          the statement asked for ('covering', 'lemma1', ...)
+      proved        True when proved in ball arithmetic; False means not proved (never "false")
+      statement     what exactly is proved, and for which parameters
+      failed_step, detail, refuted   why not (None when proved)
+      J0, J1        the covering segments as Interval (covering, periodic; None when absent)
+      enclosures    every top-level enclosure of the record as an Interval (rounded outward)
+      certificate   with certify(..., certificate=path): {'path', 'bytes', 'sha256'} or
+                    {'written': False, 'reason': ...}; None when not asked for"""
+    __slots__ = ("what",)
+
+    proved = property(lambda self: self["proved"])
+    statement = property(lambda self: self["statement"])
+    failed_step = property(lambda self: self.get("failed_step"))
+    detail = property(lambda self: self.get("detail"))
+    refuted = property(lambda self: self.get("refuted"))
+    J0 = property(lambda self: Interval(*self["J0"]) if "J0" in self else None)
+    J1 = property(lambda self: Interval(*self["J1"]) if "J1" in self else None)
+    certificate = property(lambda self: self.get("certificate"))
+
+    @property
+    def enclosures(self):
+        return {k: Interval.from_ball(v) for k, v in self.items() if _is_ball(v)}
+
+    def __repr__(self):
+        what = getattr(self, "what", "?")
+        parts = [f"proved={self.get('proved')!r}"]
+        if not self.get("proved", True):
+            parts.append(f"failed_step={self.get('failed_step')!r}")
+        for name in ("J0", "J1"):
+            if name in self:
+                parts.append(f"{name}={getattr(self, name)!r}")
+        return f"<dfchaos.Certified {what}: {', '.join(parts)}>"
+)py";
 
 }  // namespace
 
 void bind_certify(py::module_& m) {
+  py::dict scope;
+  scope["__name__"] = "dfchaos";
+  py::exec(kResultTypes, scope);
+  m.attr("Interval") = scope["Interval"];
+  m.attr("Certified") = scope["Certified"];
   m.def("certify", &certify_py, py::arg("what"), py::arg("a") = 1.0, py::arg("b") = py::none(), py::arg("q") = py::none(), py::arg("period") = 0,
         py::arg("segment") = "L0", py::arg("window") = py::none(), py::arg("certificate") = py::none(),
-        R"doc(certify(what, a=1.0, b=None, q=None, period=0, segment='L0', window=None, certificate=None) -> dict
+        R"doc(certify(what, a=1.0, b=None, q=None, period=0, segment='L0', window=None, certificate=None) -> Certified
 
 A proof in ball arithmetic (Arb), as `dfchaos certify WHAT` gives it: `what` is one of vartheta0 (Eq. 1),
 lemma1 (Lemma 1), b0 (a certified lower bound of b0(q)), discontinuities (Lemma 2, on segment L0 or L2),
 covering (Lemma 4 / Theorem 1), periodic (Sections 6-7, minimal period `period`) or superstable
 (Theorem 2; with `window=(lo, hi)` a window in b with both edges). `b` and `q` are numbers or (lo, hi)
-boxes where the request allows them. Returns the JSON record as a dict: "proved" (True/False), the
-statement, the enclosures (decimal mid and radius), and on failure the step that failed. Bad input
+boxes where the request allows them. Returns a dfchaos.Certified: the JSON record of the tool as a
+dict ("proved" True/False, the statement, the enclosures as decimal mid and radius, on failure the
+step that failed) whose attributes give the answer typed: .proved, .statement, .failed_step,
+.J0 and .J1 as dfchaos.Interval(lo, hi), .enclosures (each ball as an Interval rounded outward),
+.certificate (see help(dfchaos.Certified)). The C++ API is called directly. Bad input
 raises dfchaos.InvalidParameter with the CLI's message. Doubles are exact binary numbers: the proofs
 are for those numbers (or every parameter of the box).
 

@@ -8,13 +8,11 @@
 #include "dfchaos/errors.hpp"
 #include "dfchaos/parameters.hpp"
 #include "dfchaos/simulator.hpp"
+#include "dfchaos/units.hpp"
 
 namespace dfchaos::python {
 
 namespace {
-
-/// Shortest round-trip spelling of a double, as Python's repr.
-std::string py_repr(double x) { return py::repr(py::float_(x)).cast<std::string>(); }
 
 Parameters make_parameters(double a, double b, double q) { return Parameters(finite("a", a), finite("b", b), finite("q", q)); }
 
@@ -67,6 +65,26 @@ conditions of the paper are demanded by the functions that need them (require_re
 Picklable; immutable. An object made by Parameters.__new__ without __init__ is refused by every
 function and method with a TypeError.)doc")
       .def(py::init(&make_parameters), py::arg("a"), py::arg("b"), py::arg("q"))
+      .def_static(
+          "from_physical",
+          [](double mass, double omega, double amplitude, double static_force, double friction) {
+            return from_physical(finite("mass", mass), finite("omega", omega), finite("amplitude", amplitude), finite("static_force", static_force),
+                                 finite("friction", friction));
+          },
+          py::arg("mass"), py::arg("omega"), py::arg("amplitude"), py::arg("static_force"), py::arg("friction"),
+          R"doc(Parameters.from_physical(mass, omega, amplitude, static_force, friction) -> Parameters
+
+The parameters of a drilling model given in physical units (docs/units.md derives them): a mass
+`mass` (kg) obeying m X'' = F0 sin(omega tau) + P in free flight and m X'' = F0 sin(omega tau) + P - Q
+while it drags the delimiter, with omega the angular frequency of the forcing (rad/s), F0 =
+`amplitude` the amplitude of the harmonic force (N), P = `static_force` the constant force (N) and
+Q = `friction` the largest dry-friction force of the delimiter (N). Time is scaled by omega
+(t = omega tau) and forces by mass * omega^2, so that
+  a = F0 / (m omega^2),   b = P / (2 m omega^2),   q = Q / (m omega^2),
+lengths in the unit of the input (metres for SI); back: tau = t / omega, speeds times omega.
+Example: Parameters.from_physical(0.5, 100, 5000, 100, 4250) is dfchaos.Parameters(a=1, b=0.01, q=0.85).
+Raises ValueError naming the argument unless each is finite and positive (the same function and
+messages as `dfchaos info --physical`).)doc")
       .def_property_readonly("a", &Parameters::a, "amplitude of the harmonic forcing")
       .def_property_readonly("b", &Parameters::b, "half the constant forcing component")
       .def_property_readonly("q", &Parameters::q, "maximal dry-friction force of the delimiter")
@@ -111,7 +129,8 @@ function and method with a TypeError.)doc")
                return "<dfchaos.Parameters, not initialised>";
              }
              const auto& p = self.cast<const Parameters&>();
-             return "dfchaos.Parameters(a=" + py_repr(p.a()) + ", b=" + py_repr(p.b()) + ", q=" + py_repr(p.q()) + ")";
+             // The shortest decimals that read back to the same doubles (the library's format_shortest).
+             return "dfchaos.Parameters(a=" + format_shortest(p.a()) + ", b=" + format_shortest(p.b()) + ", q=" + format_shortest(p.q()) + ")";
            })
       .def(py::pickle([](const Parameters& p) { return py::make_tuple(p.a(), p.b(), p.q()); },
                       [](const py::tuple& t) {

@@ -111,6 +111,8 @@ void bind_map(py::module_& m);         ///< T, T1, step, orbit, scenario_names, 
 void bind_simulate(py::module_& m);    ///< simulate (bind_simulate.cpp)
 void bind_covering(py::module_& m);    ///< covering_segments, lemma4_covering (bind_covering.cpp)
 void bind_certify(py::module_& m);     ///< certify: proofs in ball arithmetic (bind_certify.cpp)
+void bind_orbit(py::module_& m);       ///< lyapunov, rate, period, derivative (bind_orbit.cpp)
+void bind_sweep(py::module_& m);       ///< sweep: the (q/a, b/a) plane as `dfchaos sweep` (bind_sweep.cpp)
 
 }  // namespace dfchaos::python
 

@@ -31,10 +31,13 @@ def unconstructed(cls=dfchaos.Parameters):
 # ---- item 9: Parameters.__new__ without __init__ ------------------------------------------------
 
 def test_parameters_is_the_only_class_bound():
-    """The checks below cover every class of the module: a new class must be added to them."""
+    """The checks below cover every class of the module bound to C++: a new class must be added to them.
+    Interval and Certified are pure Python types (a tuple and a dict subclass): they hold no C++ state."""
     classes = {name for name, obj in vars(dfchaos).items()
                if isinstance(obj, type) and not issubclass(obj, BaseException)}
-    assert classes == {"Parameters"}
+    assert classes == {"Parameters", "Interval", "Certified"}
+    for name in ("Interval", "Certified"):
+        assert not issubclass(vars(dfchaos)[name], dfchaos.Parameters.__mro__[1]), name  # not a pybind11 object
 
 
 # Every use of a Parameters: its properties, its methods, pickling, every function taking one.
@@ -55,6 +58,10 @@ USES = {
     "covering_segments": lambda p: dfchaos.covering_segments(p, method="branchwise"),
     "lemma4_covering": lambda p: dfchaos.lemma4_covering(p, method="branchwise"),
     "_bench_T": lambda p: dfchaos._bench_T(p, [4.0]),
+    "lyapunov": lambda p: dfchaos.lyapunov(p, 4.0, 3, 0),
+    "rate": lambda p: dfchaos.rate(p, steps=3, transient=0),
+    "period": lambda p: dfchaos.period(p, steps=3, transient=0),
+    "derivative": lambda p: dfchaos.derivative(p, 4.0),
 }
 
 
@@ -62,7 +69,7 @@ def test_every_use_is_listed():
     """Every property of Parameters and every function of the module taking one is in USES."""
     assert {f"property {n}" for n in ("a", "b", "q", "c", "t0", "t1", "t2", "t3", "assumptions")} <= set(USES)
     functions = {name for name, f in vars(dfchaos).items() if callable(f) and not isinstance(f, type)}
-    assert functions - {"certify"} == {k for k in USES if k in functions}  # certify takes no Parameters
+    assert functions - {"certify", "sweep"} == {k for k in USES if k in functions}  # certify, sweep take no Parameters
 
 
 @pytest.mark.parametrize("cls", [dfchaos.Parameters, type("Sub", (dfchaos.Parameters,), {})], ids=["Parameters", "subclass"])

@@ -25,8 +25,24 @@ def test_module_metadata():
     assert dfchaos.min_map_ratio == 1e-12 and dfchaos.max_simulation_time == 1e12
     assert dfchaos.max_elements == 10**8
     assert issubclass(dfchaos.InvalidParameter, ValueError) and issubclass(dfchaos.GaveUp, RuntimeError)
-    for f in (dfchaos.T, dfchaos.T1, dfchaos.step, dfchaos.orbit, dfchaos.simulate, dfchaos.covering_segments):
+    for f in (dfchaos.T, dfchaos.T1, dfchaos.step, dfchaos.orbit, dfchaos.simulate, dfchaos.covering_segments,
+              dfchaos.lyapunov, dfchaos.rate, dfchaos.period, dfchaos.derivative, dfchaos.sweep):
         assert len(f.__doc__) > 200, f.__name__
+
+
+def test_help_is_a_short_guide():
+    """help(dfchaos): the docstring names every public function and both exceptions once; pydoc shows
+    no inherited exception methods (the exceptions are left out of __all__, documented in the guide)."""
+    import pydoc
+    text = pydoc.render_doc(dfchaos, renderer=pydoc.plaintext)
+    assert "inherited from builtins.BaseException" not in text
+    assert len(text.splitlines()) < 450, len(text.splitlines())
+    public = {n for n in vars(dfchaos) if not n.startswith("_")}
+    assert set(dfchaos.__all__) == public - {"InvalidParameter", "GaveUp", "Interval", "Certified"}
+    for name in public:
+        assert name in dfchaos.__doc__, name
+    assert dfchaos.__doc__.count("InvalidParameter ") == 1 and dfchaos.__doc__.count("GaveUp ") == 1
+    assert len(dfchaos.__doc__.splitlines()) < 45
 
 
 def test_vartheta0_solves_eq1():
@@ -70,7 +86,7 @@ def test_assumptions_and_requirements():
 
 def test_repr_and_pickle():
     p = dfchaos.Parameters(1.0, 0.1 + 0.2, 0.85)
-    assert repr(p) == "dfchaos.Parameters(a=1.0, b=0.30000000000000004, q=0.85)"
+    assert repr(p) == "dfchaos.Parameters(a=1, b=0.30000000000000004, q=0.85)"
     assert eval(repr(p), {"dfchaos": dfchaos}).b == p.b
     r = pickle.loads(pickle.dumps(p))
     assert (r.a, r.b, r.q, r.t2, r.t3) == (p.a, p.b, p.q, p.t2, p.t3)

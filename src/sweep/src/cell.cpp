@@ -107,6 +107,29 @@ PlaneSuperstable plane_superstable(const Parameters& p, int scan) {
   return {.superstable = s.fixed && s.epsilon > 0, .epsilon = s.epsilon};
 }
 
+double orbit_start(const Parameters& p, double fraction) {
+  const double t2 = p.t2_required(), t3 = p.t3_required();
+  return t2 + fraction * (t3 - t2);
+}
+
+PlaneOrbit plane_orbit(const Parameters& p, double theta0, const OrbitSettings& orbit, const PeriodSettings& period, bool statistics,
+                       bool with_period) {
+  PlaneOrbit o;
+  const long long total = orbit.transient + orbit.steps;
+  double end = theta0;  // T^(transient + steps)(theta0), needed by the period only
+  if (statistics) {
+    const OrbitStatistics st = orbit_statistics(p, theta0, orbit.transient, orbit.steps, 1);
+    o.lyapunov = st.lyapunov;
+    o.rate = st.penetration_rate;
+    o.stop_image = st.last_stop_image;
+    if (with_period) end = T(p, st.tail.back());  // the tail holds T^(total - 1)(theta0)
+  } else if (with_period) {
+    end = T_power(p, theta0, total);
+  }
+  if (with_period) o.period = static_cast<double>(cycle_period(p, end, period));
+  return o;
+}
+
 CellValues evaluate_cell(const Spec& spec, long long index) {
   CellValues v;
   v.index = index;
@@ -130,20 +153,12 @@ CellValues evaluate_cell(const Spec& spec, long long index) {
     });
   if (obs.needs_orbit())
     guarded(v, "orbit", [&] {
-      const double t2 = p.t2_required(), t3 = p.t3_required();
-      const double theta0 = t2 + spec.orbit.theta0_fraction * (t3 - t2);
-      const long long total = spec.orbit.transient + spec.orbit.steps;
-      double end = theta0;  // T^(transient + steps)(theta0), needed by the period only
-      if (obs.has(Observable::Lyapunov) || obs.has(Observable::Rate)) {
-        const OrbitStatistics st = orbit_statistics(p, theta0, spec.orbit.transient, spec.orbit.steps, 1);
-        v.lyapunov = st.lyapunov;
-        v.rate = st.penetration_rate;
-        v.stop_image = st.last_stop_image;
-        if (obs.has(Observable::Period)) end = T(p, st.tail.back());  // the tail holds T^(total - 1)(theta0)
-      } else {
-        end = T_power(p, theta0, total);
-      }
-      if (obs.has(Observable::Period)) v.period = static_cast<double>(cycle_period(p, end, spec.period));
+      const PlaneOrbit o = plane_orbit(p, orbit_start(p, spec.orbit.theta0_fraction), spec.orbit, spec.period,
+                                       obs.has(Observable::Lyapunov) || obs.has(Observable::Rate), obs.has(Observable::Period));
+      v.lyapunov = o.lyapunov;
+      v.rate = o.rate;
+      v.stop_image = o.stop_image;
+      v.period = o.period;
     });
   if (obs.has(Observable::Certified))
     guarded(v, "certified", [&] {
@@ -153,6 +168,8 @@ CellValues evaluate_cell(const Spec& spec, long long index) {
     });
   return v;
 }
+
+std::string error_field(const CellValues& v) { return one_field(v.error); }
 
 std::string format_row(const Spec& spec, const CellValues& v) {
   std::string row = std::to_string(v.index) + '\t' + format_double(v.q_over_a) + '\t' + format_double(v.b_over_a) + '\t' + status_name(v.status);
@@ -174,7 +191,7 @@ std::string format_row(const Spec& spec, const CellValues& v) {
         break;
     }
   }
-  row += '\t' + one_field(v.error) + '\n';
+  row += '\t' + error_field(v) + '\n';
   return row;
 }
 

@@ -8,8 +8,8 @@
 
 namespace dfchaos::sweep {
 
-std::vector<std::string> compute_rows(const Spec& spec, const std::vector<long long>& cells, kit::Progress* progress) {
-  std::vector<std::string> rows(cells.size());
+std::vector<CellValues> compute_cells(const Spec& spec, const std::vector<long long>& cells, kit::Progress* progress) {
+  std::vector<CellValues> values(cells.size());
   const long long n = static_cast<long long>(cells.size());
   std::atomic<bool> out_of_memory{false};  // an exception cannot leave a parallel region
 #pragma omp parallel for schedule(dynamic, 1)
@@ -17,13 +17,21 @@ std::vector<std::string> compute_rows(const Spec& spec, const std::vector<long l
     if (out_of_memory.load()) continue;
     const auto i = static_cast<std::size_t>(k);
     try {
-      rows[i] = format_row(spec, evaluate_cell(spec, cells[i]));  // never throws for a cell's failure
+      values[i] = evaluate_cell(spec, cells[i]);  // never throws for a cell's failure
     } catch (const std::bad_alloc&) {
       out_of_memory.store(true);
     }
     if (progress) progress->step();
   }
   if (out_of_memory.load()) throw std::bad_alloc();  // the chunk is not delivered: the run gives up (exit 1)
+  return values;
+}
+
+std::vector<std::string> compute_rows(const Spec& spec, const std::vector<long long>& cells, kit::Progress* progress) {
+  const std::vector<CellValues> values = compute_cells(spec, cells, progress);
+  std::vector<std::string> rows;
+  rows.reserve(values.size());
+  for (const CellValues& v : values) rows.push_back(format_row(spec, v));
   return rows;
 }
 

@@ -14,6 +14,19 @@ namespace {
 std::string count_text(long long v) { return std::to_string(v); }
 }  // namespace
 
+void OrbitSettings::validate() const {
+  if (!(theta0_fraction >= 0 && theta0_fraction < 1)) throw InvalidParameter("theta0", "0 <= theta0 < 1 (a fraction of [t2, t3))", theta0_fraction);
+  if (transient < 0 || transient > kMaxTransient)
+    throw InvalidParameter("transient", "0 <= transient <= " + count_text(kMaxTransient), static_cast<double>(transient));
+  if (steps < 1 || steps > kMaxSteps) throw InvalidParameter("steps", "1 <= steps <= " + count_text(kMaxSteps), static_cast<double>(steps));
+}
+
+void PeriodSettings::validate() const {
+  if (max < 1 || max > kMaxPeriod) throw InvalidParameter("period-max", "1 <= period-max <= " + count_text(kMaxPeriod), static_cast<double>(max));
+  if (!(tol >= kMinPeriodTol && tol <= kMaxPeriodTol))
+    throw InvalidParameter("period-tol", format_shortest(kMinPeriodTol) + " <= period-tol <= " + format_shortest(kMaxPeriodTol), tol);
+}
+
 void Spec::validate() const {
   if (!(a >= kMinA && a <= kMaxA))
     throw InvalidParameter("a", format_shortest(kMinA) + " <= a <= " + format_shortest(kMaxA) + " (the model's range)", a);
@@ -40,16 +53,8 @@ void Spec::validate() const {
                            static_cast<double>(superstable_scan));
   if (covering_max_branches < 1 || covering_max_branches > kMaxCoveringBranches)
     throw InvalidParameter("max-branches", "1 <= max-branches <= " + count_text(kMaxCoveringBranches), static_cast<double>(covering_max_branches));
-  if (!(orbit.theta0_fraction >= 0 && orbit.theta0_fraction < 1))
-    throw InvalidParameter("theta0", "0 <= theta0 < 1 (a fraction of [t2, t3))", orbit.theta0_fraction);
-  if (orbit.transient < 0 || orbit.transient > kMaxTransient)
-    throw InvalidParameter("transient", "0 <= transient <= " + count_text(kMaxTransient), static_cast<double>(orbit.transient));
-  if (orbit.steps < 1 || orbit.steps > kMaxSteps)
-    throw InvalidParameter("steps", "1 <= steps <= " + count_text(kMaxSteps), static_cast<double>(orbit.steps));
-  if (period.max < 1 || period.max > kMaxPeriod)
-    throw InvalidParameter("period-max", "1 <= period-max <= " + count_text(kMaxPeriod), static_cast<double>(period.max));
-  if (!(period.tol >= kMinPeriodTol && period.tol <= kMaxPeriodTol))
-    throw InvalidParameter("period-tol", format_shortest(kMinPeriodTol) + " <= period-tol <= " + format_shortest(kMaxPeriodTol), period.tol);
+  orbit.validate();
+  period.validate();
   if (observables.needs_orbit()) {
     const double work =
         static_cast<double>(cells()) * static_cast<double>(orbit.transient + orbit.steps + (observables.has(Observable::Period) ? period.max : 0));

@@ -77,6 +77,29 @@ struct PlaneCertified {
 /// the cell is then an error cell, not a wrong code).
 PlaneCertified plane_certified(const Parameters& p, long long max_branches = kDefaultMaxCoveringBranches);
 
+/// The orbit observables at one parameter set: `lyapunov`, `rate` and `period` of a sweep's cell,
+/// from the phase theta0 (a sweep's cell starts at orbit_start(p, OrbitSettings::theta0_fraction)).
+struct PlaneOrbit {
+  double lyapunov = NAN;    ///< orbit_statistics' Lyapunov exponent (-inf when a step stops); NaN unless asked
+  double rate = NAN;        ///< orbit_statistics' penetration rate; NaN unless asked
+  double period = NAN;      ///< the period of the cycle at the orbit's end (Spec), 0 if none; NaN unless asked
+  double stop_image = NAN;  ///< orbit_statistics' last_stop_image when the statistics were computed
+};
+
+/// The phase \f$\theta_0 = t_2 + f\,(t_3 - t_2)\f$ at which a sweep's orbit starts.
+/// @throws InvalidParameter unless \f$t_2, t_3\f$ exist (b < a/2).
+double orbit_start(const Parameters& p, double fraction);
+
+/// The rule of the `lyapunov`, `rate` and `period` columns of a sweep, at one parameter set and from
+/// the phase `theta0`: `orbit.transient` steps of T discarded, `orbit.steps` averaged
+/// (orbit_statistics, when `statistics`); with `period`, the smallest k <= period.max with
+/// \f$|T^k(e) - e| \le\f$ period.tol on the circle, \f$e = T^{\,transient + steps}(\theta_0)\f$, 0 if
+/// none. `orbit.theta0_fraction` is not read. The settings are not checked here (Spec::validate,
+/// OrbitSettings::validate and PeriodSettings::validate check them).
+/// @throws as orbit_statistics and T_power (InvalidParameter, GaveUp).
+PlaneOrbit plane_orbit(const Parameters& p, double theta0, const OrbitSettings& orbit, const PeriodSettings& period, bool statistics,
+                       bool with_period);
+
 /// The status of a cell.
 enum class CellStatus {
   Ok,            ///< every observable computed
@@ -109,6 +132,10 @@ struct CellValues {
 /// recorded in `error` and its values stay NaN; the others are kept. Running out of memory is not
 /// a failure of the cell (another run, with more memory, would answer): std::bad_alloc passes.
 CellValues evaluate_cell(const Spec& spec, long long index);
+
+/// The text of the `error` column of a cell: its error with tabs and line breaks made spaces, "-"
+/// when it has none.
+std::string error_field(const CellValues& v);
 
 /// The row of a cell: the spec's columns, tab-separated, numbers in %.17g, ending in '\n'.
 std::string format_row(const Spec& spec, const CellValues& v);

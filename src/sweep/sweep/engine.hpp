@@ -8,10 +8,17 @@
 #include <vector>
 
 #include "kit/grid.hpp"
+#include "sweep/cell.hpp"
 #include "sweep/run.hpp"
 #include "sweep/spec.hpp"
 
 namespace dfchaos::sweep {
+
+/// The observables of the given cells, in the given order, computed by OpenMP threads (dynamic
+/// schedule: the cost of a cell varies a lot); one step of `progress` (if any) per cell.
+/// Deterministic: the values do not depend on the thread count. @throws std::bad_alloc when memory
+/// ran out in a cell (after the other threads stopped taking cells; nothing is returned).
+std::vector<CellValues> compute_cells(const Spec& spec, const std::vector<long long>& cells, kit::Progress* progress);
 
 /// The rows of the given cells, in the given order, computed by OpenMP threads (dynamic schedule:
 /// the cost of a cell varies a lot); one step of `progress` (if any) per cell. Deterministic: the

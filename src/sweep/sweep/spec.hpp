@@ -49,12 +49,18 @@ struct OrbitSettings {
   double theta0_fraction = 0.5;  ///< f in [0, 1): \f$\theta_0 = t_2 + f(t_3 - t_2)\f$
   long long transient = 1000;    ///< steps discarded, 0..kMaxTransient
   long long steps = 1000;        ///< steps averaged, 1..kMaxSteps
+  /// Checks theta0_fraction, transient and steps against their bounds. @throws InvalidParameter
+  /// naming the option (theta0, transient, steps) as on the command line.
+  void validate() const;
 };
 
 /// The search for the period of the attracting cycle.
 struct PeriodSettings {
   long long max = 64;  ///< largest k tried, 1..kMaxPeriod
   double tol = 1e-9;   ///< the closing tolerance on the circle
+  /// Checks max and tol against their bounds. @throws InvalidParameter naming the option
+  /// (period-max, period-tol) as on the command line.
+  void validate() const;
 };
 
 /// A sweep of the (q/a, b/a) plane.

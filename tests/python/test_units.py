@@ -1,0 +1,105 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""Parameters.from_physical (docs/units.md): a drilling model in physical units to (a, b, q), its
+worked example, each term's scaling checked by another route (the physical free flight integrated
+by hand in seconds and metres against the paper's x(t) in the scaled time), the tool's
+`info --physical`, and the readable repr and pickling of Parameters."""
+import math
+import pickle
+import re
+import random
+
+import pytest
+
+import dfchaos
+
+# docs/units.md, worked example: m = 0.5 kg, omega = 100 rad/s, F0 = 5000 N, P = 100 N, Q = 4250 N.
+EXAMPLE = dict(mass=0.5, omega=100.0, amplitude=5000.0, static_force=100.0, friction=4250.0)
+
+
+def test_worked_example():
+    """m omega^2 = 5000 N/m: a = 5000/5000 = 1 m, b = 100/(2 * 5000) = 0.01 m, q = 4250/5000 = 0.85 m."""
+    p = dfchaos.Parameters.from_physical(**EXAMPLE)
+    assert (p.a, p.b, p.q) == (1.0, 0.01, 0.85)
+    assert repr(p) == "dfchaos.Parameters(a=1, b=0.01, q=0.85)"
+    assert dfchaos.Parameters.from_physical(0.5, 100, 5000, 100, 4250).q == 0.85  # positional, ints
+
+
+def physical_free_flight(m, w, F0, P, tau0, X0, V0, tau):
+    """X(tau) solving m X'' = F0 sin(w tau) + P from X(tau0) = X0, X'(tau0) = V0 (integrated twice by hand)."""
+    return (-F0 / (m * w * w) * math.sin(w * tau) + P / (2 * m) * (tau - tau0) ** 2
+            + (V0 + F0 / (m * w) * math.cos(w * tau0)) * (tau - tau0) + X0 + F0 / (m * w * w) * math.sin(w * tau0))
+
+
+def paper_free_flight(p, theta0, x0, x1, t):
+    """The paper's solution of Eq. (3) (Section 2): x(t) = -a sin t + b (t - theta0)^2 + (x1 + a cos theta0)(t - theta0) + x0 + a sin theta0."""
+    return (-p.a * math.sin(t) + p.b * (t - theta0) ** 2 + (p.a * math.cos(theta0) + x1) * (t - theta0) + x0
+            + p.a * math.sin(theta0))
+
+
+@pytest.mark.parametrize("seed", range(5))
+def test_each_term_scales_as_derived(seed):
+    """For random physical models: the physical motion in seconds equals the scaled one at t = omega tau
+    (velocities scaled by omega), and each force divided by the mass is omega^2 times its term."""
+    rng = random.Random(seed)
+    m, w = 10 ** rng.uniform(-1, 2), 10 ** rng.uniform(0, 3)
+    F0 = m * w * w * 10 ** rng.uniform(-3, 1)
+    P, Q = F0 * rng.uniform(1e-3, 0.2), F0 * rng.uniform(0.75, 0.95)
+    p = dfchaos.Parameters.from_physical(m, w, F0, P, Q)
+    close = lambda x, y: math.isclose(x, y, rel_tol=1e-12, abs_tol=1e-12 * p.a)
+    for _ in range(20):
+        tau = rng.uniform(0, 10) / w
+        assert close((F0 * math.sin(w * tau) + P) / m, w * w * p.F(w * tau))            # Eq. (3)
+        assert close((F0 * math.sin(w * tau) + P - Q) / m, w * w * (p.F(w * tau) - p.q))  # Eq. (4)
+    tau0, X0, V0 = rng.uniform(0, 1) / w, rng.uniform(-1, 1) * p.a, rng.uniform(-1, 1) * p.a * w
+    for _ in range(20):
+        tau = tau0 + rng.uniform(0, 20) / w
+        X = physical_free_flight(m, w, F0, P, tau0, X0, V0, tau)
+        x = paper_free_flight(p, w * tau0, X0, V0 / w, w * tau)
+        assert math.isclose(X, x, rel_tol=1e-9, abs_tol=1e-9 * p.a), (X, x)
+
+
+@pytest.mark.crossval
+def test_info_physical_equals_from_physical(cli):
+    header, rows = cli.table("info", "--physical", "0.5", "100", "5000", "100", "4250")
+    values = dict(rows)
+    p = dfchaos.Parameters.from_physical(**EXAMPLE)
+    assert (float(values["a"]), float(values["b"]), float(values["q"])) == (p.a, p.b, p.q)
+    args = ("2.5", "157.07963267948966", "1e5", "1234.5", "8.5e4")
+    _, rows = cli.table("info", "--physical", *args)
+    values = dict(rows)
+    p = dfchaos.Parameters.from_physical(*map(float, args))
+    assert (float(values["a"]), float(values["b"]), float(values["q"]), float(values["t2"])) == (p.a, p.b, p.q, p.t2)
+
+
+@pytest.mark.failure
+@pytest.mark.parametrize("k,value", [(0, 0.0), (1, -100.0), (2, float("inf")), (3, 0.0), (4, float("nan")), (1, 1e200)])
+def test_from_physical_bad_input_gives_the_tools_message(cli, k, value):
+    args = [0.5, 100.0, 5000.0, 100.0, 4250.0]
+    args[k] = value
+    with pytest.raises(ValueError) as e:
+        dfchaos.Parameters.from_physical(*args)
+    assert str(e.value) == cli.error("info", "--physical", *[repr(x) for x in args])
+
+
+@pytest.mark.failure
+def test_from_physical_keywords():
+    with pytest.raises(TypeError):
+        dfchaos.Parameters.from_physical(mass=0.5, omega=100, amplitude=5000, static=100, friction=4250)
+    with pytest.raises(TypeError):
+        dfchaos.Parameters.from_physical(0.5, 100, 5000, 100)
+
+
+@pytest.mark.parametrize("abq", [(1.0, 0.01, 0.85), (1.0, 0.1 + 0.2, 0.85), (2.5, 1e-5, 1.9), (1e-100, 3e-100, 1e100),
+                                 (3.0000000000000004, 0.1, 2.2)])
+def test_repr_is_shortest_and_round_trips(abq):
+    p = dfchaos.Parameters(*abq)
+    text = repr(p)
+    # Python's repr is the shortest round-trip decimal too; "1.0" is written "1", and the exponent
+    # without its leading zeros and "+" ("1e-5", "1e100", not Python's "1e-05", "1e+100").
+    def shortest(x):
+        return re.sub(r"e([-+]?)0*(\d)", lambda m: "e" + m.group(1).replace("+", "") + m.group(2), repr(x).removesuffix(".0"))
+    assert text == "dfchaos.Parameters(a={}, b={}, q={})".format(*(shortest(x) for x in abq))
+    back = eval(text, {"dfchaos": dfchaos})
+    assert (back.a, back.b, back.q) == abq
+    r = pickle.loads(pickle.dumps(p, protocol=pickle.HIGHEST_PROTOCOL))
+    assert (r.a, r.b, r.q, r.t0, r.t2, r.t3) == (p.a, p.b, p.q, p.t0, p.t2, p.t3)
