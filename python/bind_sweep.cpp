@@ -77,7 +77,7 @@ py::tuple sweep_py(const AxisArg& q_range, const AxisArg& b_range, double a, con
   s.observables = sweep::ObservableSet::parse("observables", observables_text(observables));
   s.superstable_scan = superstable_scan;
   s.covering_max_branches = max_branches;
-  s.orbit.theta0_fraction = finite("theta0", theta0_fraction);
+  s.orbit.theta0_fraction = finite("theta0-fraction", theta0_fraction);
   s.orbit.transient = transient;
   s.orbit.steps = steps;
   s.period.max = period_max;
@@ -160,7 +160,7 @@ void bind_sweep(py::module_& m) {
 The observables over a grid of the (q/a, b/a) plane, as `dfchaos sweep` computes them: the same checks
 and messages, the same C++ engine on the same OpenMP threads (OMP_NUM_THREADS), the same numbers to the
 last bit. Each keyword is the tool's option of the same name (--q-range, --max-branches, ...), except
-theta0_fraction, the tool's --theta0: a fraction f in [0, 1) of the arc, theta_0 = t2 + f (t3 - t2)
+theta0_fraction, the tool's --theta0-fraction: a fraction f in [0, 1) of the arc, theta_0 = t2 + f (t3 - t2)
 (elsewhere in this module theta0 is a phase).
 
 q_range, b_range: an axis as the tool writes it, 'lo:hi:n[:lin|log|mid]', or a tuple (lo, hi, n) or

@@ -52,11 +52,14 @@ expect_error "theta:" map "${P[@]}" --theta nan
 expect_error "theta0:" orbit "${P[@]}" --theta0 6.5 --steps 3
 expect_error "theta"  map "${P[@]}"
 expect_error "--theta" map "${P[@]}" --theta
-expect_error "grid N" map "${P[@]}" --grid 3.5 4 0
-expect_error "grid N" map "${P[@]}" --grid 3.5 4 2.5
-expect_error "grid HI" map "${P[@]}" --grid 4 3.5 10
-expect_error "grid LO" map "${P[@]}" --grid 1 3.5 10
-expect_error "--grid" map "${P[@]}" --grid 3.5 4
+expect_error "grid n:" map "${P[@]}" --grid 3.5:4:0
+expect_error "grid n:" map "${P[@]}" --grid 3.5:4:2.5
+expect_error "grid: .*lo < hi" map "${P[@]}" --grid 4:3.5:10
+expect_error "grid: .*t2 <= grid < t3" map "${P[@]}" --grid 1:3.5:10
+expect_error "grid: .*t2 <= grid < t3" map "${P[@]}" --grid 3.5:7:10
+# The old spelling 'LO HI N' (HI left out) is refused with the new one named.
+expect_error "grid: write the grid as one word LO:HI:N" map "${P[@]}" --grid 3.5 4 10
+expect_error "grid: write the grid as one word LO:HI:N" map "${P[@]}" --grid 3.5 4
 expect_error "steps"  orbit "${P[@]}" --theta0 4 --steps 0
 expect_error "steps:" orbit "${P[@]}" --theta0 4 --steps many
 expect_error "x0:"    simulate "${P[@]}" --x0 1 --y0 0 --v0 0 --t0 0 --t-end 10
@@ -118,8 +121,18 @@ expect_error "shard i:"  sweep "${W[@]}" --shard a/2
 expect_error "shard:"    sweep "${W[@]}" --shard 0/5
 expect_error "transient:" sweep "${G[@]}" --transient -1
 expect_error "steps:"    sweep "${W[@]}" --steps 0
-expect_error "steps:"    sweep "${W[@]}" --steps 1e8
-expect_error "theta0:"   sweep "${W[@]}" --theta0 1
+expect_error "theta0-fraction:" sweep "${W[@]}" --theta0-fraction 1
+# One meaning per name: --theta0 is a phase (orbit); a sweep's start is a fraction, named so.
+expect_error "theta0: .*use --theta0-fraction" sweep "${W[@]}" --theta0 0.5
+# One value for an axis, the same as x:x:1.
+checks=$((checks + 1))
+if ! cmp -s <("$cli" sweep --q-range 0.85 --b-range 0.01:0.02:2 --observables covering) \
+            <("$cli" sweep --q-range 0.85:0.85:1 --b-range 0.01:0.02:2 --observables covering); then
+  echo "FAIL: --q-range 0.85 is not the same sweep as 0.85:0.85:1"; fails=$((fails + 1))
+fi
+# The same cap on orbit steps in sweep and orbit.
+expect_error "steps:" sweep "${W[@]}" --steps 100000001
+expect_error "steps:" orbit "${P[@]}" --theta0 3.5 --steps 100000001
 expect_error "period-max:" sweep "${W[@]}" --period-max 0
 expect_error "period-tol:" sweep "${W[@]}" --period-tol 0
 expect_error "superstable-scan:" sweep "${W[@]}" --superstable-scan 1
@@ -164,6 +177,12 @@ expect_error "samples-out" simulate "${P[@]}" --x0 0 --y0 0 --v0 0 --t0 4 --t-en
 checks=$((checks + 1))
 [[ -e "$tmp/smp2.tsv" ]] && { echo "FAIL: a refused simulate left a samples file"; fails=$((fails + 1)); }
 expect_ok "^quantity	value" info "${P[@]}"
+# The short forms -a -b -q are the same options as --a --b --q.
+checks=$((checks + 1))
+if ! cmp -s <("$cli" map -a 1 -b 0.01 -q 0.85 --theta 4) <("$cli" map --a 1 --b 0.01 --q 0.85 --theta 4); then
+  echo "FAIL: map -a -b -q differs from --a --b --q"; fails=$((fails + 1))
+fi
+expect_ok "^index	q_over_a" sweep -a 2 --q-range 0.85 --b-range 0.01 --observables covering
 expect_ok "^theta	T1	T" map --a 1 --b 1e-12 --q 0.85 --theta 3.5 4 5
 # The double just below t3 is not a fixed point (the t3 edge): scenario C, T = t2.
 checks=$((checks + 1))
@@ -178,7 +197,11 @@ expect_ok "^n	theta" orbit "${P[@]}" --theta0 3.5 --steps 1e1
 checks=$((checks + 1))
 [[ $(wc -l < <("$cli" map "${P[@]}" --arc 5)) -eq 6 ]] || { echo "FAIL: --arc N gives N rows"; fails=$((fails + 1)); }
 checks=$((checks + 1))
-[[ $(wc -l < <("$cli" map "${P[@]}" --grid 3.5 4.5 7)) -eq 8 ]] || { echo "FAIL: --grid N gives N rows"; fails=$((fails + 1)); }
+[[ $(wc -l < <("$cli" map "${P[@]}" --grid 3.5:4.5:7)) -eq 8 ]] || { echo "FAIL: --grid N gives N rows"; fails=$((fails + 1)); }
+checks=$((checks + 1))
+[[ $("$cli" map "${P[@]}" --grid 3.5:4.5:7 | tail -n 1 | cut -f 1) == 4.5 ]] || { echo "FAIL: --grid includes HI, as sweep's axes"; fails=$((fails + 1)); }
+checks=$((checks + 1))
+[[ $("$cli" map "${P[@]}" --grid 3.5:4.5:2:mid | tail -n 1 | cut -f 1) == 4.25 ]] || { echo "FAIL: --grid LO:HI:N:mid gives the cell centres"; fails=$((fails + 1)); }
 # orbit streams its rows (memory flat in the step count): --steps 1e8 under a 300 MB
 # address-space limit delivers its first rows at once (the reader closes the pipe after 3 lines).
 checks=$((checks + 1))

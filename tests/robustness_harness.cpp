@@ -188,7 +188,8 @@ int main(int argc, char** argv) {
         else if (coin(0.5))
           args.insert(args.end(), {"--arc", coin(0.8) ? pick({"1", "2", "7", "10"}) : pick(kCounts)});
         else
-          args.insert(args.end(), {"--grid", phase, coin(0.5) ? "4.5" : pick(kNumbers), coin(0.8) ? "5" : pick(kCounts)});
+          args.insert(args.end(), {"--grid", phase + ":" + (coin(0.5) ? "4.5" : pick(kNumbers)) + ":" + (coin(0.8) ? "5" : pick(kCounts)) +
+                                                 (coin(0.2) ? ":mid" : "")});
         break;
       case 2:  // orbit
         args.insert(args.end(), {"--theta0", phase, "--steps", coin(0.8) ? pick({"1", "3", "10", "1e1"}) : pick(kCounts)});

@@ -102,6 +102,8 @@ TEST(Range, ValuesAreThoseOfTheKitAxes) {
   for (int i = 0; i < 4; ++i) EXPECT_EQ(log[i], ag[i]);  // as thm1_parameter_plane's b/a axis
   for (int i = 0; i < 6; ++i) EXPECT_EQ(mid[i], am[i]);  // as its q/a axis
   EXPECT_EQ(Range::parse("b-range", "0.25:0.25:1")[0], 0.25);
+  EXPECT_EQ(Range::parse("q-range", "0.85").canonical(), Range::parse("q-range", "0.85:0.85:1").canonical());  // one value
+  EXPECT_EQ(Range::parse("q-range", "0.85").size(), 1);
   EXPECT_EQ(Range::parse("b-range", "0.2:0.3:1:mid")[0], 0.25);
   EXPECT_EQ(lin.canonical(), "0.5:1:5:lin");
   EXPECT_EQ(Range::parse("q-range", "0.50:1.0:5:lin").canonical(), lin.canonical());  // one spec, one header
@@ -109,8 +111,8 @@ TEST(Range, ValuesAreThoseOfTheKitAxes) {
 }
 
 TEST(Range, RejectsMalformedOrEmptyRanges) {
-  for (const char* bad : {"", "1", "0:1", "0:1:3:log:x", "x:1:3", "0:nan:3", "0:inf:3", "0:1:0", "0:1:2.5", "0:1:-3", "1:0:3", "1:1:3", "0:1:1",
-                          "0.5:0.5:1:mid", "0:1:3:cubic", "0:1:3:log", "-1:1:3:log", "0:1:1e9", "0::3"}) {
+  for (const char* bad : {"",       "x",     "nan",   "0:1",   "0:1:3:log:x",   "x:1:3",       "0:nan:3",   "0:inf:3",    "0:1:0",   "0:1:2.5",
+                          "0:1:-3", "1:0:3", "1:1:3", "0:1:1", "0.5:0.5:1:mid", "0:1:3:cubic", "0:1:3:log", "-1:1:3:log", "0:1:1e9", "0::3"}) {
     const std::string msg = rejection([&] { Range::parse("q-range", bad); });
     EXPECT_NE(msg.find("q-range"), std::string::npos) << "'" << bad << "' -> " << msg;
   }

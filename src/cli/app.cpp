@@ -64,7 +64,12 @@ int run_command(int argc, char** argv) {
       "'dfchaos COMMAND --help' describes each command's options and output columns.\n"
       "Tables (info, map, orbit, simulate, sweep, and the experiments' data files): tab-separated, the column line\n"
       "first, every other line that is not a row starting with '#'. One call reads one in Python:\n" +
-      std::string(kit::kLoadInPython) + ".\nCertificates and 'certify' verdicts are JSON (json.load).");
+      std::string(kit::kLoadInPython) +
+      ".\nCertificates and 'certify' verdicts are JSON (json.load).\n"
+      "One meaning per name, in every command and in the Python module: theta0 is a phase in [t2, t3) (orbit),\n"
+      "theta0-fraction a fraction f of the arc, theta0 = t2 + f (t3 - t2) (sweep); a range is LO:HI:N[:lin|log|mid]\n"
+      "with both ends included (sweep's axes, map --grid), or one value x (= x:x:1); orbit steps and transients are\n"
+      "at most 1e8 (orbit, sweep); -a -b -q are --a --b --q.");
   const std::vector<Command> commands = {add_info(app),     add_map(app),        add_orbit(app),
                                          add_simulate(app), add_provenance(app), add_certify_command(app),
                                          add_sweep(app),    add_sweep_merge(app)};

@@ -75,9 +75,9 @@ certify::Request request_from(const CertifyOptions& o) {
 CLI::App* add_certify(CLI::App& app, CertifyOptions& o) {
   auto* c = app.add_subcommand("certify", "certified verdicts in ball arithmetic (Arb): proved / not proved, as JSON");
   c->add_option("what", o.what, "vartheta0 | lemma1 | b0 | discontinuities | covering | periodic | superstable")->required();
-  c->add_option("--a", o.a, "forcing amplitude a > 0 (default 1)");
-  c->add_option("--b", o.b, "b, or a box LO:HI (lemma1, covering)");
-  c->add_option("--q", o.q, "q, or a box LO:HI (lemma1, covering)");
+  c->add_option("-a,--a", o.a, "forcing amplitude a > 0 (default 1)");
+  c->add_option("-b,--b", o.b, "b, or a box LO:HI (lemma1, covering)");
+  c->add_option("-q,--q", o.q, "q, or a box LO:HI (lemma1, covering)");
   c->add_option("--period", o.period, "periodic: minimal period m, 1..64");
   c->add_option("--segment", o.segment, "discontinuities: L0 (default) or L2");
   c->add_option("--window", o.window, "superstable: certify the window LO:HI (floating estimate of b) and its edges");

@@ -12,11 +12,11 @@ namespace dfchaos::cli {
 
 void ModelOptions::add_to(CLI::App* app) {
   const std::string range = format_shortest(kMinParameter) + " <= X <= " + format_shortest(kMaxParameter);
-  app->add_option("--a", a, "forcing amplitude a, " + range)->required()->type_name("FLOAT");
-  app->add_option("--b", b, "half the constant force b, " + range + "; the return map needs b < a/2 and b/a >= " + format_shortest(kMinMapRatio))
+  app->add_option("-a,--a", a, "forcing amplitude a, " + range)->required()->type_name("FLOAT");
+  app->add_option("-b,--b", b, "half the constant force b, " + range + "; the return map needs b < a/2 and b/a >= " + format_shortest(kMinMapRatio))
       ->required()
       ->type_name("FLOAT");
-  app->add_option("--q", q, "maximal dry-friction force q, " + range + "; the return map needs q > 2b")->required()->type_name("FLOAT");
+  app->add_option("-q,--q", q, "maximal dry-friction force q, " + range + "; the return map needs q > 2b")->required()->type_name("FLOAT");
 }
 
 Parameters ModelOptions::model() const { return Parameters(number("a", a), number("b", b), number("q", q)); }

@@ -4,8 +4,14 @@
 #include "cli.hpp"
 #include "dfchaos/errors.hpp"
 #include "dfchaos/return_map.hpp"
+#include "sweep/range.hpp"
 
 namespace dfchaos::cli {
+
+namespace {
+/// Most phases of --grid and --arc.
+constexpr long long kMaxMapGrid = 10'000'000;
+}  // namespace
 
 Command add_map(CLI::App& app) {
   auto* cmd = app.add_subcommand("map", "T1 and T at given phases of [t2, t3)");
@@ -17,9 +23,11 @@ Command add_map(CLI::App& app) {
   auto o = std::make_shared<Opts>();
   o->m.add_to(cmd);
   auto* t = cmd->add_option("--theta", o->theta, "phases in [t2, t3), one or more")->type_name("FLOAT ...");
-  auto* g = cmd->add_option("--grid", o->grid, "LO HI N: the N phases LO + (HI-LO) i/N, i = 0..N-1, with t2 <= LO < HI <= t3, 1 <= N <= 10^7")
-                ->expected(3)
-                ->type_name("LO HI N");
+  auto* g = cmd->add_option("--grid", o->grid,
+                            "LO:HI:N[:lin|log|mid]: N phases from LO to HI, both included (lin, the default; log: log-spaced;\n"
+                            "mid: the N cell centres), as a sweep's axes; every phase in [t2, t3), 1 <= N <= 10^7")
+                ->expected(1, 3)
+                ->type_name("LO:HI:N[:KIND]");
   auto* a = cmd->add_option("--arc", o->arc, "N: the N phases t2 + (t3-t2) i/N, i = 0..N-1 (all of [t2, t3); 1 <= N <= 10^7)")->type_name("N");
   t->excludes(g)->excludes(a);
   g->excludes(a);
@@ -50,20 +58,22 @@ Command add_map(CLI::App& app) {
             const double t2 = p.t2_required(), t3 = p.t3_required();
             std::vector<double> th;
             if (!o->grid.empty()) {
-              const double lo = number("grid LO", o->grid[0]), hi = number("grid HI", o->grid[1]);
-              const long long n = count("grid N", o->grid[2], 1, 10'000'000);
-              p.require_in_map_domain(lo, "grid LO");
-              if (!(hi > lo && hi <= t3)) throw InvalidParameter("grid HI", "LO < HI <= t3 = " + format_shortest(t3), hi);
-              th.reserve(static_cast<std::size_t>(n));
-              for (long long i = 0; i < n; ++i) th.push_back(lo + (hi - lo) * static_cast<double>(i) / static_cast<double>(n));
+              if (o->grid.size() != 1)
+                throw InvalidParameter("grid", "write the grid as one word LO:HI:N[:lin|log|mid] (HI included, as in sweep), not 'LO HI N'");
+              const sweep::Range r = sweep::Range::parse("grid", o->grid[0]);
+              if (r.size() > kMaxMapGrid)
+                throw InvalidParameter("grid n", "1 <= n <= " + format_shortest(static_cast<double>(kMaxMapGrid)), static_cast<double>(r.size()));
+              th.reserve(static_cast<std::size_t>(r.size()));
+              for (long long i = 0; i < r.size(); ++i) th.push_back(r[i]);
+              for (double x : th) p.require_in_map_domain(x, "grid");
             } else if (!o->arc.empty()) {
-              const long long n = count("arc", o->arc, 1, 10'000'000);
+              const long long n = count("arc", o->arc, 1, kMaxMapGrid);
               th.reserve(static_cast<std::size_t>(n));
               for (long long i = 0; i < n; ++i) th.push_back(t2 + (t3 - t2) * static_cast<double>(i) / static_cast<double>(n));
             } else {
               for (const auto& s : o->theta) th.push_back(number("theta", s));
             }
-            if (th.empty()) throw InvalidParameter("theta", "give --theta X [X ...], --grid LO HI N or --arc N");
+            if (th.empty()) throw InvalidParameter("theta", "give --theta X [X ...], --grid LO:HI:N or --arc N");
             for (double x : th) p.require_in_map_domain(x, "theta");  // every input checked before any output
             Writer w;
             w.row({"theta", "T1", "T", "scenario", "elapsed", "penetration"});

@@ -55,7 +55,7 @@ def model(a, b_over_a, q_over_a):
 def test_orbit_observables_equal_a_one_cell_sweep(cli, abq, fraction):
     a, bo, qo = abq
     _, names, rows = sweep_table(cli, "--a", repr(a), "--q-range", one(qo), "--b-range", one(bo), "--observables",
-                                 "lyapunov,rate,period", "--theta0", repr(fraction), "--transient", "300", "--steps", "500",
+                                 "lyapunov,rate,period", "--theta0-fraction", repr(fraction), "--transient", "300", "--steps", "500",
                                  "--period-max", "40", "--period-tol", "1e-8")
     assert len(rows) == 1 and rows[0][names.index("status")] == "ok", rows
     row = dict(zip(names, rows[0]))
@@ -93,7 +93,7 @@ def test_derivative_is_what_the_lyapunov_exponent_sums(cli, abq):
     seen = set()
     for fraction in (0.1, 0.45, 0.8, 0.97):
         _, names, rows = sweep_table(cli, "--a", repr(a), "--q-range", one(qo), "--b-range", one(bo), "--observables", "lyapunov",
-                                     "--theta0", repr(fraction), "--transient", "0", "--steps", "1")
+                                     "--theta0-fraction", repr(fraction), "--transient", "0", "--steps", "1")
         tool = float(dict(zip(names, rows[0]))["lyapunov"])
         theta = p.t2 + fraction * (p.t3 - p.t2)
         d = dfchaos.derivative(p, theta)
@@ -137,7 +137,7 @@ def test_sweep_equals_the_tool_file(cli, tmp_path):
     out = tmp_path / "s.tsv"
     args = ["--a", "2", "--q-range", "0.75:0.95:3", "--b-range", "1e-3:0.45:4:log", "--observables",
             "covering,superstable,lyapunov,rate,period,certified", "--max-branches", "60", "--superstable-scan", "50",
-            "--theta0", "0.25", "--transient", "100", "--steps", "200", "--period-max", "20", "--period-tol", "1e-7"]
+            "--theta0-fraction", "0.25", "--transient", "100", "--steps", "200", "--period-max", "20", "--period-tol", "1e-7"]
     rc, _, err = cli.run("sweep", *args, "--out", out)
     assert rc == 0, err
     text = out.read_text()
@@ -191,9 +191,9 @@ P = dfchaos.Parameters(1.0, 0.01, 0.85)
 SWEEP = ["sweep", "--q-range", "0.85:0.85:1", "--b-range", "0.01:0.01:1"]
 ORBIT_FAILURES = [
     (lambda: dfchaos.lyapunov(P, steps=0), [*SWEEP, "--steps", "0"], "steps"),
-    (lambda: dfchaos.rate(P, steps=10**7 + 1), [*SWEEP, "--steps", "10000001"], "steps"),
+    (lambda: dfchaos.rate(P, steps=10**8 + 1), [*SWEEP, "--steps", "100000001"], "steps"),
     (lambda: dfchaos.lyapunov(P, transient=-1), [*SWEEP, "--transient", "-1"], "transient"),
-    (lambda: dfchaos.period(P, transient=10**7 + 1), [*SWEEP, "--transient", "10000001"], "transient"),
+    (lambda: dfchaos.period(P, transient=10**8 + 1), [*SWEEP, "--transient", "100000001"], "transient"),
     (lambda: dfchaos.period(P, period_max=0), [*SWEEP, "--period-max", "0"], "period-max"),
     (lambda: dfchaos.period(P, period_tol=1.0), [*SWEEP, "--period-tol", "1"], "period-tol"),
     (lambda: dfchaos.lyapunov(P, 1.0), ["orbit", "--a", "1", "--b", "0.01", "--q", "0.85", "--theta0", "1.0", "--steps", "5"],
@@ -210,7 +210,7 @@ ORBIT_FAILURES = [
     (lambda: dfchaos.sweep("0.85:0.85:1", "0.01:0.01:1", observables="lyapunov,chaos"), [*SWEEP, "--observables", "lyapunov,chaos"],
      "observables"),
     (lambda: dfchaos.sweep("0.85:0.85:1", "0.01:0.01:1", a=0.0), [*SWEEP, "--a", "0"], "a"),
-    (lambda: dfchaos.sweep("0.85:0.85:1", "0.01:0.01:1", theta0_fraction=1.0), [*SWEEP, "--theta0", "1"], "theta0"),
+    (lambda: dfchaos.sweep("0.85:0.85:1", "0.01:0.01:1", theta0_fraction=1.0), [*SWEEP, "--theta0-fraction", "1"], "theta0-fraction"),
     (lambda: dfchaos.sweep("0.85:0.85:1", "0.01:0.01:1", steps=0), [*SWEEP, "--steps", "0"], "steps"),
     (lambda: dfchaos.sweep("0.85:0.85:1", "0.01:0.01:1", max_branches=0), [*SWEEP, "--max-branches", "0"], "max-branches"),
     (lambda: dfchaos.sweep("0.85:0.85:1", "0.01:0.01:1", superstable_scan=1), [*SWEEP, "--superstable-scan", "1"],

@@ -19,7 +19,7 @@ long long count(const std::string& name, const std::string& text, long long lo, 
 }  // namespace
 
 void SweepArguments::add_to(CLI::App* app) {
-  app->add_option("--a", a,
+  app->add_option("-a,--a", a,
                   "forcing amplitude, " + format_shortest(kMinA) + " <= a <= " + format_shortest(kMaxA) + " (default 1; only q/a and b/a matter)")
       ->type_name("FLOAT");
   app->add_option("--q-range", q_range, "q/a axis lo:hi:n[:lin|log|mid] (every q/a > 0)")->required()->type_name("LO:HI:N[:KIND]");
@@ -40,9 +40,16 @@ void SweepArguments::add_to(CLI::App* app) {
   app->add_option("--superstable-scan", superstable_scan,
                   "scan of superstable_check, " + std::to_string(kMinSuperstableScan) + ".." + std::to_string(kMaxSuperstableScan) + " (default 400)")
       ->type_name("N");
-  app->add_option("--theta0", theta0, "orbit start as a fraction f in [0, 1): theta_0 = t2 + f (t3 - t2) (default 0.5)")->type_name("F");
-  app->add_option("--transient", transient, "orbit steps discarded, 0.." + std::to_string(kMaxTransient) + " (default 1000)")->type_name("N");
-  app->add_option("--steps", steps, "orbit steps averaged, 1.." + std::to_string(kMaxSteps) + " (default 1000)")->type_name("N");
+  app->add_option("--theta0-fraction", theta0, "orbit start as a fraction f in [0, 1) of the arc: theta_0 = t2 + f (t3 - t2) (default 0.5)")
+      ->type_name("F");
+  // --theta0 is a phase everywhere else (orbit, Python): here it is refused with the option to use.
+  app->add_option("--theta0", old_theta0)->group("");
+  app->add_option("--transient", transient,
+                  "orbit steps discarded, 0 <= N <= " + format_shortest(static_cast<double>(kMaxTransient)) + " (default 1000)")
+      ->type_name("N");
+  app->add_option("--steps", steps,
+                  "orbit steps averaged, 1 <= N <= " + format_shortest(static_cast<double>(kMaxSteps)) + " (as orbit --steps; default 1000)")
+      ->type_name("N");
   app->add_option("--period-max", period_max, "largest period searched, 1.." + std::to_string(kMaxPeriod) + " (default 64)")->type_name("K");
   app->add_option("--period-tol", period_tol, "closing tolerance of a cycle on the circle, 1e-15..1e-3 (default 1e-9)")->type_name("TOL");
   app->add_option("--shard", shard, "compute only shard i of N: the cells with index mod N = i (0 <= i < N)")->type_name("i/N");
@@ -91,7 +98,9 @@ RunOptions SweepArguments::resolve() const {
   s.observables = ObservableSet::parse("observables", observables);
   s.superstable_scan = count("superstable-scan", superstable_scan, kMinSuperstableScan, kMaxSuperstableScan);
   s.covering_max_branches = count("max-branches", max_branches, 1, kMaxCoveringBranches);
-  s.orbit.theta0_fraction = kit::parse_number("theta0", theta0, false);
+  if (!old_theta0.empty())
+    throw InvalidParameter("theta0", "a sweep starts each orbit at a fraction of [t2, t3): use --theta0-fraction F (--theta0 is a phase, in orbit)");
+  s.orbit.theta0_fraction = kit::parse_number("theta0-fraction", theta0, false);
   s.orbit.transient = count("transient", transient, 0, kMaxTransient);
   s.orbit.steps = count("steps", steps, 1, kMaxSteps);
   s.period.max = count("period-max", period_max, 1, kMaxPeriod);

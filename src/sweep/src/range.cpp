@@ -36,7 +36,11 @@ const char* spacing_name(Spacing s) {
 Range Range::parse(const std::string& option, const std::string& text) {
   constexpr std::size_t kMaxParts = 4;
   const auto parts = split(text, kMaxParts);
-  const std::string form = "write lo:hi:n or lo:hi:n:lin|log|mid";
+  const std::string form = "write x (one value), lo:hi:n or lo:hi:n:lin|log|mid";
+  if (parts.size() == 1) {  // one value x: the same as x:x:1
+    const double x = kit::parse_number(option, parts[0], false);
+    return parse(option, format_double(x) + ":" + format_double(x) + ":1");
+  }
   if (parts.size() < 3 || parts.size() > kMaxParts) throw InvalidParameter(option, form + " (got '" + text + "')");
   Range r;
   r.lo_ = kit::parse_number(option + " lo", parts[0], false);

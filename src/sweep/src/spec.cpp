@@ -15,7 +15,8 @@ std::string count_text(long long v) { return std::to_string(v); }
 }  // namespace
 
 void OrbitSettings::validate() const {
-  if (!(theta0_fraction >= 0 && theta0_fraction < 1)) throw InvalidParameter("theta0", "0 <= theta0 < 1 (a fraction of [t2, t3))", theta0_fraction);
+  if (!(theta0_fraction >= 0 && theta0_fraction < 1))
+    throw InvalidParameter("theta0-fraction", "0 <= theta0-fraction < 1 (a fraction of [t2, t3))", theta0_fraction);
   if (transient < 0 || transient > kMaxTransient)
     throw InvalidParameter("transient", "0 <= transient <= " + count_text(kMaxTransient), static_cast<double>(transient));
   if (steps < 1 || steps > kMaxSteps) throw InvalidParameter("steps", "1 <= steps <= " + count_text(kMaxSteps), static_cast<double>(steps));
@@ -75,7 +76,7 @@ std::vector<std::string> Spec::header_lines() const {
                 " for certified)");
   if (observables.has(Observable::Superstable)) h.push_back("superstable_scan = " + count_text(superstable_scan));
   if (observables.needs_orbit()) {
-    h.push_back("theta0 = " + format_shortest(orbit.theta0_fraction) + "  (theta_0 = t2 + theta0 (t3 - t2))");
+    h.push_back("theta0_fraction = " + format_shortest(orbit.theta0_fraction) + "  (theta_0 = t2 + theta0_fraction (t3 - t2))");
     h.push_back("transient = " + count_text(orbit.transient));
     h.push_back("steps = " + count_text(orbit.steps));
   }

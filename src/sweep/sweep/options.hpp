@@ -17,6 +17,7 @@ struct SweepArguments {
   std::string a = "1", q_range, b_range, observables = kDefaultObservables;
   std::string max_branches = std::to_string(kDefaultMaxCoveringBranches);
   std::string superstable_scan = "400", theta0 = "0.5", transient = "1000", steps = "1000";
+  std::string old_theta0;  ///< --theta0, refused (the start is --theta0-fraction)
   std::string period_max = "64", period_tol = "1e-9";
   std::string shard, out, resume, chunk = std::to_string(kDefaultChunk), max_chunks = "0";
   bool progress = false;

@@ -8,10 +8,12 @@
 ///  - `log`: \f$lo\,(hi/lo)^{i/(n-1)}\f$ (both ends included; needs \f$lo > 0\f$);
 ///  - `mid`: the cell centres \f$lo + (hi - lo)(i + 1/2)/n\f$ (ends excluded).
 ///
+/// A single value may be written `x`, the same as `x:x:1`.
+///
 /// Conditions: lo and hi finite; \f$1 \le n \le\f$ kMaxAxisPoints; for `lin` and `log`, \f$lo < hi\f$
 /// when \f$n \ge 2\f$ and \f$lo = hi\f$ when \f$n = 1\f$ (a single value); for `mid`, \f$lo < hi\f$.
-/// The text is kept in a canonical form (numbers in %.17g, the kind always spelt out), so that two
-/// spellings of one grid give the same output header.
+/// The text is kept in a canonical form (numbers in their shortest exact decimal, the kind always
+/// spelt out), so that two spellings of one grid give the same output header.
 #pragma once
 
 #include <string>
@@ -26,7 +28,7 @@ inline constexpr long long kMaxAxisPoints = 100'000'000;
 /// How the points of a Range are spaced.
 enum class Spacing { Linear, Log, Mid };
 
-/// An axis `lo:hi:n[:lin|log|mid]` of a sweep.
+/// An axis `lo:hi:n[:lin|log|mid]` (or one value `x`) of a sweep, and of `dfchaos map --grid`.
 class Range {
  public:
   /// Parses `text`. Errors name `option` (e.g. "q-range") and the violated condition.

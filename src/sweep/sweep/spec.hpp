@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "dfchaos/covering.hpp"
+#include "dfchaos/limits.hpp"
 #include "dfchaos/parameters.hpp"
 #include "sweep/observables.hpp"
 #include "sweep/range.hpp"
@@ -30,8 +31,8 @@
 namespace dfchaos::sweep {
 
 inline constexpr long long kMaxCells = 100'000'000;               ///< most cells in one sweep
-inline constexpr long long kMaxTransient = 10'000'000;            ///< most transient steps per cell
-inline constexpr long long kMaxSteps = 10'000'000;                ///< most averaged steps per cell
+inline constexpr long long kMaxTransient = kMaxOrbitSteps;        ///< most transient steps per cell (as `dfchaos orbit --steps`)
+inline constexpr long long kMaxSteps = kMaxOrbitSteps;            ///< most averaged steps per cell (as `dfchaos orbit --steps`)
 inline constexpr long long kMaxPeriod = 10'000;                   ///< largest period searched for
 inline constexpr long long kMinSuperstableScan = 2;               ///< superstable_check's least scan
 inline constexpr long long kMaxSuperstableScan = 1'000'000;       ///< most scan points of superstable_check
