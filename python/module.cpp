@@ -22,9 +22,11 @@ The return map (Lemma 3), elementwise over array-likes:
   T(p, theta), T1(p, theta)        T and the next hit T1 (Eq. 11)
   step(p, theta)                   T1, theta2 (Eq. 17), T, scenario, elapsed, penetration
   derivative(p, theta)             T' (0 at a stop, nan at a grazing)
-One orbit, as a cell of `dfchaos sweep` (theta0 a phase in [t2, t3); None: the arc's midpoint):
+One orbit (theta0 a phase in [t2, t3)):
   orbit(p, theta0, steps)          T^n(theta0) with the columns of `dfchaos orbit`
   lyapunov(p, theta0, steps, transient), rate(...), period(...)
+                                   as a cell of `dfchaos sweep`; theta0=None: the sweep's default
+                                   start, the arc's midpoint
 The plane, the full system, Lemma 4 and the proofs:
   sweep(q_range, b_range, ...)     numpy columns of `dfchaos sweep` and its provenance
   simulate(p, x0, y0, v0, t0, t_end, sample=..., max_events=...)

@@ -52,14 +52,19 @@ expect 2 'b:'   covering --b "" --q 0.85
 expect 2 'b:'   covering --b nan --q 0.85
 expect 2 'b:'   covering --b 0.6 --q 0.85
 expect 2 'b:'   covering --b 0.002:0.001 --q 0.85
-expect 2 'q:'   covering --b 0.001
+expect 2 '--q is required'   covering --b 0.001
 expect 2 'q:'   covering --b 0.001 --q 0.001
 expect 2 'a:'   covering --a -1 --b 0.001 --q 0.85
-expect 2 'period:' periodic --b 0.003 --q 0.85
+expect 2 '--period is required' periodic --b 0.003 --q 0.85
 expect 2 'period:' periodic --b 0.003 --q 0.85 --period 0
 expect 2 'b:'   periodic --b 0.003:0.004 --q 0.85 --period 2
 expect 2 'segment:' discontinuities --b 0.01 --segment L7
 expect 2 'window:' superstable --b 0.06 --q 0.85 --window 0.07:0.06
 expect 2 'what'  covered --b 0.001 --q 0.85
+expect 2 'what'
+# One subcommand per statement: an option of another statement is refused.
+expect 2 'not expected' discontinuities --b 0.01 --q 0.85
+expect 2 'not expected' vartheta0 --b 0.01
+expect 2 '--J0 requires --J1' covering --b 0.001 --q 0.85 --J0 3.3:3.4
 echo "cli_certify: $checks checks, $fails failures"
 exit $((fails > 0))

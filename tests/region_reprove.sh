@@ -38,7 +38,7 @@ bad() {  # bad PATTERN ARGS...: PATTERN must appear in the one line on stderr
   else echo "FAIL: certify covering $* -> rc=$rc, $(head -c 200 "$tmp/err")"; fails=$((fails + 1)); fi
 }
 b=(--b "${last[0]}:${last[1]}" --q "${last[2]}:${last[3]}")
-bad "J1: given together" "${b[@]}" --J0 "${last[4]}:${last[5]}"                                    # J1 missing
+bad "J0 requires --J1" "${b[@]}" --J0 "${last[4]}:${last[5]}"                                    # J1 missing
 bad "J1: .*J1 to the right of J0" "${b[@]}" --J0 "${last[6]}:${last[7]}" --J1 "${last[4]}:${last[5]}"       # J0 right of J1
 bad "J0: .*both ends in \[t2(b_hi), 3pi/2\]" "${b[@]}" --J0 "1:${last[5]}" --J1 "${last[6]}:${last[7]}"                # an end below t2
 bad "J0: two phases TOP:T2" "${b[@]}" --J0 "${last[4]}" --J1 "${last[6]}:${last[7]}"                  # not TOP:T2

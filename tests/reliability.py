@@ -209,17 +209,17 @@ for args in [["certify", "vartheta0"], ["--version"]]:
 t = time.monotonic()
 # (Lemma 2 on L0 at b/a = 1e-9: some 1e8 discontinuities to prove, so time and memory grow with
 # the work; a covering proof no longer does at small b/a, bench_certified.)
-r = run("certify", "discontinuities", "--a", "1", "--b", "1e-9", "--q", "0.85", "--max-seconds", "2")
+r = run("certify", "discontinuities", "--a", "1", "--b", "1e-9", "--max-seconds", "2")
 dt = time.monotonic() - t
 check(one_line_error(r, 1, "time budget of 2 s") and r.stdout == b"" and dt < 10,
       f"28.6 certify discontinuities at b/a = 1e-9 with --max-seconds 2: gave up after {dt:.1f} s, exit 1, one line")
 if sanitized:
     print("skip: 28.6 the memory budget (not enforced under AddressSanitizer)")
 else:
-    r = run("certify", "discontinuities", "--a", "1", "--b", "1e-9", "--q", "0.85", "--max-memory", "0.25")
+    r = run("certify", "discontinuities", "--a", "1", "--b", "1e-9", "--max-memory", "0.25")
     check(one_line_error(r, 1, "memory budget of 0.25 GiB") and r.stdout == b"",
           "28.6 certify discontinuities at b/a = 1e-9 with --max-memory 0.25: gave up, exit 1, one line")
-    r = run("certify", "discontinuities", "--a", "1", "--b", "1e-9", "--q", "0.85", preexec_fn=limited(resource.RLIMIT_AS, 256 << 20))
+    r = run("certify", "discontinuities", "--a", "1", "--b", "1e-9", preexec_fn=limited(resource.RLIMIT_AS, 256 << 20))
     check(one_line_error(r, 1, "set outside dfchaos") and r.stdout == b"", "28.6 under a lower ulimit -v: the give-up line names that limit")
     # Memory running out in a sweep cell ends the run (exit 1), never a sealed 'error' cell.
     r = run("sweep", "--q-range", "0.85:0.85:1", "--b-range", "1e-8:1e-8:1", "--observables", "covering", "--max-branches", "100000000",

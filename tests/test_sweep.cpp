@@ -133,7 +133,7 @@ TEST(Spec, RejectsInadmissibleAxesAndTooMuchWork) {
   expect_rejected(s, "steps");  // 10^6 cells * 10^7 steps
   s = spec_of("0.5:1:3", "0.01:0.2:3", "rate");
   s.orbit.theta0_fraction = 1;
-  expect_rejected(s, "theta0");
+  expect_rejected(s, "theta0-fraction");
   s.orbit.theta0_fraction = 0.5;
   s.period.tol = 0;
   expect_rejected(s, "period-tol");                                             // every option is checked, used or not

@@ -72,28 +72,101 @@ certify::Request request_from(const CertifyOptions& o) {
 
 }  // namespace
 
+namespace {
+
+/// The options every statement takes: --certificate (where the statement has a certificate
+/// format) and the budgets.
+void add_common(CLI::App* s, CertifyOptions& o, bool certificate) {
+  if (certificate)
+    s->add_option("--certificate", o.certificate, "write the proof's certificate (JSON witnesses for dfchaos-recheck) to FILE, whole or not at all")
+        ->type_name("FILE")
+        ->check([](const std::string& v) { return v.empty() ? std::string("certificate: a file name (got '')") : std::string(); });
+  s->add_option("--max-seconds", o.max_seconds, "time budget: give up (exit 1, one line) after S seconds, 0 < S <= 1e6")
+      ->type_name("S")
+      ->capture_default_str();
+  s->add_option("--max-memory", o.max_memory, "memory budget: give up (exit 1, one line) beyond G GiB of address space, 0.25 <= G <= 1e4")
+      ->type_name("G")
+      ->capture_default_str();
+}
+
+/// -a (default 1).
+void add_a(CLI::App* s, CertifyOptions& o) { s->add_option("-a,--a", o.a, "forcing amplitude a > 0")->type_name("FLOAT")->capture_default_str(); }
+
+/// -b or -q: required; a number, or also a box LO:HI when `box`.
+void add_parameter(CLI::App* s, std::string& v, const char* names, const char* what, bool box) {
+  s->add_option(names, v, std::string(what) + (box ? ": one value, or a box LO:HI (proved for every value in it)" : ": one value"))
+      ->type_name(box ? "X|LO:HI" : "FLOAT")
+      ->required();
+}
+
+}  // namespace
+
 CLI::App* add_certify(CLI::App& app, CertifyOptions& o) {
   auto* c = app.add_subcommand("certify", "certified verdicts in ball arithmetic (Arb): proved / not proved, as JSON");
-  c->add_option("what", o.what, "vartheta0 | lemma1 | b0 | discontinuities | covering | periodic | superstable")->required();
-  c->add_option("-a,--a", o.a, "forcing amplitude a > 0 (default 1)");
-  c->add_option("-b,--b", o.b, "b, or a box LO:HI (lemma1, covering)");
-  c->add_option("-q,--q", o.q, "q, or a box LO:HI (lemma1, covering)");
-  c->add_option("--period", o.period, "periodic: minimal period m, 1..64");
-  c->add_option("--segment", o.segment, "discontinuities: L0 (default) or L2");
-  c->add_option("--window", o.window, "superstable: certify the window LO:HI (floating estimate of b) and its edges");
-  c->add_option("--J0", o.J0,
-                "covering: prove this segment J0, given as TOP:T2 (the phases where T >= 3pi/2 and T = t2; e.g. from "
-                "certified_region's data), with --J1, instead of searching candidates");
-  c->add_option("--J1", o.J1, "covering: the segment J1 (right of J0), as TOP:T2");
-  c->add_option("--certificate", o.certificate,
-                "write the proof's certificate (JSON witnesses for dfchaos-recheck) to FILE, whole or not at all; vartheta0, lemma1, b0, covering, "
-                "superstable, discontinuities")
-      ->type_name("FILE")
-      ->check([](const std::string& s) { return s.empty() ? std::string("certificate: a file name (got '')") : std::string(); });
-  c->add_option("--max-seconds", o.max_seconds, "time budget: give up (exit 1, one line) after S seconds, 0 < S <= 1e6 [default 60]")->type_name("S");
-  c->add_option("--max-memory", o.max_memory, "memory budget: give up (exit 1, one line) beyond G GiB of address space, 0.25 <= G <= 1e4 [default 2]")
-      ->type_name("G");
+  c->require_subcommand(0, 1);
+  // A word that names no statement lands here and is refused by name (run_certify).
+  c->add_option("what", o.what)->group("");
+  const char* kB = "-b,--b";
+  const char* kQ = "-q,--q";
+  const char* kBText = "b, half the constant force";
+  const char* kQText = "q, the largest dry friction";
+
+  auto* v = c->add_subcommand("vartheta0", "Eq. (1): the root vartheta0 of pi - x = cot(x/2) and its sine, enclosed");
+  add_common(v, o, true);
+
+  auto* l1 = c->add_subcommand("lemma1", "Lemma 1 (u(t2) < 0, Eq. 8) at a point or over a box of (b, q)");
+  add_a(l1, o);
+  add_parameter(l1, o.b, kB, kBText, true);
+  add_parameter(l1, o.q, kQ, kQText, true);
+  add_common(l1, o, true);
+
+  auto* b0 = c->add_subcommand("b0", "a certified lower bound of b0(q): Lemma 1 for every b below it, at one q");
+  add_a(b0, o);
+  add_parameter(b0, o.q, kQ, kQText, false);
+  add_common(b0, o, true);
+
+  auto* d = c->add_subcommand("discontinuities", "Lemma 2: the discontinuities of T1 on L0 or L2, at a point (a, b)");
+  add_a(d, o);
+  add_parameter(d, o.b, kB, kBText, false);
+  d->add_option("--segment", o.segment, "L0 = [101pi/100, 3pi/2] or L2 = [101pi/100, 51pi/50]")->type_name("L0|L2")->capture_default_str();
+  add_common(d, o, true);
+
+  auto* cov = c->add_subcommand("covering", "Lemma 4 / Theorem 1: two disjoint covering segments J0, J1, at a point or over a box");
+  add_a(cov, o);
+  add_parameter(cov, o.b, kB, kBText, true);
+  add_parameter(cov, o.q, kQ, kQText, true);
+  auto* j0 = cov->add_option("--J0", o.J0,
+                             "prove this segment J0, given as TOP:T2 (the phases where T >= 3pi/2 and T = t2; e.g. from "
+                             "certified_region's data), with --J1, instead of searching candidates")
+                 ->type_name("TOP:T2");
+  auto* j1 = cov->add_option("--J1", o.J1, "the segment J1 (right of J0), as TOP:T2")->type_name("TOP:T2");
+  j0->needs(j1);
+  j1->needs(j0);
+  add_common(cov, o, true);
+
+  auto* per = c->add_subcommand("periodic", "Sections 6-7: a periodic point of minimal period M, at a point");
+  add_a(per, o);
+  add_parameter(per, o.b, kB, kBText, false);
+  add_parameter(per, o.q, kQ, kQText, false);
+  per->add_option("--period", o.period, "the minimal period M, 1 <= M <= 64")->type_name("M")->required();
+  add_common(per, o, true);
+
+  auto* sup = c->add_subcommand("superstable", "Theorem 2 at a point, or a window in b with both its edges (--window)");
+  add_a(sup, o);
+  add_parameter(sup, o.b, kB, kBText, false);
+  add_parameter(sup, o.q, kQ, kQText, false);
+  sup->add_option("--window", o.window, "certify the window LO:HI in b (a floating estimate) and its edges, at this q")->type_name("LO:HI");
+  add_common(sup, o, true);
+
+  // A word that names no statement, with the options after it, lands in `what` and is refused
+  // first, by name (set after the statements, which would inherit it: they refuse extras).
+  c->allow_extras();
+  for (CLI::App* s : c->get_subcommands([](CLI::App*) { return true; }))  // every statement (without a filter: the parsed ones)
+    s->footer(
+        "Prints one JSON object: \"proved\", \"statement\", the enclosures (decimal mid and radius) and, when not proved,\n"
+        "\"failed_step\". Exit status 0 proved, 1 not proved (an answer, not an error) or a budget ran out, 2 bad input.");
   c->footer(
+      "One subcommand per statement: 'dfchaos certify STATEMENT --help' lists its options, defaults and ranges.\n"
       "A proof whose cost is not bounded by its input (a tiny b/a needs many branches of T1) gives up within the\n"
       "budget: one line on stderr naming the budget that ran out, nothing on stdout, exit status 1.");
   return c;
@@ -140,7 +213,12 @@ int run_certify(const CertifyOptions& o) {
 Command add_certify_command(CLI::App& app) {
   auto o = std::make_shared<CertifyOptions>();
   CLI::App* c = add_certify(app, *o);
-  return {c, [o] { return run_certify(*o); }};
+  return {c, [o, c] {
+            // No statement given, or a word that names none: run_certify refuses it, naming the statements.
+            for (const CLI::App* s : c->get_subcommands())
+              if (s->parsed()) o->what = s->get_name();
+            return run_certify(*o);
+          }};
 }
 
 }  // namespace dfchaos::cli
