@@ -25,7 +25,7 @@ STAMPS      := $(EXPERIMENTS:%=$(BUILD)/stamps/%.ok)
 FIGS        := $(FIGURES:%=$(BUILD)/figures/%.tex)
 
 .PHONY: help deps deps-report configure build build-tools test reproduce experiments figures report manifest claims-map \
-        docs bench bench-snapshot plane-hires clean test-sanitize test-clang check-determinism certify-region dist format format-check
+        docs bench bench-snapshot plane-hires clean test-sanitize test-clang check-determinism certify-region dist format format-check test-tidy
 
 help:
 	@echo "dfchaos make targets:"
@@ -49,6 +49,8 @@ help:
 	@echo "  make test-clang  build warning-free with clang++ in $(BUILD)-clang and run every test"
 	@echo "  make format      reformat every tracked C++ file with .clang-format (clang-format 14)"
 	@echo "  make format-check  fail, naming the files, when clang-format would change a tracked C++ file"
+	@echo "  make test-tidy   clang-tidy 14 with .clang-tidy on the library and the dfchaos tool (compile commands"
+	@echo "                   of $(BUILD)-tidy, configured only): fail on any warning"
 	@echo "  make check-determinism  rerun every experiment on 1 thread (and on 2 unless make reproduce ran on 2+):"
 	@echo "                   manifests must match each other and the last make reproduce"
 	@echo "  make dist        $(BUILD)/dist/dfchaos-<version>.tar.gz, a git archive of HEAD (refused while tracked files"
@@ -195,6 +197,29 @@ format-check:
 	if [ -n "$$bad" ]; then echo "format-check: clang-format would change these files (make format):"; echo "$$bad"; exit 1; fi; \
 	echo "format-check: $(words $(CXX_SOURCES)) C++ files are as .clang-format writes them"
 
+# Static analysis: clang-tidy 14 with .clang-tidy on the sources of TIDY_DIRS, the library and the
+# dfchaos tool (the experiments, tests, benchmarks and Python bindings are not analysed: they add
+# time to CI and none of them is used by another program). The compile commands come from
+# $(BUILD)-tidy, which is configured and not built: no file the analysis reads is generated. Every
+# warning is an error (.clang-tidy); the log is $(BUILD)-tidy/tidy.log.
+TIDY_DIRS  = src/dfchaos src/certify src/kit src/sweep src/recheck src/mpi src/cli
+TIDY_REGEX = $(CURDIR)/($(subst $(eval) ,|,$(TIDY_DIRS)))/
+
+test-tidy:
+	@bash scripts/install-deps.sh check
+	@mkdir -p $(BUILD)-tidy
+	@$(CMAKE) -S . -B $(BUILD)-tidy -DCMAKE_BUILD_TYPE=$(BTYPE) -DCMAKE_EXPORT_COMPILE_COMMANDS=ON > $(BUILD)-tidy/configure.log 2>&1 \
+	  || { cat $(BUILD)-tidy/configure.log; exit 1; }
+	@start=$$(date +%s); \
+	files=$$(grep -cE '"file": "$(TIDY_REGEX)' $(BUILD)-tidy/compile_commands.json); \
+	run-clang-tidy -p $(BUILD)-tidy -j $(JOBS) -quiet '$(TIDY_REGEX)' > $(BUILD)-tidy/tidy.log 2>&1; status=$$?; \
+	sed -i 's/\x1b\[[0-9;]*m//g' $(BUILD)-tidy/tidy.log; \
+	found=$$(grep -E '^/.*: (warning|error): ' $(BUILD)-tidy/tidy.log | sort -u | wc -l); \
+	if [ $$status -ne 0 ] || [ $$found -ne 0 ]; then \
+	  grep -v -e '^clang-tidy' -e 'warnings\? generated\.$$' $(BUILD)-tidy/tidy.log; \
+	  echo "test-tidy: $$found warning(s) in $$files files (CONTRIBUTING.md says what to do with one)"; exit 1; fi; \
+	echo "test-tidy: $$files files of the library and the dfchaos tool, no warning, in $$(( $$(date +%s) - start )) s"
+
 check-determinism: build-tools
 	@bash scripts/check-determinism.sh $(BUILD)
 
@@ -206,4 +231,4 @@ dist:
 	@bash scripts/dist.sh $(BUILD)
 
 clean:
-	rm -rf $(BUILD) $(BUILD)-sanitize $(BUILD)-clang
+	rm -rf $(BUILD) $(BUILD)-sanitize $(BUILD)-clang $(BUILD)-tidy

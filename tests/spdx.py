@@ -32,7 +32,7 @@ HEAD_LINES = 3
 C_LIKE = {".cpp", ".hpp", ".h"}
 HASH = {".py", ".sh", ".gp", ".cmake", ".yml", ".yaml"}
 TEX = {".tex", ".sty"}
-HASH_NAMES = {"CMakeLists.txt", "Makefile", "run", ".clang-format"}  # run: .ci/run; .clang-format is YAML
+HASH_NAMES = {"CMakeLists.txt", "Makefile", "run", ".clang-format", ".clang-tidy"}  # run: .ci/run; .clang-* are YAML
 EXEMPT_SUFFIXES = {".md", ".json", ".cff"}
 EXEMPT_NAMES = {".gitignore", "LICENSE"}
 

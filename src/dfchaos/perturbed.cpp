@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "dfchaos/bisect.hpp"
 #include "dfchaos/errors.hpp"
@@ -134,7 +135,7 @@ PerturbedGlobalCovering perturbed_covering_global(const Parameters& p, double ep
   PerturbedCoveringSearch pair = s;
   pair.grid = 2;
   double last_stop = PerturbedCovering::nan, last_top = PerturbedCovering::nan;
-  double segment_floor = -INFINITY;  // segments must start right of the last one taken
+  double segment_floor = -std::numeric_limits<double>::infinity();  // segments must start right of the last one taken
   for (std::size_t k = 0; k < v.size(); ++k) {
     bool joined = k > 0 && v[k].ok && v[k - 1].ok;
     if (joined && std::fabs(v[k].T - v[k - 1].T) > s.suspect_jump) {

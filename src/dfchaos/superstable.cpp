@@ -251,7 +251,7 @@ StopCycle stop_cycle(const Parameters& p, double image, long long max_steps, dou
         c.period = k - seen->second;
         break;
       }
-      images.push_back({s.T, k});
+      images.emplace_back(s.T, k);
     } else {
       if (error < kLostAt && !same_branch_around(p, theta, kStopCycleSafety * error)) {
         margin = 0;

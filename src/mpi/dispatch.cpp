@@ -3,13 +3,13 @@
 
 #include <mpi.h>
 #include <omp.h>
-#include <time.h>
 
 #include <algorithm>
 #include <chrono>
 #include <climits>
 #include <cstdint>
 #include <cstring>
+#include <ctime>
 #include <exception>
 #include <mutex>
 #include <stdexcept>

@@ -105,9 +105,9 @@ int run(int argc, char** argv, int rank, int ranks) {
     std::string cpu, busy_wall;
     double sum = 0;
     for (int r = 0; r < ranks; ++r) {
-      cpu += (r ? " " : "") + kit::format_significant(by_rank[static_cast<std::size_t>(2 * r)], 4);
-      busy_wall += (r ? " " : "") + kit::format_significant(by_rank[static_cast<std::size_t>(2 * r + 1)], 4);
-      sum += by_rank[static_cast<std::size_t>(2 * r + 1)];
+      cpu += (r ? " " : "") + kit::format_significant(by_rank[2 * static_cast<std::size_t>(r)], 4);
+      busy_wall += (r ? " " : "") + kit::format_significant(by_rank[2 * static_cast<std::size_t>(r) + 1], 4);
+      sum += by_rank[2 * static_cast<std::size_t>(r) + 1];
     }
     std::fprintf(stderr,
                  "dfchaos-sweep-mpi: %lld cells on %d ranks in %.3f s; cpu seconds per rank: %s; busy seconds per rank: %s; utilization %.4f\n",

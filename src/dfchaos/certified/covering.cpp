@@ -150,7 +150,8 @@ std::vector<Candidate> track_candidates(double a, double b, double q, const std:
         // The plateau moved off the old end: look for it nearby (it moves by about its width per box).
         const double step = c.plateau > 0 ? 0.25 * c.plateau : 1e-3 * scale;
         for (int k = 1; k <= 12 && std::isnan(n.theta_t2); ++k) {
-          const double x = c.theta_t2 + (k % 2 ? 1.0 : -1.0) * step * ((k + 1) / 2);
+          const int steps_away = (k + 1) / 2;  // 1, 1, 2, 2, ...: right and left in turn
+          const double x = c.theta_t2 + (k % 2 ? 1.0 : -1.0) * step * steps_away;
           if (return_map_step(p, x).T == *p.t2()) n.theta_t2 = plateau_middle(p, x, scale, n.plateau);
         }
         if (std::isnan(n.theta_t2)) continue;  // this one is lost

@@ -57,7 +57,7 @@ Part best_part(const std::vector<Proposal>& all, const std::vector<int>& vertice
           index[w] = low[w] = counter++;
           stack.push_back(w);
           on[w] = true;
-          call.push_back({w, 0});
+          call.emplace_back(w, 0);
         } else if (on[w]) {
           low[u] = std::min(low[u], index[w]);
         }
@@ -137,8 +137,8 @@ bool continuous_on(const ParameterBalls& m, double lo, double hi, const EntropyO
     }
     const double mid = 0.5 * (x + y);
     if (!(mid > x && mid < y)) return false;
-    todo.push_back({mid, y});
-    todo.push_back({x, mid});
+    todo.emplace_back(mid, y);
+    todo.emplace_back(x, mid);
   }
   std::sort(g.cover.begin(), g.cover.end(), [](const BallProof& u, const BallProof& w) { return u.theta_lo.mid() < w.theta_lo.mid(); });
   return true;
@@ -192,6 +192,7 @@ EntropyProof prove_entropy_bound(double a, double b, double q, const EntropyOpti
     std::iota(order.begin(), order.end(), 0);
     std::sort(order.begin(), order.end(), [&](int i, int k) { return part.v[i] > part.v[k]; });
     std::vector<int> kept;
+    kept.reserve(static_cast<std::size_t>(std::max(opt.max_segments, 0)));
     for (int i = 0; i < opt.max_segments; ++i) kept.push_back(part.vertices[order[i]]);
     std::sort(kept.begin(), kept.end());
     part = best_part(all, kept);

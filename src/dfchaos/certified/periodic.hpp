@@ -67,7 +67,7 @@ struct PeriodicProof {
   double seconds = 0;                ///< wall time
 };
 
-/// Periodic orbit of minimal period m (1 <= m <= 64) from a proved covering.
-PeriodicProof prove_periodic(const CoveringProof& covering, int m, const PeriodicOptions& opt = {});
+/// Periodic orbit of minimal period m = `period` (1 <= m <= 64) from the proved covering `cov`.
+PeriodicProof prove_periodic(const CoveringProof& cov, int period, const PeriodicOptions& opt = {});
 
 }  // namespace dfchaos::certified

@@ -309,8 +309,8 @@ Lemma1Bound lemma1_b0_lower_bound(double a, double q, double resolution, int max
         ok = false;
         break;
       }
-      stack.push_back({mid, y});
-      stack.push_back({x, mid});
+      stack.emplace_back(mid, y);
+      stack.emplace_back(x, mid);
     }
     if (ok) {
       r.b_low = b_low;

@@ -85,7 +85,7 @@ struct Experiment {
 
   /// The whole command-line program: parses, runs, writes. Exit status: 0 every expected claim
   /// holds, 1 one fails (or a bounded computation gave up, or a write failed), 2 bad input.
-  int main(const std::string& name, int argc, char** argv) const;
+  int main(const std::string& name, int argc, char** argv) const;  // NOLINT(bugprone-exception-escape): a member, not the program's main
   /// The declaration as JSON (`--describe`).
   Json describe(const std::string& name) const;
 

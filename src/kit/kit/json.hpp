@@ -22,7 +22,7 @@ class Json {
  public:
   using Value = nlohmann::ordered_json;  ///< the value underneath
 
-  Json() = default;
+  Json() = default;                                // NOLINT(bugprone-exception-escape): a null value allocates nothing
   Json(bool b) : v_(b) {}                          ///< a boolean
   Json(double d) : v_(d) {}                        ///< a number (non-finite: written as null)
   Json(int i) : v_(static_cast<long long>(i)) {}   ///< an integer

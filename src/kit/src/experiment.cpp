@@ -66,7 +66,7 @@ Json Experiment::describe(const std::string& name) const {
   return j;
 }
 
-int Experiment::main(const std::string& name, int argc, char** argv) const {
+int Experiment::main(const std::string& name, int argc, char** argv) const {  // NOLINT(bugprone-exception-escape): not the program's main
   remove_temporaries_on_signals();
   const int status = run_main(name, argc, argv);
   // What went to stdout (--describe, --help) must have reached it: a failed write is not a success.

@@ -51,6 +51,7 @@ double Axis::operator[](int i) const {
 
 std::vector<double> Axis::values() const {
   std::vector<double> v;
+  v.reserve(static_cast<std::size_t>(n_));
   for (int i = 0; i < n_; ++i) v.push_back((*this)[i]);
   return v;
 }

@@ -24,9 +24,9 @@ std::string Table::render(const std::string& comments) const {
   for (const auto& r : rows_) {
     for (std::size_t k = 0; k < r.size(); ++k) {
       if (k) out += "\t";
-      if (auto* d = std::get_if<double>(&r[k]))
+      if (const auto* d = std::get_if<double>(&r[k]))
         out += format_double(*d);
-      else if (auto* i = std::get_if<long long>(&r[k]))
+      else if (const auto* i = std::get_if<long long>(&r[k]))
         out += std::to_string(*i);
       else
         out += std::get<std::string>(r[k]);

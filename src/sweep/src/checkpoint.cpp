@@ -117,7 +117,7 @@ std::string Checkpoint::read_chunk(const fs::path& path, const Interval& c) cons
   }
   if (body.substr(0, header_.size()) != header_)
     throw InvalidParameter(kOption, path.string() + " is a chunk of another run (its header differs: spec, build or shard)" + advice);
-  const std::string rows(body.substr(header_.size()));
+  std::string rows(body.substr(header_.size()));
   if (seal.rows != c.size())
     throw InvalidParameter(kOption, path.string() + " is damaged (its seal counts " + std::to_string(seal.rows) + " rows, its name " +
                                         std::to_string(c.size()) + ")" + advice);

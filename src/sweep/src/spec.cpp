@@ -93,7 +93,7 @@ std::vector<std::string> Spec::header_lines() const {
                 "a proof at one point, not over the cell)");
   h.push_back("cells = " + count_text(cells()) + "  (index = i * " + count_text(b_over_a.size()) +
               " + j, i over q_over_a, j over b_over_a; a = A, q = q_over_a A, b = b_over_a A)");
-  h.push_back(
+  h.emplace_back(
       "status: ok | inadmissible (q/a <= 2 b/a: T undefined; values nan) | error (an observable threw: "
       "its values nan, the message in the error column)");
   return h;
@@ -102,7 +102,7 @@ std::vector<std::string> Spec::header_lines() const {
 std::vector<std::string> Spec::columns() const {
   std::vector<std::string> c = {"index", "q_over_a", "b_over_a", "status"};
   for (auto& name : observables.columns()) c.push_back(name);
-  c.push_back("error");
+  c.emplace_back("error");
   return c;
 }
 
