@@ -1,6 +1,8 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # Figure: the return map T of Lemma 3 on [t2, t3), each point coloured by its scenario; from
-# lemma3_return_map (colour and marker per scenario). Left: Lemma 1 holds (b/a = 0.01, q/a = 0.85); right: it fails (q/a = 0.7).
+# lemma3_return_map (colour and marker per scenario), at two of its parameter sets (the left one where Lemma 1
+# holds, the right one where it fails). Each panel reads b and q from its data file's description line and
+# whether Lemma 1 holds from the experiment's summary table (column lemma1_holds): nothing is typed here.
 # Grey: theta2, where the first progression ends (Eq. 17), wherever it is not T itself, unwrapped
 # into [t1, t0 + 2 pi): in [t1, t2) the mass stops until t2 (B), in [t3, t0 + 2 pi) it stops
 # until t0 and progresses again (C, D). The phases t0..t3 (closed form, docs/architecture.md) are marked on
@@ -18,11 +20,19 @@ sc_col(s) = (s eq "A" ? c_free : (s eq "B" ? c_stop : (s eq "C" ? c_alt : (s eq 
 # and a marker per scenario, so that the key reads in greyscale too (circle for theta2)
 sc_pt(s) = (s eq "A" ? 5 : (s eq "B" ? 9 : (s eq "C" ? 13 : 11)))
 files = "b0.01-q0.85 b0.05-q0.7"
+summary = data."/lemma3_return_map.tsv"
 do for [k=1:2] {
   f = word(files, k)
-  b = (k == 1 ? 0.01 : 0.05); q = (k == 1 ? 0.85 : 0.7)
-  t0 = asin(q - 2*b); t1 = pi - t0; t2 = pi + asin(2*b); t3 = 2*pi - asin(2*b)
   file = data."/lemma3_return_map-graph-".f.".tsv"
+  # a = 1 in this experiment; b and q from the line '# T on [t2, t3) at a=1 b=B q=Q'
+  b = real(system("sed -n 's/^# T on .* b=\\([^ ]*\\) q=\\([^ ]*\\)$/\\1/p' '".file."'"))
+  q = real(system("sed -n 's/^# T on .* b=\\([^ ]*\\) q=\\([^ ]*\\)$/\\2/p' '".file."'"))
+  set autoscale xy  # stats keeps to the ranges of the previous panel otherwise
+  stats summary using ((abs(column("b_over_a") - b) < 1e-12 && abs(column("q_over_a") - q) < 1e-12) ? column("lemma1_holds") : NaN) \
+        name "L1" nooutput
+  if (L1_records != 1) { print "fig_T: no single row of ".summary." at b = ".sprintf("%g", b).", q = ".sprintf("%g", q); exit status 1 }
+  verdict = (L1_max == 1 ? "holds" : "fails")
+  t0 = asin(q - 2*b); t1 = pi - t0; t2 = pi + asin(2*b); t3 = 2*pi - asin(2*b)
   # which scenarios are present (keys list only those)
   set autoscale xy
   present = ""
@@ -31,7 +41,7 @@ do for [k=1:2] {
     if (N_sum > 0) { present = present." ".s }
   }
   set lmargin at screen (k == 1 ? 0.085 : 0.595); set rmargin at screen (k == 1 ? 0.475 : 0.985)
-  set title (k == 1 ? '\small (a) $b/a=0.01$, $q/a=0.85$: Lemma~1 holds' : '\small (b) $b/a=0.05$, $q/a=0.7$: Lemma~1 fails') offset 0,1.5
+  set title sprintf('\small (%s) $b/a=%g$, $q/a=%g$: Lemma~1 %s', (k == 1 ? "a" : "b"), b, q, verdict) offset 0,1.5
   set xrange [t2:t3]
   set yrange [t1-0.12:t0+2*pi+0.12]
   set xtics ('$t_2$' t2, '$\frac{5\pi}{4}$' 1.25*pi, '$\frac{3\pi}{2}$' 1.5*pi, '$\frac{7\pi}{4}$' 1.75*pi, '$t_3$' t3)
