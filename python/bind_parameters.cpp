@@ -118,7 +118,7 @@ messages as `dfchaos info --physical`).)doc")
       .def("require_return_map", &Parameters::require_return_map,
            "Raises ValueError unless the return map T is defined here: b < a/2, q > 2b and b/a >= min_map_ratio.")
       .def("require_eq2", &Parameters::require_eq2, "Raises ValueError unless assumption (2) holds: 0 < b < a/2 and a sin(vartheta0) < q < a.")
-      .def("describe", &Parameters::describe, "'a=... b=... q=...' with 17 significant digits")
+      .def("describe", &Parameters::describe, "'a=... b=... q=...' in the shortest decimals that read back to the same doubles")
       .def("__repr__",
            [](const py::handle& self) -> std::string {
              // repr works on every object (debuggers and tracebacks call it): an unconstructed one
@@ -132,6 +132,17 @@ messages as `dfchaos info --physical`).)doc")
              // The shortest decimals that read back to the same doubles (the library's format_shortest).
              return "dfchaos.Parameters(a=" + format_shortest(p.a()) + ", b=" + format_shortest(p.b()) + ", q=" + format_shortest(p.q()) + ")";
            })
+      // Equal when a, b and q are the same doubles (everything else is computed from them); hashable
+      // alike, so that parameter sets can key a dict.
+      .def(
+          "__eq__",
+          [](const Parameters& x, const py::object& y) -> py::object {
+            if (!py::isinstance<Parameters>(y)) return py::reinterpret_borrow<py::object>(Py_NotImplemented);
+            const auto& o = y.cast<const Parameters&>();
+            return py::bool_(x.a() == o.a() && x.b() == o.b() && x.q() == o.q());
+          },
+          py::is_operator())
+      .def("__hash__", [](const Parameters& p) { return py::hash(py::make_tuple(p.a(), p.b(), p.q())); })
       .def(py::pickle([](const Parameters& p) { return py::make_tuple(p.a(), p.b(), p.q()); },
                       [](const py::tuple& t) {
                         if (t.size() != 3) throw std::runtime_error("dfchaos.Parameters: bad pickle state");

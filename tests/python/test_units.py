@@ -103,3 +103,7 @@ def test_repr_is_shortest_and_round_trips(abq):
     assert (back.a, back.b, back.q) == abq
     r = pickle.loads(pickle.dumps(p, protocol=pickle.HIGHEST_PROTOCOL))
     assert (r.a, r.b, r.q, r.t0, r.t2, r.t3) == (p.a, p.b, p.q, p.t0, p.t2, p.t3)
+    # Equal (and of equal hash) exactly when a, b, q are the same doubles.
+    assert back == p and r == p and hash(r) == hash(p) and len({p, r, back}) == 1
+    assert p != dfchaos.Parameters(abq[0], math.nextafter(abq[1], 1.0), abq[2])
+    assert p != abq and (p == "p") is False
