@@ -22,14 +22,16 @@ namespace dfchaos::python {
 
 namespace {
 
-/// An axis as the tool writes it ("lo:hi:n[:kind]") or as a tuple (lo, hi, n[, kind]).
-using AxisArg = std::variant<std::string, std::tuple<double, double, long long>, std::tuple<double, double, long long, std::string>>;
+/// An axis as the tool writes it ("lo:hi:n[:kind]" or "x"), as a tuple (lo, hi, n[, kind]), or one
+/// number x (the axis x:x:1, as the tool's `--q-range 0.85`).
+using AxisArg = std::variant<std::string, std::tuple<double, double, long long>, std::tuple<double, double, long long, std::string>, double>;
 /// The observables as the tool writes them ("covering,period") or as a list of names.
 using ObservablesArg = std::variant<std::string, std::vector<std::string>>;
 
 /// The text of an axis: a tuple is spelt with %.17g, which reads back to the same doubles.
 std::string axis_text(const AxisArg& v) {
   if (const auto* s = std::get_if<std::string>(&v)) return *s;
+  if (const auto* x = std::get_if<double>(&v)) return format_double(*x);
   if (const auto* t = std::get_if<std::tuple<double, double, long long>>(&v))
     return format_double(std::get<0>(*t)) + ":" + format_double(std::get<1>(*t)) + ":" + std::to_string(std::get<2>(*t));
   const auto& t = std::get<std::tuple<double, double, long long, std::string>>(v);
@@ -163,8 +165,9 @@ last bit. Each keyword is the tool's option of the same name (--q-range, --max-b
 theta0_fraction, the tool's --theta0-fraction: a fraction f in [0, 1) of the arc, theta_0 = t2 + f (t3 - t2)
 (elsewhere in this module theta0 is a phase).
 
-q_range, b_range: an axis as the tool writes it, 'lo:hi:n[:lin|log|mid]', or a tuple (lo, hi, n) or
-  (lo, hi, n, kind); both ends included for lin and log (a single value is (x, x, 1)), cell centres for mid.
+q_range, b_range: an axis as the tool writes it, 'lo:hi:n[:lin|log|mid]' or 'x', a tuple (lo, hi, n) or
+  (lo, hi, n, kind), or one number x; both ends included for lin and log (one value x is (x, x, 1)),
+  cell centres for mid.
 observables: a comma-separated string or a list of names among covering, superstable, lyapunov, rate,
   period, certified (the columns always come in that order).
 

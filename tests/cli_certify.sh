@@ -62,6 +62,10 @@ expect 2 'segment:' discontinuities --b 0.01 --segment L7
 expect 2 'window:' superstable --b 0.06 --q 0.85 --window 0.07:0.06
 expect 2 'what'  covered --b 0.001 --q 0.85
 expect 2 'what'
+# The statement comes first: a word or an option before it is refused, never dropped.
+expect 2 "certify: 'foo' before the statement covering" foo covering --b 0.001 --q 0.85
+expect 2 "certify: '--period' before the statement covering" --period 3 covering --b 0.001 --q 0.85
+expect 2 "certify: '-b' before the statement covering" -b 0.3 covering --b 0.001 --q 0.85
 # One subcommand per statement: an option of another statement is refused.
 expect 2 'not expected' discontinuities --b 0.01 --q 0.85
 expect 2 'not expected' vartheta0 --b 0.01

@@ -52,7 +52,8 @@ expect_error "theta:" map "${P[@]}" --theta nan
 expect_error "theta0:" orbit "${P[@]}" --theta0 6.5 --steps 3
 expect_error "theta"  map "${P[@]}"
 expect_error "--theta" map "${P[@]}" --theta
-expect_error "grid n:" map "${P[@]}" --grid 3.5:4:0
+expect_error "grid n: .*1 <= n <= 1e7" map "${P[@]}" --grid 3.5:4:0
+expect_error "grid n: .*1 <= n <= 1e7" map "${P[@]}" --grid 3.5:4:100000001
 expect_error "grid n:" map "${P[@]}" --grid 3.5:4:2.5
 expect_error "grid: .*lo < hi" map "${P[@]}" --grid 4:3.5:10
 expect_error "grid: .*t2 <= grid < t3" map "${P[@]}" --grid 1:3.5:10
@@ -172,6 +173,28 @@ if [[ $(head -n 1 "$tmp/smp.tsv") != $'t\tx\ty\tv\tregime' || $(grep -vc '^#' "$
 fi
 # The samples are a table of their own: --sample needs --samples-out, and the other way round.
 expect_error "sample: .*--samples-out" simulate "${P[@]}" --x0 0 --y0 0 --v0 0 --t0 4 --t-end 100 --sample 1
+# The file the shell opened for stdout or stderr is not replaced by the samples (nor by a sweep's --out).
+checks=$((checks + 1))
+echo keep > "$tmp/elog.txt"
+"$cli" simulate "${P[@]}" --x0 0 --y0 0 --v0 0 --t0 4 --t-end 10 --sample 1 --samples-out /dev/stderr 2>>"$tmp/elog.txt" >/dev/null
+rc=$?
+if [[ $rc -ne 2 || $(head -n 1 "$tmp/elog.txt") != keep ]] || ! grep -q "samples-out: .*standard error" "$tmp/elog.txt"; then
+  echo "FAIL: --samples-out /dev/stderr replaced the file of stderr (rc=$rc)"; fails=$((fails + 1))
+fi
+checks=$((checks + 1))
+"$cli" sweep --q-range 0.85 --b-range 0.01 --observables covering --out "$tmp/same.tsv" > "$tmp/same.tsv" 2>"$tmp/err"
+rc=$?
+if [[ $rc -ne 2 ]] || ! grep -q "out: .*standard output" "$tmp/err"; then echo "FAIL: sweep --out onto its own stdout (rc=$rc)"; fails=$((fails + 1)); fi
+# A closed stdout: the rows cannot be written (exit 1); they never land in the samples file.
+checks=$((checks + 1))
+"$cli" simulate "${P[@]}" --x0 0 --y0 0 --v0 0 --t0 4 --t-end 100 --sample 1 --samples-out "$tmp/closed.tsv" >&- 2>"$tmp/err"
+rc=$?
+if [[ $rc -ne 1 || -e "$tmp/closed.tsv" ]]; then echo "FAIL: simulate with stdout closed: rc=$rc, samples file $(ls "$tmp"/closed.tsv* 2>&1)"; fails=$((fails + 1)); fi
+# A reader that stops early (SIGPIPE) leaves no temporary of the samples file.
+checks=$((checks + 1))
+mkdir -p "$tmp/pipe"
+"$cli" simulate "${P[@]}" --x0 0 --y0 0 --v0 0 --t0 4 --t-end 1e5 --sample 1 --samples-out "$tmp/pipe/s.tsv" 2>/dev/null | head -n 2 > /dev/null
+if [[ -n $(ls -A "$tmp/pipe") ]]; then echo "FAIL: SIGPIPE left $(ls -A "$tmp/pipe")"; fails=$((fails + 1)); fi
 expect_error "samples-out:" simulate "${P[@]}" --x0 0 --y0 0 --v0 0 --t0 4 --t-end 100 --samples-out "$tmp/smp2.tsv"
 expect_error "samples-out" simulate "${P[@]}" --x0 0 --y0 0 --v0 0 --t0 4 --t-end 100 --sample 1 --samples-out "$tmp"
 checks=$((checks + 1))

@@ -13,6 +13,9 @@
 /// Output is tab-separated with one header line per table, numbers in %.17g. Bad input: one line
 /// on stderr naming the parameter and the condition, exit status 2, nothing on stdout. A bounded
 /// computation that gives up (e.g. a motion that never flies again): one line, exit status 1.
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -40,6 +43,17 @@ bool g_write_failure_reported = false;
 }  // namespace
 
 int run(int argc, char** argv) {
+  // A closed stdout or stderr (`dfchaos ... >&-`) would hand its number to the next file opened
+  // (a sample or sweep file), and rows meant for stdout would land in it. Such a descriptor is
+  // held by /dev/null opened read-only: writes to it fail, so the command ends with exit 1.
+  for (int fd : {1, 2})
+    if (::fcntl(fd, F_GETFD) == -1 && errno == EBADF) {
+      const int held = ::open("/dev/null", O_RDONLY);
+      if (held >= 0 && held != fd) {
+        ::dup2(held, fd);
+        ::close(held);
+      }
+    }
   kit::remove_temporaries_on_signals();
   const int status = run_command(argc, argv);
   // Every command's output must reach stdout (also --help and --version): a failed write is an

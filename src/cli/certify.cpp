@@ -2,6 +2,8 @@
 #include "certify.hpp"
 
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "cli.hpp"
 
@@ -105,7 +107,7 @@ CLI::App* add_certify(CLI::App& app, CertifyOptions& o) {
   auto* c = app.add_subcommand("certify", "certified verdicts in ball arithmetic (Arb): proved / not proved, as JSON");
   c->require_subcommand(0, 1);
   // A word that names no statement lands here and is refused by name (run_certify).
-  c->add_option("what", o.what)->group("");
+  c->add_option("statement", o.what)->group("");
   const char* kB = "-b,--b";
   const char* kQ = "-q,--q";
   const char* kBText = "b, half the constant force";
@@ -214,9 +216,20 @@ Command add_certify_command(CLI::App& app) {
   auto o = std::make_shared<CertifyOptions>();
   CLI::App* c = add_certify(app, *o);
   return {c, [o, c] {
-            // No statement given, or a word that names none: run_certify refuses it, naming the statements.
+            // The statement comes first: a word before it (or instead of it) and options before it
+            // are refused, never dropped. No statement, or a word that names none: run_certify
+            // refuses it, naming the statements.
+            const CLI::App* chosen = nullptr;
             for (const CLI::App* s : c->get_subcommands())
-              if (s->parsed()) o->what = s->get_name();
+              if (s->parsed()) chosen = s;
+            const std::vector<std::string> extras = c->remaining();
+            if (chosen && (!o->what.empty() || !extras.empty())) {
+              const std::string stray = !extras.empty() ? extras.front() : o->what;
+              std::fprintf(stderr, "dfchaos: error: certify: '%s' before the statement %s (write 'dfchaos certify %s OPTIONS')\n",
+                           kit::one_line(stray).c_str(), chosen->get_name().c_str(), chosen->get_name().c_str());
+              return 2;
+            }
+            if (chosen) o->what = chosen->get_name();
             return run_certify(*o);
           }};
 }

@@ -60,9 +60,7 @@ Command add_map(CLI::App& app) {
             if (!o->grid.empty()) {
               if (o->grid.size() != 1)
                 throw InvalidParameter("grid", "write the grid as one word LO:HI:N[:lin|log|mid] (HI included, as in sweep), not 'LO HI N'");
-              const sweep::Range r = sweep::Range::parse("grid", o->grid[0]);
-              if (r.size() > kMaxMapGrid)
-                throw InvalidParameter("grid n", "1 <= n <= " + format_shortest(static_cast<double>(kMaxMapGrid)), static_cast<double>(r.size()));
+              const sweep::Range r = sweep::Range::parse("grid", o->grid[0], kMaxMapGrid);
               th.reserve(static_cast<std::size_t>(r.size()));
               for (long long i = 0; i < r.size(); ++i) th.push_back(r[i]);
               for (double x : th) p.require_in_map_domain(x, "grid");

@@ -54,12 +54,14 @@ class Printer final : public SimulationSink {
   }
   void sample(const Sample& s) override { samples_->row(s); }
 
-  /// After the last event: the state at t-end as a comment line; the sample file put in place.
+  /// After the last event: the events flushed, the sample file put in place, then the state at
+  /// t-end as a comment line (so that the final state on stdout means the whole run succeeded).
   void finish(const MechanicalState& end) {
+    w_.flush();  // the events reached stdout (a failed write ends here: no samples file)
+    if (samples_) samples_->commit();
     w_.line("# final state: t = " + format_double(end.t.value()) + ", phase = " + format_double(end.t.phase) + ", x = " + format_double(end.x) +
             ", y = " + format_double(end.y) + ", v = " + format_double(end.v) + ", regime = " + regime_code(end.regime));
     w_.flush();
-    if (samples_) samples_->commit();
   }
 
  private:

@@ -186,6 +186,20 @@ def test_sweep_defaults_and_threads(cli):
             assert list(cols[name]) == [float(row[j]) for row in rows], name
 
 
+def test_sweep_single_value_axes(cli):
+    """One number is the axis x:x:1, as the tool's --q-range 0.85: the same columns as its spellings."""
+    one, _ = dfchaos.sweep(0.85, 0.01, observables="covering,period", steps=50, transient=10)
+    text, _ = dfchaos.sweep("0.85", "0.01:0.01:1", observables="covering,period", steps=50, transient=10)
+    tup, _ = dfchaos.sweep((0.85, 0.85, 1), (0.01, 0.01, 1, "lin"), observables="covering,period", steps=50, transient=10)
+    for name in one:
+        assert list(one[name]) == list(text[name]) == list(tup[name]), name
+    rc, out, err = cli.run("sweep", "--q-range", "0.85", "--b-range", "0.01", "--observables", "covering,period", "--steps", "50",
+                           "--transient", "10")
+    assert rc == 0, err
+    row = [l for l in out.splitlines()[1:] if not l.startswith("#")][0].split("\t")
+    assert float(row[5]) == one["period"][0] and float(row[4]) == one["covering"][0]
+
+
 # ---- failures: the tool's messages -----------------------------------------------------------------
 P = dfchaos.Parameters(1.0, 0.01, 0.85)
 SWEEP = ["sweep", "--q-range", "0.85:0.85:1", "--b-range", "0.01:0.01:1"]
@@ -238,7 +252,7 @@ def test_wrong_types_and_keywords():
     with pytest.raises(TypeError):
         dfchaos.sweep("0.85:0.85:1", "0.01:0.01:1", theta0=0.5)  # a fraction: theta0_fraction
     with pytest.raises(TypeError):
-        dfchaos.sweep(0.85, "0.01:0.01:1")
+        dfchaos.sweep([0.85], "0.01:0.01:1")  # one number is an axis (x:x:1); a list is not
 
 
 def test_orbit_observables_from_threads():

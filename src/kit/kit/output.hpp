@@ -25,7 +25,7 @@ namespace dfchaos::kit {
 /// half written. Used by the experiment outputs and by the sweep's output files.
 std::filesystem::path unique_temporary(const std::filesystem::path& path);
 
-/// Makes SIGINT, SIGTERM and SIGHUP remove every temporary file registered (TemporaryFileGuard)
+/// Makes SIGINT, SIGTERM, SIGHUP and SIGPIPE remove every temporary file registered (TemporaryFileGuard)
 /// before the process ends by the signal as it would have (the same status), and ignores SIGXFSZ
 /// (a write beyond a file-size limit then fails with EFBIG: one line, exit 1). A signal that is
 /// ignored when this is called (e.g. SIGHUP under nohup) stays ignored. Idempotent. SIGKILL

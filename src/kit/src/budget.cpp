@@ -40,11 +40,7 @@ extern "C" void on_time_budget(int) {
   ::_exit(1);
 }
 
-std::string shortest(double x) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%g", x);
-  return buf;
-}
+std::string shortest(double x) { return dfchaos::format_shortest(x); }
 }  // namespace
 
 ProcessBudget parse_budget(const std::string& seconds, const std::string& gib) {

@@ -90,7 +90,9 @@ void remove_temporaries_on_signals() {
     // Beyond a file-size limit (ulimit -f) a write then fails with EFBIG and takes the ordinary
     // error path (one line, exit 1, temporary removed) instead of killing the process.
     ::signal(SIGXFSZ, SIG_IGN);
-    for (int sig : {SIGINT, SIGTERM, SIGHUP}) {
+    // SIGPIPE too: `dfchaos simulate ... --samples-out F | head` ends by it, as any tool writing
+    // to a closed pipe does, but without leaving F's temporary behind.
+    for (int sig : {SIGINT, SIGTERM, SIGHUP, SIGPIPE}) {
       struct sigaction old {};
       if (::sigaction(sig, nullptr, &old) != 0 || old.sa_handler == SIG_IGN) continue;
       struct sigaction sa {};

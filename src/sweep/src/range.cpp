@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "sweep/range.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -33,21 +34,22 @@ const char* spacing_name(Spacing s) {
 }
 }  // namespace
 
-Range Range::parse(const std::string& option, const std::string& text) {
+Range Range::parse(const std::string& option, const std::string& text, long long max_points) {
+  max_points = std::min(max_points, kMaxAxisPoints);
   constexpr std::size_t kMaxParts = 4;
   const auto parts = split(text, kMaxParts);
   const std::string form = "write x (one value), lo:hi:n or lo:hi:n:lin|log|mid";
   if (parts.size() == 1) {  // one value x: the same as x:x:1
     const double x = kit::parse_number(option, parts[0], false);
-    return parse(option, format_double(x) + ":" + format_double(x) + ":1");
+    return parse(option, format_double(x) + ":" + format_double(x) + ":1", max_points);
   }
   if (parts.size() < 3 || parts.size() > kMaxParts) throw InvalidParameter(option, form + " (got '" + text + "')");
   Range r;
   r.lo_ = kit::parse_number(option + " lo", parts[0], false);
   r.hi_ = kit::parse_number(option + " hi", parts[1], false);
   const double n = kit::parse_number(option + " n", parts[2], true);
-  if (n < 1 || n > static_cast<double>(kMaxAxisPoints))
-    throw InvalidParameter(option + " n", "1 <= n <= " + format_shortest(static_cast<double>(kMaxAxisPoints)), n);
+  if (n < 1 || n > static_cast<double>(max_points))
+    throw InvalidParameter(option + " n", "1 <= n <= " + format_shortest(static_cast<double>(max_points)), n);
   r.n_ = static_cast<long long>(n);
   if (parts.size() == kMaxParts) {
     if (parts[3] == "lin")

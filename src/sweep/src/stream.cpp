@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "sweep/stream.hpp"
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <atomic>
@@ -28,7 +29,18 @@ void StdoutStream::commit() {
 }
 
 AtomicFile::AtomicFile(const fs::path& path, const std::string& option)
-    : path_(kit::output_target(path, option)), tmp_(kit::unique_temporary(path_)), guard_(tmp_) {
+    : path_(kit::output_target(path, option)), tmp_(kit::unique_temporary(path_)), guard_(tmp_), option_(option) {
+  // The file the shell opened as standard output or error (`--out /dev/stdout > f`, or `> f` and
+  // `--out f`) would be replaced by the rename and the other output lost: refused.
+  struct stat target {};
+  if (::stat(path_.c_str(), &target) == 0)
+    for (int fd : {1, 2}) {
+      struct stat open_fd {};
+      if (::fstat(fd, &open_fd) == 0 && open_fd.st_dev == target.st_dev && open_fd.st_ino == target.st_ino)
+        throw kit::OutputError(option + ": " + path.string() + " is the file of standard " + (fd == 1 ? "output" : "error") +
+                                   " (it would be replaced and what is written there lost)",
+                               true);
+    }
   file_ = std::fopen(tmp_.c_str(), "wx");  // exclusive: never reuses a name
   if (!file_) {
     const int err = errno;
@@ -42,20 +54,20 @@ AtomicFile::~AtomicFile() {
 }
 
 void AtomicFile::write(std::string_view text) {
-  if (!file_) throw kit::OutputError("cannot write " + path_.string() + ": already closed", false);
+  if (!file_) throw kit::OutputError(option_ + ": cannot write " + path_.string() + ": already closed", false);
   if (std::fwrite(text.data(), 1, text.size(), file_) != text.size())
-    throw kit::OutputError("cannot write " + path_.string() + ": " + std::strerror(errno), false);
+    throw kit::OutputError(option_ + ": cannot write " + path_.string() + ": " + std::strerror(errno), false);
 }
 
 void AtomicFile::commit() {
-  if (!file_) throw kit::OutputError("cannot write " + path_.string() + ": already closed", false);
+  if (!file_) throw kit::OutputError(option_ + ": cannot write " + path_.string() + ": already closed", false);
   const bool flushed = std::fflush(file_) == 0 && !std::ferror(file_) && ::fsync(::fileno(file_)) == 0;
   const int err = errno;
   const bool closed = std::fclose(file_) == 0;
   file_ = nullptr;
-  if (!flushed || !closed) throw kit::OutputError("cannot write " + path_.string() + ": " + std::strerror(err), false);
+  if (!flushed || !closed) throw kit::OutputError(option_ + ": cannot write " + path_.string() + ": " + std::strerror(err), false);
   if (std::rename(tmp_.c_str(), path_.c_str()) != 0)
-    throw kit::OutputError("cannot rename into " + path_.string() + ": " + std::strerror(errno), false);
+    throw kit::OutputError(option_ + ": cannot rename into " + path_.string() + ": " + std::strerror(errno), false);
   committed_ = true;
   guard_.release();
 }

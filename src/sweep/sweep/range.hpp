@@ -31,9 +31,10 @@ enum class Spacing { Linear, Log, Mid };
 /// An axis `lo:hi:n[:lin|log|mid]` (or one value `x`) of a sweep, and of `dfchaos map --grid`.
 class Range {
  public:
-  /// Parses `text`. Errors name `option` (e.g. "q-range") and the violated condition.
+  /// Parses `text`, with at most `max_points` points (at most kMaxAxisPoints). Errors name
+  /// `option` (e.g. "q-range") and the violated condition.
   /// @throws InvalidParameter on any malformed or inadmissible text.
-  static Range parse(const std::string& option, const std::string& text);
+  static Range parse(const std::string& option, const std::string& text, long long max_points = kMaxAxisPoints);
 
   /// Requires every point of the axis to lie in the open interval (open_lo, open_hi); `what` states
   /// that condition in the error. @throws InvalidParameter naming `option`.

@@ -51,6 +51,7 @@ class AtomicFile final : public Stream {
  private:
   std::filesystem::path path_, tmp_;
   kit::TemporaryFileGuard guard_;
+  std::string option_;  ///< the option that named the path, for messages
   std::FILE* file_ = nullptr;
   bool committed_ = false;
 };
