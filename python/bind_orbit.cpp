@@ -61,7 +61,7 @@ adds nothing. The `lyapunov` column of `dfchaos sweep`, computed by the same C++
 a one-cell sweep with the same parameters to the last bit.
 
 theta0: a phase in [t2, t3), as in orbit(); None (the default) starts where a sweep starts by
-default, t2 + (t3 - t2)/2. (The tool's `sweep --theta0` is a fraction f of the arc:
+default, t2 + (t3 - t2)/2. (The tool's `sweep --theta0-fraction` is a fraction f of the arc:
 theta0 = p.t2 + f * (p.t3 - p.t2) here gives its start to the last bit.)
 Raises ValueError (dfchaos.InvalidParameter, the tool's messages) unless the map is defined (as T),
 theta0 is in [t2, t3), 1 <= steps <= 1e8 and 0 <= transient <= 1e8; dfchaos.GaveUp if the motion

@@ -4,13 +4,13 @@
 /// it in-process: thin subcommands over the library (cmd_*.cpp).
 ///
 ///   dfchaos info       --a A --b B --q Q
-///   dfchaos map        --a A --b B --q Q (--theta X [X ...] | --grid LO HI N | --arc N)
+///   dfchaos map        --a A --b B --q Q (--theta X [X ...] | --grid LO:HI:N[:KIND] | --arc N)
 ///   dfchaos orbit      --a A --b B --q Q --theta0 X --steps N
-///   dfchaos simulate   --a A --b B --q Q --x0 X --y0 Y --v0 V --t0 T --t-end E [--sample DT]
+///   dfchaos simulate   --a A --b B --q Q --x0 X --y0 Y --v0 V --t0 T --t-end E [--sample DT --samples-out F]
 ///   dfchaos provenance [--latex]
-///   dfchaos certify WHAT [--a A --b B|LO:HI --q Q|LO:HI ...]   (certify.hpp)
+///   dfchaos certify STATEMENT [--a A --b B|LO:HI --q Q|LO:HI ...]   (certify.hpp)
 ///
-/// Output is tab-separated with one header line per table, numbers in %.17g. Bad input: one line
+/// Output is tab-separated, the column line first and '#' lines after it, numbers in %.17g. Bad input: one line
 /// on stderr naming the parameter and the condition, exit status 2, nothing on stdout. A bounded
 /// computation that gives up (e.g. a motion that never flies again): one line, exit status 1.
 #include <fcntl.h>
