@@ -61,6 +61,10 @@ certify::Request request_from(const CertifyOptions& o) {
     if (!o.q.empty()) r.q = certify::Range::point(number("q", o.q));
     return r;
   }
+  if (o.what == "arc-l1") {
+    if (!o.q.empty()) r.q = range("q", o.q);
+    return r;
+  }
   if (!o.b.empty()) r.b = range("b", o.b);
   if (o.what == "discontinuities") return r;
   if (!o.q.empty()) r.q = range("q", o.q);
@@ -159,6 +163,13 @@ CLI::App* add_certify(CLI::App& app, CertifyOptions& o) {
   add_parameter(sup, o.q, kQ, kQText, false);
   sup->add_option("--window", o.window, "certify the window LO:HI in b (a floating estimate) and its edges, at this q")->type_name("LO:HI");
   add_common(sup, o, true);
+
+  auto* arc = c->add_subcommand("arc-l1",
+                                "proof of Lemma 4, arc L1 = [197pi/100, t3): from rest there the progression stops in (t3, t0 + 2pi), "
+                                "for every b/a up to an explicit bound and q/a in a box");
+  add_a(arc, o);
+  add_parameter(arc, o.q, kQ, "q, the largest dry friction (q/a is what the proof is about; 0 < q <= a)", true);
+  add_common(arc, o, true);
 
   // A word that names no statement, with the options after it, lands in `what` and is refused
   // first, by name (set after the statements, which would inherit it: they refuse extras).

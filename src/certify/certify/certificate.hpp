@@ -8,7 +8,7 @@
 /// binary number exactly, with a decimal beside them for humans) and every witness of the proof.
 /// The format, statement by statement, and what the checker does with it: docs/certificates.md.
 /// Statements with a certificate so far: vartheta0, lemma1, b0, covering, periodic, superstable (with or
-/// without a window), and in the experiments not_superstable and theorem2_counterexample.
+/// without a window), arc-l1, and in the experiments not_superstable and theorem2_counterexample.
 #pragma once
 
 #include <cstddef>
@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "certify/certify.hpp"
+#include "dfchaos/certified/arc_l1.hpp"
 #include "dfchaos/certified/ball.hpp"
 #include "dfchaos/certified/covering.hpp"
 #include "dfchaos/certified/discontinuities.hpp"
@@ -35,10 +36,10 @@ inline constexpr const char* kCertificateFormat = "dfchaos-certificate";
 inline constexpr int kCertificateVersion = 1;
 
 /// Whether `dfchaos certify what` can write a certificate (vartheta0, lemma1, b0, discontinuities, covering,
-/// periodic, superstable: today every statement of the tool).
+/// periodic, superstable, arc-l1: today every statement of the tool).
 bool has_certificate(const std::string& what);
 /// The statements with a certificate format, in words (for messages).
-inline constexpr const char* kCertificateStatements = "vartheta0, lemma1, b0, discontinuities, covering, periodic or superstable";
+inline constexpr const char* kCertificateStatements = "vartheta0, lemma1, b0, discontinuities, covering, periodic, superstable or arc-l1";
 
 /// The double x as a C99 hexadecimal floating-point string (`%a`: exactly x, e.g. "0x1p+0").
 std::string hex_double(double x);
@@ -128,6 +129,11 @@ kit::Json certificate_theorem2_counterexample(double a, double b, double q, cons
 kit::Json certificate_discontinuities(double a, double b, const std::string& segment, const certified::DiscontinuityProof& p,
                                       const std::string& claim);
 
+/// The certificate of the arc L1 of Lemma 4's proof (statement arc-l1, arc_l1.hpp): a and the box of
+/// q with the ratios q/a it was proved for, b_over_a_max, and the witnesses S, W, the bounds of g and
+/// H' and the grid (delta cuts x s cuts) on whose cells the checker re-encloses g and H'. `p` must be
+/// proved. @throws std::logic_error otherwise.
+kit::Json certificate_arc_l1(double a, const certified::ArcL1Proof& p, const std::string& claim);
 /// The text of a certificate as every writer stores it (the tool, Python and the experiments).
 std::string certificate_text(const kit::Json& certificate);
 

@@ -11,6 +11,7 @@
 
 #include <string>
 
+#include "dfchaos/certified/arc_l1.hpp"
 #include "dfchaos/certified/covering.hpp"
 #include "dfchaos/certified/discontinuities.hpp"
 #include "dfchaos/certified/periodic.hpp"
@@ -39,6 +40,7 @@ Json to_json(const certified::CoveringProof& p);                                
 Json to_json(const certified::CoveringProof& c, const certified::PeriodicProof& p);                    ///< Sections 6-7
 Json to_json(double a, double b, double q, const certified::SuperstableProof& p);                      ///< Theorem 2 at a point
 Json to_json(double a, double q, const certified::WindowProof& w);                                     ///< a superstability window
+Json to_json(double a, const certified::ArcL1Proof& p);                                                ///< the arc L1 of Lemma 4's proof
 
 /// The statements, in words (what "proved" means for each result).
 std::string statement_vartheta0();
@@ -49,5 +51,6 @@ std::string statement_covering(const certified::ParameterBox& box);
 std::string statement_periodic(int m);
 std::string statement_superstable();
 std::string statement_window();
+std::string statement_arc_l1(double kappa_lo, double kappa_hi, double eps_max);
 
 }  // namespace dfchaos::certify

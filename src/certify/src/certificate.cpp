@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <stdexcept>
+#include <vector>
 
 #include <flint/fmpz.h>
 
@@ -54,7 +55,7 @@ kit::Json lemma1_sub_boxes(const certified::Lemma1Proof& p) {
 
 bool has_certificate(const std::string& what) {
   return what == "vartheta0" || what == "lemma1" || what == "b0" || what == "discontinuities" || what == "covering" || what == "periodic" ||
-         what == "superstable" || what == "entropy";
+         what == "superstable" || what == "entropy" || what == "arc-l1";
 }
 
 std::string hex_double(double x) {
@@ -149,6 +150,32 @@ kit::Json certificate_lemma1(double a, const Range& b, const Range& q, const cer
   par.set("q", exact_range(q));
   j.set("parameters", par);
   j.set("witnesses", lemma1_sub_boxes(p));
+  return j;
+}
+
+kit::Json certificate_arc_l1(double a, const certified::ArcL1Proof& p, const std::string& claim) {
+  if (!p.verdict.proved || p.pieces.empty()) throw std::logic_error("certificate_arc_l1: not proved");
+  kit::Json j = header("arc-l1", claim);
+  kit::Json par = kit::Json::object();
+  par.set("a", exact_number(a));
+  par.set("q_over_a", exact_range(Range{p.kappa_lo, p.kappa_hi}));
+  par.set("b_over_a_max", exact_number(p.eps_max));
+  j.set("parameters", par);
+  // The grid: the pieces run over delta cells, and over s cells inside each.
+  std::vector<double> dc{p.pieces.front().delta_lo}, sc{p.pieces.front().s_lo};
+  for (const certified::ArcL1Piece& x : p.pieces) {
+    if (x.delta_hi > dc.back()) dc.push_back(x.delta_hi);
+    if (x.s_hi > sc.back()) sc.push_back(x.s_hi);
+  }
+  kit::Json dj = kit::Json::array(), sj = kit::Json::array();
+  for (double d : dc) dj.push(hex_double(d));
+  for (double s : sc) sj.push(hex_double(s));
+  kit::Json w = kit::Json::object();
+  w.set("S", exact_number(p.S)).set("W", exact_number(p.W));
+  w.set("g_lo", exact_number(p.g_lo)).set("g_hi", exact_number(p.g_hi));
+  w.set("dH_lo", exact_number(p.h_lo)).set("dH_hi", exact_number(p.h_hi));
+  w.set("delta_cuts", dj).set("s_cuts", sj);
+  j.set("witnesses", w);
   return j;
 }
 

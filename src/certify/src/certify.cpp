@@ -70,9 +70,9 @@ Candidate candidate(const std::string& name, const SegmentEnds& e, const Paramet
 }  // namespace
 
 void check_statement(const std::string& what) {
-  for (const char* known : {"vartheta0", "lemma1", "b0", "discontinuities", "covering", "periodic", "superstable"})
+  for (const char* known : {"vartheta0", "lemma1", "b0", "discontinuities", "covering", "periodic", "superstable", "arc-l1"})
     if (what == known) return;
-  throw InvalidParameter("what", "one of vartheta0, lemma1, b0, discontinuities, covering, periodic, superstable (got '" + what + "')");
+  throw InvalidParameter("what", "one of vartheta0, lemma1, b0, discontinuities, covering, periodic, superstable, arc-l1 (got '" + what + "')");
 }
 
 Result certify(const Request& r) {
@@ -100,6 +100,19 @@ Result certify(const Request& r) {
     const Lemma1Bound p = lemma1_b0_lower_bound(a, q);
     Result c{p.verdict.proved, to_json(a, q, p)};
     if (c.proved && r.certificate) c.certificate = certificate_b0(a, q, p, claim_of(c));
+    return c;
+  }
+  if (r.what == "arc-l1") {
+    const double a = bounded("a", r.a);
+    if (!(a > 0)) throw InvalidParameter("a", "a > 0", a);
+    if (!r.q) throw InvalidParameter("q", "required for certify arc-l1");
+    const Range q = bounded("q", *r.q);
+    if (!(q.lo > 0)) throw InvalidParameter("q", "q > 0", q.lo);
+    if (!(q.hi <= a)) throw InvalidParameter("q", "q <= a (t0 exists for every b > 0)", q.hi);
+    // q/a enclosed: the proof is about the ratios (lower end rounded down, upper end up).
+    const ArcL1Proof p = prove_arc_l1((Ball(q.lo) / Ball(a)).lower(), (Ball(q.hi) / Ball(a)).upper());
+    Result c{p.verdict.proved, to_json(a, p)};
+    if (c.proved && r.certificate) c.certificate = certificate_arc_l1(a, p, claim_of(c));
     return c;
   }
   if (r.what == "discontinuities") {

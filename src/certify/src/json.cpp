@@ -67,6 +67,14 @@ std::string statement_b0(double a, double q, double b_low) {
   return "Lemma 1 holds for every b in (0, " + format_double(b_low) + "] at a = " + format_double(a) + ", q = " + format_double(q) +
          " (u(t2) < 0 proved over b-balls covering [0, b_low]): b0(q) >= " + format_double(b_low) + ".";
 }
+std::string statement_arc_l1(double kappa_lo, double kappa_hi, double eps_max) {
+  return "The arc L1 = [197pi/100, t3) of the proof of Lemma 4, for every a > 0 and every b, q with 0 < b/a <= " + format_double(eps_max) +
+         " and q/a in [" + format_double(kappa_lo) + ", " + format_double(kappa_hi) +
+         "]: from rest at any theta in L1 the mass flies, hits the delimiter once, transversally and after t3 (the first zero "
+         "theta1 of G1, Eq. 11, is simple and theta1 > t3), and the progression that follows stops at theta2 in (t3, t0 + 2pi) "
+         "(Eq. 17): the mass then waits for t0 + 2pi, so T = t2 on L1 wherever Lemma 1 holds. b/a <= b_over_a_max is all the "
+         "smallness needed (beyond it L1 is empty).";
+}
 std::string statement_discontinuities(const std::string& segment, std::size_t n) {
   return "Lemma 2 on " + segment + " at the double values of a, b: T1 has exactly " + std::to_string(n) +
          " discontinuities there, the z_k with 2z - (a/b) cos z = (2k+1) pi (enclosed), each a first-contact tangency "
@@ -205,6 +213,18 @@ Json to_json(double a, double q, const WindowProof& w) {
   j.set("right_edge", Json::array().push(w.right_in).push(w.right_out));
   j.set("boxes", w.boxes).set("T_at_left_out", ball_json(w.T_left_out, 12)).set("T_at_right_out", ball_json(w.T_right_out, 12));
   j.set("inside", to_json(a, 0.5 * (w.b_lo_float + w.b_hi_float), q, w.inside)).set("seconds", w.seconds);
+  return j;
+}
+
+Json to_json(double a, const ArcL1Proof& p) {
+  Json j = Json::object();
+  j.set("statement", statement_arc_l1(p.kappa_lo, p.kappa_hi, p.eps_max));
+  j.set("parameters", Json::object().set("a", a).set("q_over_a", Json::array().push(p.kappa_lo).push(p.kappa_hi)));
+  add_verdict(j, p.verdict);
+  j.set("b_over_a_max", p.eps_max).set("S", p.S).set("W", p.W);
+  j.set("g", Json::array().push(p.g_lo).push(p.g_hi)).set("dH", Json::array().push(p.h_lo).push(p.h_hi));
+  if (p.verdict.proved) j.set("x1_max", ball_json(p.x1_max, 8)).set("gamma", ball_json(p.gamma, 8)).set("t0_min", ball_json(p.t0_min, 8));
+  j.set("pieces", static_cast<long long>(p.pieces.size()));
   return j;
 }
 

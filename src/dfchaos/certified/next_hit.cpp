@@ -113,14 +113,17 @@ Ball delta_for(const Ball& x) {
 
 }  // namespace
 
+Ball departure_E(const Ball& s_hi) { return Ball::hull(Ball(1.0) / 24.0 - sqr(s_hi) / 720.0, Ball(1.0) / 24.0); }
+
+Ball departure_K(const Ball& s_hi) { return Ball::hull(Ball(-1.0) / 6.0, Ball(-1.0) / 6.0 + sqr(s_hi) / 120.0); }
+
 Outcome prove_departure(const ParameterBalls& m, const StartSet& set, const Ball& s0) {
   if (!s0.is_positive() || !le(s0, Ball(1.0))) return Outcome::fail("T1: departure", "s0 must be in (0, 1]");
   const Ball th = set.hull(m);
   Ball st, ct;
   sin_cos(th, st, ct);
   const Ball S = Ball::hull(Ball(0.0), s0);
-  const Ball E = Ball::hull(Ball(1.0) / 24.0 - sqr(s0) / 720.0, Ball(1.0) / 24.0);
-  const Ball K = Ball::hull(Ball(-1.0) / 6.0, Ball(-1.0) / 6.0 + sqr(s0) / 120.0);
+  const Ball E = departure_E(s0), K = departure_K(s0);
   const Ball g = -(m.a * st * S * E) - m.a * ct * K;
   // b + (a/2) sin(theta) <= 0 on [t2(b), t3(b)] (the start set was proved valid).
   if (g.is_negative()) return Outcome::ok();

@@ -79,6 +79,11 @@ Ball G1(const ParameterBalls& m, const Ball& theta, const Ball& t, const Ball& b
 /// \f$\partial_t G_1 = 2b(t-\theta) - a\cos t + a\cos\theta\f$: the velocity of the mass (model::dG1_dt).
 Ball dG1_dt(const ParameterBalls& m, const Ball& theta, const Ball& t, const Ball& b);
 
+/// \f$E(s) = (\tfrac12 - \tfrac{1-\cos s}{s^2})/s^2\f$ of the departure factorisation (file comment) over
+/// \f$s \in [0, s_{hi}]\f$, \f$0 \le s_{hi} \le 1\f$: \f$[\tfrac1{24} - \tfrac{s_{hi}^2}{720}, \tfrac1{24}]\f$ (alternating series).
+Ball departure_E(const Ball& s_hi);
+/// \f$K(s) = (\sin s - s)/s^3\f$ over \f$s \in [0, s_{hi}]\f$, \f$0 \le s_{hi} \le 1\f$: \f$[-\tfrac16, -\tfrac16 + \tfrac{s_{hi}^2}{120}]\f$.
+Ball departure_K(const Ball& s_hi);
 /// The departure step: \f$G_1(\theta,\theta+s;b) < 0\f$ for \f$s \in (0, s_0]\f$, every start of `set`
 /// and every b of the box. `s0` must be in (0, 1].
 Outcome prove_departure(const ParameterBalls& m, const StartSet& set, const Ball& s0);
