@@ -47,6 +47,13 @@ expect 1 '"failed_step"'   superstable --b 0.05 --q 0.85
 expect 0 '"theorem2": false' superstable --b 0.49 --q 1.9
 expect 0 '"theorem2": true'  superstable --b 0.0641 --q 0.85
 expect 0 '"right_edge"'    superstable --b 0.0641 --q 0.85 --window 0.0640755627691:0.064187276763
+expect 0 '"b_over_a_max": 0.047' arc-l1 --q 0.72:1
+expect 0 '"proved": true'  arc-l1 -a 2 -q 1.5
+expect 1 '"failed_step": "arc L1: progression' arc-l1 --q 0.3:1
+expect 2 'q:'   arc-l1 --q 0.5:1.2
+expect 2 'q:'   arc-l1 --q 0
+expect 2 '--q is required' arc-l1
+expect 2 'b'    arc-l1 --q 0.8 --b 0.001
 expect 2 'b:'   covering --b x --q 0.85
 expect 2 'b:'   covering --b "" --q 0.85
 expect 2 'b:'   covering --b nan --q 0.85

@@ -38,6 +38,8 @@ REQUESTS = {
     "discontinuities_L2": ["discontinuities", "--a", "1", "--b", "5e-5", "--segment", "L2"],
     "discontinuities_empty": ["discontinuities", "--a", "1", "--b", "0.001", "--segment", "L2"],
     # a box of certified_region, re-proved with the J0, J1 its row records
+    # the arc L1 of Lemma 4's proof, for every b/a up to sin(3pi/100)/2 and q/a in [0.72, 1]
+    "arc_l1": ["arc-l1", "--q", "0.72:1"],
     "covering_box": ["covering", "--a", "1", "--b", "0.0019697602976329739:0.00196980455453853",
                      "--q", "0.80000000000000004:0.81000000000000005", "--J0", "3.2595461317302936:3.3248980967076651",
                      "--J1", "3.3397741191384851:3.3845640013715848"],
@@ -143,6 +145,33 @@ def rejects_discontinuities(cli, checker, what, d, bad):
     if proc.returncode != want or word not in line:
         sys.exit(f"FAIL: Lemma 2 mutation {what}: dfchaos-recheck exit {proc.returncode}, want {want} naming '{word}': {line}")
     print(f"ok:   Lemma 2 mutation {what}: exit {want}: {line}")
+
+
+def rejects_arc_l1(cli, checker, what, d, bad):
+    """The mutations of an arc-l1 certificate, each rejected with the step named."""
+    path, _ = write_certificate(cli, "arc_l1", d)
+
+    def set_hex(c, where, key, x):
+        c[where][key]["hex"] = float.hex(x)
+
+    def g_hi_down(c):  # g_hi lowered below the enclosure of g on some cell
+        w = c["witnesses"]
+        lo, hi = float.fromhex(w["g_lo"]["hex"]), float.fromhex(w["g_hi"]["hex"])
+        set_hex(c, "witnesses", "g_hi", hi - (hi - lo) / 4)
+
+    cases = {  # name: (change, exit status, a word of the step the checker must name)
+        "g_bound": (g_hi_down, 1, "g in [g_lo, g_hi]"),
+        "W_short": (lambda c: set_hex(c, "witnesses", "W", float.fromhex(c["witnesses"]["W"]["hex"]) / 2), 1, "stops within W"),
+        "q_lower": (lambda c: c["parameters"]["q_over_a"]["lo"].update(hex=float.hex(0.6)), 1, "stops within W"),
+        "b_larger": (lambda c: set_hex(c, "parameters", "b_over_a_max", 0.0471), 1, "L1 not empty"),
+        "grid_short": (lambda c: c["witnesses"]["delta_cuts"].pop(), 1, "grid covers"),
+    }
+    change, want, word = cases[what]
+    proc = subprocess.run([checker, mutate(path, bad, change)], capture_output=True, text=True)
+    line = (proc.stdout + proc.stderr).strip()
+    if proc.returncode != want or word not in line:
+        sys.exit(f"FAIL: arc-l1 mutation {what}: dfchaos-recheck exit {proc.returncode}, want {want} naming '{word}': {line}")
+    print(f"ok:   arc-l1 mutation {what}: exit {want}: {line}")
 
 
 def main():
@@ -328,6 +357,8 @@ def main():
             recheck(checker, mutate(path, bad, same), 1, "J0 and J1 overlap")
         elif case.startswith("rejects_discontinuities_"):
             rejects_discontinuities(cli, checker, case[len("rejects_discontinuities_"):], d, bad)
+        elif case.startswith("rejects_arc_l1_"):
+            rejects_arc_l1(cli, checker, case[len("rejects_arc_l1_"):], d, bad)
         elif case == "rejects_truncated":
             path, _ = write_certificate(cli, "lemma1_point", d)
             with open(path, "rb") as f:

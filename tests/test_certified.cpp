@@ -13,6 +13,7 @@
 #include <cstdlib>
 
 #include "certify/json.hpp"
+#include "dfchaos/certified/arc_l1.hpp"
 #include "dfchaos/certified/bisect.hpp"
 #include "dfchaos/certified/region.hpp"
 #include "dfchaos/next_hit.hpp"
@@ -300,4 +301,56 @@ TEST(CertifiedRegion, SmallBandIsDeterministicAndProved) {
       EXPECT_GE(b.b_lo, o.b_lo);
       EXPECT_LE(b.b_hi, o.b_hi);
     }
+}
+
+// The arc L1 of Lemma 4's proof (arc_l1.hpp), proved for every b/a up to eps_max at once: the floating
+// layer, with its own root searches, must agree on sampled starts, from b/a = 1e-9 up to eps_max and
+// from 197 pi/100 up to t3 (the degenerate corner where the flight shrinks to nothing). The first
+// contact lies in [theta + A/g_hi, theta + A/g_lo] and after t3, the progression stops within W of it
+// and before t0 + 2 pi: scenario C (the mass waits for t0), or D where Lemma 1 fails.
+TEST(CertifiedArcL1, ProvedForEveryRatioAndTheFloatingStepsAgree) {
+  const ArcL1Proof pr = prove_arc_l1(0.72, 1.0);
+  ASSERT_TRUE(pr.verdict.proved) << pr.verdict.describe();
+  EXPECT_GT(pr.eps_max, 0.047);  // sin(3 pi/100)/2 = 0.04705...: nothing smaller is needed
+  EXPECT_LE(2 * pr.eps_max, std::sin(0.03 * M_PI) * (1 + 1e-15));
+  const double t0_margin = pr.t0_min.lower() - pr.S - pr.W;
+  ASSERT_GT(t0_margin, 0);
+  unsigned seed = 12345;
+  const auto uniform = [&seed] {
+    seed = seed * 1103515245u + 12345u;
+    return ((seed >> 8) & 0xFFFFFF) / 16777216.0;
+  };
+  int c_count = 0;
+  for (int i = 0; i < 3000; ++i) {
+    const double eps = std::exp(std::log(1e-9) + uniform() * (std::log(pr.eps_max) - std::log(1e-9)));
+    const double kappa = 0.72 + 0.279 * uniform();
+    const Parameters p(1, eps, kappa);
+    const double t3 = *p.t3(), lo = 1.97 * M_PI;
+    if (!(t3 > lo)) continue;
+    // half the starts uniform on L1, half at distance 10^-u (u in [2, 8]) below t3
+    const double th = i % 2 == 0 ? lo + (t3 - lo) * uniform() : t3 - (t3 - lo) * std::pow(10.0, -2 - 6 * uniform());
+    if (!(th >= lo && th < t3)) continue;
+    const MapStep s = return_map_step(p, th);
+    const double delta = 2 * M_PI - th, A = 0.5 * (std::sin(delta) - 2 * eps);
+    const double flight = s.hit.t1.value() - th, th2 = s.theta2.value();
+    const std::string at = "b/a=" + std::to_string(eps) + " q/a=" + std::to_string(kappa) + " theta=t3-" + std::to_string(t3 - th);
+    EXPECT_GE(flight, A / pr.g_hi * (1 - 1e-9)) << at;
+    EXPECT_LE(flight, A / pr.g_lo * (1 + 1e-9)) << at;
+    EXPECT_GT(s.hit.t1.value(), t3) << at;
+    EXPECT_GT(th2, s.hit.t1.value() - 1e-12) << at;
+    EXPECT_LE(th2 - s.hit.t1.value(), pr.W) << at;
+    EXPECT_LT(th2, *p.t0() + 2 * M_PI) << at;
+    EXPECT_TRUE(s.scenario == Scenario::C || s.scenario == Scenario::D) << at << " scenario " << static_cast<int>(s.scenario);
+    if (s.scenario == Scenario::C) {
+      EXPECT_EQ(s.T, *p.t2()) << at;
+      ++c_count;
+    }
+  }
+  EXPECT_GT(c_count, 1000);
+}
+
+TEST(CertifiedArcL1, NotProvedWhereTheProgressionMayNotStopInTime) {
+  const ArcL1Proof pr = prove_arc_l1(0.3, 1.0);
+  EXPECT_FALSE(pr.verdict.proved);
+  EXPECT_NE(pr.verdict.step.find("progression"), std::string::npos) << pr.verdict.describe();
 }

@@ -1293,6 +1293,72 @@ long check_periodic(const json& c, std::string& what) {
   return st.n;
 }
 
+// ---- arc-l1: the arc L1 = [197pi/100, t3) of the proof of Lemma 4 ------------------------------------
+
+/// A list of exact doubles, strictly increasing, starting at 0.
+std::vector<double> cuts(const json& j, const std::string& where) {
+  if (!j.is_array() || j.size() < 2) throw Malformed("'" + where + "' is not an array of at least 2 numbers");
+  std::vector<double> v;
+  for (std::size_t i = 0; i < j.size(); ++i) v.push_back(exact_double(j[i], where + "[" + std::to_string(i) + "]"));
+  return v;
+}
+
+/// With a = 1, theta = 2pi - delta, s = t - theta: G1(theta, theta + s) = s^2 (-A + s g(delta, s)),
+/// A = (sin delta - 2b)/2, g = sin(delta) s E(s) - cos(delta) K(s), E = (1/2 - (1 - cos s)/s^2)/s^2,
+/// K = (sin s - s)/s^3 (Taylor's formula of sin and cos at theta). For 0 <= s <= 1 the series of E,
+/// K and of their derivatives alternate with decreasing terms, so on a cell s in [s1, s2]:
+/// E in [1/24 - s2^2/720, 1/24], K in [-1/6, -1/6 + s2^2/120], E' in [-s/360, -s/360 + s2^3/10080],
+/// K' in [s/60 - s2^3/1260, s/60]. H = -A + s g has H' = g + s g', g' = sin(delta)(E + s E') - cos(delta) K'.
+/// The checker encloses g and H' on every cell of the grid and checks the stated bounds; then the
+/// scalar inequalities of the argument (README.md): contact within S and after t3, the progression's
+/// deceleration gamma, its stop within W, before t0 + 2pi.
+long check_arc_l1(const json& c) {
+  Steps st;
+  const json& p = field(c, "parameters", "");
+  const json& k = field(p, "q_over_a", "parameters.");
+  const double k_lo = parameter(k, "lo", "parameters.q_over_a."), k_hi = parameter(k, "hi", "parameters.q_over_a.");
+  const double eps_max = parameter(p, "b_over_a_max", "parameters.");
+  const json& w = field(c, "witnesses", "");
+  const double S = parameter(w, "S", "witnesses."), W = parameter(w, "W", "witnesses.");
+  const double g_lo = parameter(w, "g_lo", "witnesses."), g_hi = parameter(w, "g_hi", "witnesses.");
+  const double h_lo = parameter(w, "dH_lo", "witnesses."), h_hi = parameter(w, "dH_hi", "witnesses.");
+  const std::vector<double> dc = cuts(field(w, "delta_cuts", "witnesses."), "witnesses.delta_cuts");
+  const std::vector<double> sc = cuts(field(w, "s_cuts", "witnesses."), "witnesses.s_cuts");
+  const Iv Delta = 3.0 * pi() / Iv(100.0), sinD = sin(Delta), cosD = cos(Delta);
+  st.require(0 < k_lo && k_lo <= k_hi && k_hi <= 1, "0 < q/a lo <= q/a hi <= 1");
+  st.require(eps_max > 0 && le(2.0 * Iv(eps_max), sinD), "0 < b_over_a_max and 2 b_over_a_max <= sin(3pi/100) (L1 not empty)");
+  st.require(S > 0 && S <= 1 && W > 0, "0 < S <= 1, W > 0");
+  bool grid = dc.front() == 0 && sc.front() == 0 && sc.back() == S && le(Delta, Iv(dc.back()));
+  for (std::size_t i = 1; i < dc.size(); ++i) grid = grid && dc[i] > dc[i - 1];
+  for (std::size_t i = 1; i < sc.size(); ++i) grid = grid && sc[i] > sc[i - 1];
+  st.require(grid, "the grid covers [0, 3pi/100] x [0, S] (cuts increasing from 0)");
+  for (std::size_t i = 0; i + 1 < dc.size(); ++i) {
+    const Iv d(dc[i], dc[i + 1]), sd = sin(d), cd = cos(d);
+    for (std::size_t j = 0; j + 1 < sc.size(); ++j) {
+      const Iv s(sc[j], sc[j + 1]), s2(sc[j + 1]), s2sq = sqr(s2), s2cu = s2sq * s2;
+      const Iv E = hull(Iv(1.0) / Iv(24.0) - s2sq / Iv(720.0), Iv(1.0) / Iv(24.0));
+      const Iv K = hull(Iv(-1.0) / Iv(6.0), Iv(-1.0) / Iv(6.0) + s2sq / Iv(120.0));
+      const Iv dE = hull(-(s / Iv(360.0)), -(s / Iv(360.0)) + s2cu / Iv(10080.0));
+      const Iv dK = hull(s / Iv(60.0) - s2cu / Iv(1260.0), s / Iv(60.0));
+      const Iv g = sd * s * E - cd * K;
+      const Iv dH = g + s * (sd * (E + s * dE) - cd * dK);
+      const std::string cell = "cell delta in [" + std::to_string(dc[i]) + ", " + std::to_string(dc[i + 1]) + "], s in [" + std::to_string(sc[j]) +
+                               ", " + std::to_string(sc[j + 1]) + "]";
+      st.require(le(Iv(g_lo), g) && le(g, Iv(g_hi)), "g in [g_lo, g_hi] on " + cell);
+      st.require(le(Iv(h_lo), dH) && le(dH, Iv(h_hi)), "H' in [dH_lo, dH_hi] on " + cell);
+    }
+  }
+  st.require(g_lo > 0 && h_lo > 0, "g_lo > 0 and dH_lo > 0 (H increasing: one simple contact)");
+  const Iv s_star = sinD / (2.0 * Iv(g_lo));
+  st.require(le(s_star, Iv(S)), "the contact lies within S: sin(3pi/100) / (2 g_lo) <= S");
+  st.require(lt(2.0 * Iv(g_hi), cosD), "the contact is past t3: 2 g_hi < cos(3pi/100)");
+  const Iv x1 = sqr(s_star) * Iv(h_hi), SW = Iv(S) + Iv(W), room = Iv(k_lo) - sinD, gamma = room - sin(SW);
+  st.require(lt(SW, 0.5 * pi()), "S + W < pi/2");
+  st.require(gamma.positive() && lt(x1, gamma * Iv(W)), "the progression stops within W: gamma W > x1_max, gamma > 0");
+  st.require(room.positive() && lt(room, Iv(1.0)) && lt(SW, asin(room)), "the stop precedes t0 + 2pi: S + W < asin(q/a lo - sin(3pi/100))");
+  return st.n;
+}
+
 /// Section 7 beyond two symbols: disjoint segments I_1 < ... < I_n of [t2, t3), each covered by balls
 /// on which T is continuous, with T at both ends enclosed (case AB above t2); an edge j -> k only where
 /// I_k lies strictly between the enclosures at the ends of I_j (so T(I_j) contains I_k); weights v > 0
@@ -1430,10 +1496,12 @@ int check_file(const std::string& path) {
       steps = check_paper_construction(c, what);
     else if (statement == "entropy")
       steps = check_entropy(c, what);
+    else if (statement == "arc-l1")
+      steps = check_arc_l1(c);
     else
       throw Malformed("unknown statement '" + statement +
                       "' (this checker reads vartheta0, lemma1, b0, covering, coverings, periodic, superstable, not_superstable, window, "
-                      "theorem2_counterexample, discontinuities, paper_construction, entropy)");
+                      "theorem2_counterexample, discontinuities, paper_construction, entropy, arc-l1)");
     std::printf("OK %s: %s, %ld steps re-verified%s\n", path.c_str(), statement.c_str(), steps, what.empty() ? "" : ("; " + what).c_str());
     return 0;
   } catch (const Failed& e) {

@@ -29,10 +29,8 @@ ArcL1Proof prove_arc_l1(double kappa_lo, double kappa_hi, int delta_pieces, int 
     r.verdict = Outcome::fail("arc L1: " + step, detail);
     return r;
   };
-  if (!(kappa_lo > 0 && kappa_lo <= kappa_hi && kappa_hi <= 1))
-    return fail("parameters", "needs 0 < q/a lo <= hi <= 1");
-  if (delta_pieces < 1 || s_pieces < 1 || delta_pieces > 4096 || s_pieces > 4096)
-    return fail("parameters", "pieces in 1..4096");
+  if (!(kappa_lo > 0 && kappa_lo <= kappa_hi && kappa_hi <= 1)) return fail("parameters", "needs 0 < q/a lo <= hi <= 1");
+  if (delta_pieces < 1 || s_pieces < 1 || delta_pieces > 4096 || s_pieces > 4096) return fail("parameters", "pieces in 1..4096");
   const Ball Delta = Ball::pi() * 3.0 / 100.0;
   const Ball sinD = sin(Delta);
   r.eps_max = (sinD / 2.0).lower();  // 2 eps_max <= sin(Delta): t3 >= 197 pi / 100 (L1 not empty)
@@ -70,8 +68,7 @@ ArcL1Proof prove_arc_l1(double kappa_lo, double kappa_hi, int delta_pieces, int 
   const Ball s_star_max = A_max / Ball(r.g_lo);
   if (!le(s_star_max, Ball(S))) return fail("contact within S", "A_max/g_lo = " + num(s_star_max));
   // 2. The contact is past t3: cos(Delta) > 2 g_hi.
-  if (!lt(Ball(2.0 * r.g_hi), cos(Delta)))
-    return fail("contact past t3", "2 g_hi = " + num(Ball(2.0 * r.g_hi)) + " vs cos(3 pi/100)");
+  if (!lt(Ball(2.0 * r.g_hi), cos(Delta))) return fail("contact past t3", "2 g_hi = " + num(Ball(2.0 * r.g_hi)) + " vs cos(3 pi/100)");
   // 3. The progression stops within W: gamma W > x1_max, gamma = kappa_lo - sin(Delta) - sin(S + W) > 0.
   r.x1_max = sqr(s_star_max) * Ball(r.h_hi);
   const Ball k_lo(kappa_lo);

@@ -52,19 +52,19 @@ struct ArcL1Piece {
 /// The statement of the file comment over \f$\varepsilon \in (0, \varepsilon_{\max}]\f$ and
 /// \f$q/a \in [\kappa_{lo}, \kappa_{hi}]\f$.
 struct ArcL1Proof {
-  Outcome verdict;           ///< proved: every start of L1 ends its first progression in (t3, t0 + 2 pi)
-  double kappa_lo = 0;       ///< the box of q/a: lower end
-  double kappa_hi = 0;       ///< upper end
-  double eps_max = 0;        ///< \f$\varepsilon_{\max}\f$: the statement holds for every \f$0 < b/a \le\f$ this
-  double S = 0.3;            ///< the flights considered: \f$s \in [0, S]\f$
-  double W = 0;              ///< the progression stops within W of the impact
-  double g_lo = 0;           ///< \f$\min g\f$ (a double below every enclosure)
-  double g_hi = 0;           ///< \f$\max g\f$
-  double h_lo = 0;           ///< \f$\min H'\f$
-  double h_hi = 0;           ///< \f$\max H'\f$
-  Ball x1_max;               ///< bound of the impact velocity \f$x_1\f$
-  Ball gamma;                ///< the deceleration bound \f$\gamma\f$
-  Ball t0_min;               ///< \f$\arcsin(\kappa_{lo} - \sin\Delta)\f$, below every \f$t_0\f$
+  Outcome verdict;                 ///< proved: every start of L1 ends its first progression in (t3, t0 + 2 pi)
+  double kappa_lo = 0;             ///< the box of q/a: lower end
+  double kappa_hi = 0;             ///< upper end
+  double eps_max = 0;              ///< \f$\varepsilon_{\max}\f$: the statement holds for every \f$0 < b/a \le\f$ this
+  double S = 0.3;                  ///< the flights considered: \f$s \in [0, S]\f$
+  double W = 0;                    ///< the progression stops within W of the impact
+  double g_lo = 0;                 ///< \f$\min g\f$ (a double below every enclosure)
+  double g_hi = 0;                 ///< \f$\max g\f$
+  double h_lo = 0;                 ///< \f$\min H'\f$
+  double h_hi = 0;                 ///< \f$\max H'\f$
+  Ball x1_max;                     ///< bound of the impact velocity \f$x_1\f$
+  Ball gamma;                      ///< the deceleration bound \f$\gamma\f$
+  Ball t0_min;                     ///< \f$\arcsin(\kappa_{lo} - \sin\Delta)\f$, below every \f$t_0\f$
   std::vector<ArcL1Piece> pieces;  ///< the cover of \f$[0, \Delta] \times [0, S]\f$ (the witnesses)
 };
 
