@@ -396,6 +396,28 @@ const Experiment experiment{
                 std::to_string(cov.J0.balls + cov.J1.balls));
       }
 
+      // ---- the arc L1 of the proof of Lemma 4, for every b/a up to an explicit bound -------------------
+      {
+        // q/a over assumption (2)'s range (sin(vartheta0) < 0.7246 < q/a < 1), widened down to 0.72.
+        const double kappa_lo = 0.72, kappa_hi = 1.0;
+        const auto t0 = Clock::now();
+        const ArcL1Proof p = prove_arc_l1(kappa_lo, kappa_hi);
+        time_row("arc L1 of Lemma 4's proof", since(t0));
+        const std::string statement = statement_arc_l1(p.kappa_lo, p.kappa_hi, p.eps_max);
+        if (p.verdict.proved) run.certificate("cert.lemma4.arc_l1", certificate_text(certificate_arc_l1(1.0, p, statement)));
+        auto& c = certified_claim(out, "cert.lemma4.arc_l1", "Lemma 4 (proof)", statement, to_json(1.0, p), p.verdict.proved, &p.verdict);
+        c.parameter_object(Json::object().set("q_over_a", Json::array().push(kappa_lo).push(kappa_hi)).set("b_over_a_max", p.eps_max));
+        out.macro("CertArcLOneEpsMax", lower_decimal(p.eps_max, 4));
+        out.macro("CertArcLOneQLo", dfchaos::format_shortest(kappa_lo));
+        out.macro("CertArcLOneW", fmt(p.W, 2));
+        tex_row("Lemma 4 (paper's L1)",
+                "$[" + dfchaos::format_shortest(kappa_lo) + ", " + dfchaos::format_shortest(kappa_hi) + "] \\times (0, " +
+                    lower_decimal(p.eps_max, 4) + "]$",
+                p.verdict.proved ? "from rest on $L_1$: one simple contact after $t_3$, stop in $(t_3, t_0+2\\pi)$ within $" + fmt(p.W, 2) + "$"
+                                 : "not proved: " + latex_escape(p.verdict.step),
+                std::to_string(p.pieces.size()));
+      }
+
       // ---- Lemma 1: certified lower bounds of b0(q) ------------------------------------------------
       {
         Table t({"q_over_a", "proved", "b0_lower_bound", "b0_float", "pieces"});
