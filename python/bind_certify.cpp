@@ -191,8 +191,9 @@ void bind_certify(py::module_& m) {
 A proof in ball arithmetic (Arb), as `dfchaos certify WHAT` gives it: `what` is one of vartheta0 (Eq. 1),
 lemma1 (Lemma 1), b0 (a certified lower bound of b0(q)), discontinuities (Lemma 2, on segment L0 or L2),
 covering (Lemma 4 / Theorem 1), periodic (Sections 6-7, minimal period `period`), superstable
-(Theorem 2; with `window=(lo, hi)` a window in b with both edges) or arc-l1 (the arc L1 of Lemma 4's
-proof, for every b/a up to the bound it reports and q/a in the box `q`). `b` and `q` are numbers or (lo, hi)
+(Theorem 2; with `window=(lo, hi)` a window in b with both edges) arc-l1 (the arc L1 of Lemma 4's
+proof) or lemma4-uniform (Lemma 4 by the paper's construction), both for every b/a up to the bound
+they report and q/a in the box `q`. `b` and `q` are numbers or (lo, hi)
 boxes where the request allows them. Returns a dfchaos.Certified: the JSON record of the tool as a
 dict ("proved" True/False, the statement, the enclosures as decimal mid and radius, on failure the
 step that failed) whose attributes give the answer typed: .proved, .statement, .failed_step,
@@ -201,7 +202,7 @@ step that failed) whose attributes give the answer typed: .proved, .statement, .
 raises dfchaos.InvalidParameter with the CLI's message. Doubles are exact binary numbers: the proofs
 are for those numbers (or every parameter of the box).
 
-With `certificate="path"` (vartheta0, lemma1, b0, covering, periodic, superstable, discontinuities, arc-l1) a proved
+With `certificate="path"` (vartheta0, lemma1, b0, covering, periodic, superstable, discontinuities, arc-l1, lemma4-uniform) a proved
 statement's certificate (the witnesses, for the independent checker dfchaos-recheck;
 docs/certificates.md) is written to path whole or not at all,
 and the dict gets "certificate": {"path", "bytes", "sha256"} ({"written": False} when not proved).

@@ -40,6 +40,8 @@ REQUESTS = {
     # a box of certified_region, re-proved with the J0, J1 its row records
     # the arc L1 of Lemma 4's proof, for every b/a up to sin(3pi/100)/2 and q/a in [0.72, 1]
     "arc_l1": ["arc-l1", "--q", "0.72:1"],
+    # Lemma 4 by the paper's construction for every b/a up to its bound, q/a in [0.62, 1]
+    "lemma4_uniform": ["lemma4-uniform", "--q", "0.62:1"],
     "covering_box": ["covering", "--a", "1", "--b", "0.0019697602976329739:0.00196980455453853",
                      "--q", "0.80000000000000004:0.81000000000000005", "--J0", "3.2595461317302936:3.3248980967076651",
                      "--J1", "3.3397741191384851:3.3845640013715848"],
@@ -172,6 +174,23 @@ def rejects_arc_l1(cli, checker, what, d, bad):
     if proc.returncode != want or word not in line:
         sys.exit(f"FAIL: arc-l1 mutation {what}: dfchaos-recheck exit {proc.returncode}, want {want} naming '{word}': {line}")
     print(f"ok:   arc-l1 mutation {what}: exit {want}: {line}")
+
+
+def rejects_lemma4_uniform(cli, checker, what, d, bad):
+    """The mutations of a lemma4-uniform certificate, each rejected with the step named."""
+    path, _ = write_certificate(cli, "lemma4_uniform", d)
+    cases = {  # name: (change, exit status, a word of the step the checker must name)
+        "b_larger": (lambda c: c["parameters"]["b_over_a_max"].update(hex=float.hex(1e-4)), 1, "(I5)"),
+        "q_lower": (lambda c: c["parameters"]["q_over_a"]["lo"].update(hex=float.hex(0.5)), 1, "(I8)"),
+        "arc_W": (lambda c: c["witnesses"]["arc_l1"]["witnesses"]["W"].update(hex=float.hex(0.01)), 1, "stops within W"),
+        "arc_missing": (lambda c: c["witnesses"].pop("arc_l1"), 2, "arc_l1"),
+    }
+    change, want, word = cases[what]
+    proc = subprocess.run([checker, mutate(path, bad, change)], capture_output=True, text=True)
+    line = (proc.stdout + proc.stderr).strip()
+    if proc.returncode != want or word not in line:
+        sys.exit(f"FAIL: lemma4-uniform mutation {what}: dfchaos-recheck exit {proc.returncode}, want {want} naming '{word}': {line}")
+    print(f"ok:   lemma4-uniform mutation {what}: exit {want}: {line}")
 
 
 def main():
@@ -357,6 +376,8 @@ def main():
             recheck(checker, mutate(path, bad, same), 1, "J0 and J1 overlap")
         elif case.startswith("rejects_discontinuities_"):
             rejects_discontinuities(cli, checker, case[len("rejects_discontinuities_"):], d, bad)
+        elif case.startswith("rejects_lemma4_uniform_"):
+            rejects_lemma4_uniform(cli, checker, case[len("rejects_lemma4_uniform_"):], d, bad)
         elif case.startswith("rejects_arc_l1_"):
             rejects_arc_l1(cli, checker, case[len("rejects_arc_l1_"):], d, bad)
         elif case == "rejects_truncated":

@@ -61,7 +61,7 @@ certify::Request request_from(const CertifyOptions& o) {
     if (!o.q.empty()) r.q = certify::Range::point(number("q", o.q));
     return r;
   }
-  if (o.what == "arc-l1") {
+  if (o.what == "arc-l1" || o.what == "lemma4-uniform") {
     if (!o.q.empty()) r.q = range("q", o.q);
     return r;
   }
@@ -170,6 +170,13 @@ CLI::App* add_certify(CLI::App& app, CertifyOptions& o) {
   add_a(arc, o);
   add_parameter(arc, o.q, kQ, "q, the largest dry friction (q/a is what the proof is about; 0 < q <= a)", true);
   add_common(arc, o, true);
+
+  auto* uni = c->add_subcommand("lemma4-uniform",
+                                "Lemma 4 / Theorem 1 for every b/a up to an explicit bound and q/a in a box: the paper's construction "
+                                "on L2, its inequalities proved for all such b/a at once");
+  add_a(uni, o);
+  add_parameter(uni, o.q, kQ, "q, the largest dry friction (q/a is what the proof is about; 0 < q <= a)", true);
+  add_common(uni, o, true);
 
   // A word that names no statement, with the options after it, lands in `what` and is refused
   // first, by name (set after the statements, which would inherit it: they refuse extras).

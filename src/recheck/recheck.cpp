@@ -1359,6 +1359,69 @@ long check_arc_l1(const json& c) {
   return st.n;
 }
 
+// ---- lemma4-uniform: Lemma 4 for every b/a <= eps*, by the paper's construction on L2 ----------------
+
+/// (I1)-(I7) of docs/certified.md for every eps in [0, eps*] (a = 1, theta = pi + w, w in [pi/100,
+/// pi/50], s0 = cos(w)/eps), re-derived here: G1(theta, theta + s) = s^2 [eps - sin(w)/2 + s g],
+/// g = sin(w) s E(s) + cos(w) K(s); G1 <= eps - cos w - sin w + 1 on [1, s0 - 1]; at a symmetric
+/// tangency z (2z - cos(z)/eps = (2k+1) pi), G1(z, t* + u) = u^2 [eps - sin w (1/2 - u^2 E(u)) -
+/// cos(w) u K(u)]; the closed-form count h(101pi/100) - h(51pi/50) >= 6 pi; s0 - 1 > 2 cot(pi/200)
+/// (no tangency of the other family can be a first contact); (q/a - 2 eps)(s0 - 1) > 2 (theta2
+/// decreases along a branch); and (I8), the arc L1, as the embedded arc-l1 certificate for the same
+/// q/a with a bound >= eps*. The argument from these to Lemma 4 is trusted (README.md).
+long check_lemma4_uniform(const json& c) {
+  Steps st;
+  const json& p = field(c, "parameters", "");
+  const json& k = field(p, "q_over_a", "parameters.");
+  const double k_lo = parameter(k, "lo", "parameters.q_over_a."), k_hi = parameter(k, "hi", "parameters.q_over_a.");
+  const double eps_star = parameter(p, "b_over_a_max", "parameters.");
+  const json& w = field(c, "witnesses", "");
+  const json& np = field(w, "pieces", "witnesses.");
+  if (!np.is_number_integer() || np.get<long long>() < 1 || np.get<long long>() > 4096)
+    throw Malformed("'witnesses.pieces' is not an integer in 1..4096");
+  const int n = static_cast<int>(np.get<long long>());
+  const json& arc = field(w, "arc_l1", "witnesses.");
+  const json& arc_st = field(arc, "statement", "witnesses.arc_l1.");
+  if (!arc_st.is_string() || arc_st.get<std::string>() != "arc-l1") throw Malformed("'witnesses.arc_l1' is not an arc-l1 certificate");
+  st.n += check_arc_l1(arc);
+  const json& ap = field(arc, "parameters", "witnesses.arc_l1.");
+  const json& ak = field(ap, "q_over_a", "witnesses.arc_l1.parameters.");
+  st.require(parameter(ak, "lo", "witnesses.arc_l1.parameters.q_over_a.") <= k_lo &&
+                 parameter(ak, "hi", "witnesses.arc_l1.parameters.q_over_a.") >= k_hi &&
+                 parameter(ap, "b_over_a_max", "witnesses.arc_l1.parameters.") >= eps_star,
+             "(I8) the arc L1 is proved for these q/a and every b/a <= b_over_a_max");
+  st.require(0 < k_lo && k_lo <= k_hi && k_hi <= 1 && eps_star > 0, "0 < q/a lo <= q/a hi <= 1, b_over_a_max > 0");
+  const Iv PI = pi(), w1 = PI / Iv(100.0), w2 = PI / Iv(50.0), E(eps_star), eps(0.0, eps_star);
+  st.require(le(6.0 * PI, (cos(w1) - cos(w2)) / E - w2), "(I5) h(101pi/100) - h(51pi/50) >= 6 pi at b_over_a_max (so for every smaller b/a)");
+  st.require(lt(2.0 * E, sin(w1)), "(I1) 2 b_over_a_max < sin(pi/100)");
+  Num wa, wb;
+  mpfi_get_left(wa.x, w1.x);
+  mpfi_get_right(wb.x, w2.x);
+  const double a0 = mpfr_get_d(wa.x, MPFR_RNDD), b0 = mpfr_get_d(wb.x, MPFR_RNDU);
+  for (int i = 0; i < n; ++i) {
+    const double a = a0 + (b0 - a0) * i / n, b = i + 1 == n ? b0 : a0 + (b0 - a0) * (i + 1) / n;
+    const Iv W(a, b), sw = sin(W), cw = cos(W);
+    const std::string cell = "w in [" + std::to_string(a) + ", " + std::to_string(b) + "]";
+    st.require((eps - 0.5 * sw).negative(), "(I2) b/a - sin(w)/2 < 0 on " + cell);
+    st.require((eps + Iv(1.0) - cw - sw).negative(), "(I3) b/a + 1 - cos w - sin w < 0 on " + cell);
+    st.require(le(2.0 * E, cw), "(I3) s0 = cos(w)/(b/a) >= 2 on " + cell);
+    for (int j = 0; j < n; ++j) {
+      const double s1 = static_cast<double>(j) / n, s2 = j + 1 == n ? 1.0 : static_cast<double>(j + 1) / n;
+      const Iv s(s1, s2), h(s2), h2 = sqr(h);
+      const Iv Es = hull(Iv(1.0) / Iv(24.0) - h2 / Iv(720.0), Iv(1.0) / Iv(24.0));
+      const Iv Ks = hull(Iv(-1.0) / Iv(6.0), Iv(-1.0) / Iv(6.0) + h2 / Iv(120.0));
+      st.require((sw * s * Es + cw * Ks).negative(), "(I2) g < 0 on " + cell + ", s in [" + std::to_string(s1) + ", " + std::to_string(s2) + "]");
+      const Iv u = -s;  // E and K are even
+      st.require((eps - sw * (Iv(0.5) - sqr(u) * Es) - cw * u * Ks).negative(),
+                 "(I4) the end-window bracket < 0 on " + cell + ", u in [" + std::to_string(-s2) + ", " + std::to_string(-s1) + "]");
+    }
+  }
+  const Iv s_min = cos(w2) / E - Iv(1.0);
+  st.require(lt(2.0 * cot(PI / Iv(200.0)), s_min), "(I6) s0 - 1 > 2 cot(pi/200)");
+  st.require(lt(Iv(2.0), (Iv(k_lo) - 2.0 * E) * s_min), "(I7) (q/a - 2 b/a)(s0 - 1) > 2");
+  return st.n;
+}
+
 /// Section 7 beyond two symbols: disjoint segments I_1 < ... < I_n of [t2, t3), each covered by balls
 /// on which T is continuous, with T at both ends enclosed (case AB above t2); an edge j -> k only where
 /// I_k lies strictly between the enclosures at the ends of I_j (so T(I_j) contains I_k); weights v > 0
@@ -1498,10 +1561,12 @@ int check_file(const std::string& path) {
       steps = check_entropy(c, what);
     else if (statement == "arc-l1")
       steps = check_arc_l1(c);
+    else if (statement == "lemma4-uniform")
+      steps = check_lemma4_uniform(c);
     else
       throw Malformed("unknown statement '" + statement +
                       "' (this checker reads vartheta0, lemma1, b0, covering, coverings, periodic, superstable, not_superstable, window, "
-                      "theorem2_counterexample, discontinuities, paper_construction, entropy, arc-l1)");
+                      "theorem2_counterexample, discontinuities, paper_construction, entropy, arc-l1, lemma4-uniform)");
     std::printf("OK %s: %s, %ld steps re-verified%s\n", path.c_str(), statement.c_str(), steps, what.empty() ? "" : ("; " + what).c_str());
     return 0;
   } catch (const Failed& e) {

@@ -8,7 +8,7 @@
 /// binary number exactly, with a decimal beside them for humans) and every witness of the proof.
 /// The format, statement by statement, and what the checker does with it: docs/certificates.md.
 /// Statements with a certificate so far: vartheta0, lemma1, b0, covering, periodic, superstable (with or
-/// without a window), arc-l1, and in the experiments not_superstable and theorem2_counterexample.
+/// without a window), arc-l1, lemma4-uniform, and in the experiments not_superstable and theorem2_counterexample.
 #pragma once
 
 #include <cstddef>
@@ -22,6 +22,7 @@
 #include "dfchaos/certified/covering.hpp"
 #include "dfchaos/certified/discontinuities.hpp"
 #include "dfchaos/certified/entropy.hpp"
+#include "dfchaos/certified/lemma4_uniform.hpp"
 #include "dfchaos/certified/periodic.hpp"
 #include "dfchaos/certified/progression.hpp"
 #include "dfchaos/certified/superstable.hpp"
@@ -36,10 +37,11 @@ inline constexpr const char* kCertificateFormat = "dfchaos-certificate";
 inline constexpr int kCertificateVersion = 1;
 
 /// Whether `dfchaos certify what` can write a certificate (vartheta0, lemma1, b0, discontinuities, covering,
-/// periodic, superstable, arc-l1: today every statement of the tool).
+/// periodic, superstable, arc-l1, lemma4-uniform: today every statement of the tool).
 bool has_certificate(const std::string& what);
 /// The statements with a certificate format, in words (for messages).
-inline constexpr const char* kCertificateStatements = "vartheta0, lemma1, b0, discontinuities, covering, periodic, superstable or arc-l1";
+inline constexpr const char* kCertificateStatements =
+    "vartheta0, lemma1, b0, discontinuities, covering, periodic, superstable, arc-l1 or lemma4-uniform";
 
 /// The double x as a C99 hexadecimal floating-point string (`%a`: exactly x, e.g. "0x1p+0").
 std::string hex_double(double x);
@@ -134,6 +136,10 @@ kit::Json certificate_discontinuities(double a, double b, const std::string& seg
 /// H' and the grid (delta cuts x s cuts) on whose cells the checker re-encloses g and H'. `p` must be
 /// proved. @throws std::logic_error otherwise.
 kit::Json certificate_arc_l1(double a, const certified::ArcL1Proof& p, const std::string& claim);
+/// The certificate of Lemma 4 for every small b/a (statement lemma4-uniform, lemma4_uniform.hpp): a,
+/// the box of q/a, b_over_a_max = eps*, the number of pieces in w and u, and the `arc-l1` certificate
+/// of (I8) as a witness. `p` must be proved. @throws std::logic_error otherwise.
+kit::Json certificate_lemma4_uniform(double a, const certified::Lemma4UniformProof& p, const std::string& claim);
 /// The text of a certificate as every writer stores it (the tool, Python and the experiments).
 std::string certificate_text(const kit::Json& certificate);
 

@@ -14,6 +14,7 @@
 #include "dfchaos/certified/arc_l1.hpp"
 #include "dfchaos/certified/covering.hpp"
 #include "dfchaos/certified/discontinuities.hpp"
+#include "dfchaos/certified/lemma4_uniform.hpp"
 #include "dfchaos/certified/periodic.hpp"
 #include "dfchaos/certified/progression.hpp"
 #include "dfchaos/certified/superstable.hpp"
@@ -41,6 +42,7 @@ Json to_json(const certified::CoveringProof& c, const certified::PeriodicProof& 
 Json to_json(double a, double b, double q, const certified::SuperstableProof& p);                      ///< Theorem 2 at a point
 Json to_json(double a, double q, const certified::WindowProof& w);                                     ///< a superstability window
 Json to_json(double a, const certified::ArcL1Proof& p);                                                ///< the arc L1 of Lemma 4's proof
+Json to_json(double a, const certified::Lemma4UniformProof& p);                                        ///< Lemma 4 for every small b/a
 
 /// The statements, in words (what "proved" means for each result).
 std::string statement_vartheta0();
@@ -52,5 +54,6 @@ std::string statement_periodic(int m);
 std::string statement_superstable();
 std::string statement_window();
 std::string statement_arc_l1(double kappa_lo, double kappa_hi, double eps_max);
+std::string statement_lemma4_uniform(double kappa_lo, double kappa_hi, double eps_star);
 
 }  // namespace dfchaos::certify

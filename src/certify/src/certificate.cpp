@@ -55,7 +55,7 @@ kit::Json lemma1_sub_boxes(const certified::Lemma1Proof& p) {
 
 bool has_certificate(const std::string& what) {
   return what == "vartheta0" || what == "lemma1" || what == "b0" || what == "discontinuities" || what == "covering" || what == "periodic" ||
-         what == "superstable" || what == "entropy" || what == "arc-l1";
+         what == "superstable" || what == "entropy" || what == "arc-l1" || what == "lemma4-uniform";
 }
 
 std::string hex_double(double x) {
@@ -175,6 +175,21 @@ kit::Json certificate_arc_l1(double a, const certified::ArcL1Proof& p, const std
   w.set("g_lo", exact_number(p.g_lo)).set("g_hi", exact_number(p.g_hi));
   w.set("dH_lo", exact_number(p.h_lo)).set("dH_hi", exact_number(p.h_hi));
   w.set("delta_cuts", dj).set("s_cuts", sj);
+  j.set("witnesses", w);
+  return j;
+}
+
+kit::Json certificate_lemma4_uniform(double a, const certified::Lemma4UniformProof& p, const std::string& claim) {
+  if (!p.verdict.proved) throw std::logic_error("certificate_lemma4_uniform: not proved");
+  kit::Json j = header("lemma4-uniform", claim);
+  kit::Json par = kit::Json::object();
+  par.set("a", exact_number(a));
+  par.set("q_over_a", exact_range(Range{p.kappa_lo, p.kappa_hi}));
+  par.set("b_over_a_max", exact_number(p.eps_star));
+  j.set("parameters", par);
+  kit::Json w = kit::Json::object();
+  w.set("pieces", static_cast<long long>(p.w_pieces));
+  w.set("arc_l1", certificate_arc_l1(a, p.arc_l1, statement_arc_l1(p.arc_l1.kappa_lo, p.arc_l1.kappa_hi, p.arc_l1.eps_max)));
   j.set("witnesses", w);
   return j;
 }

@@ -70,9 +70,10 @@ Candidate candidate(const std::string& name, const SegmentEnds& e, const Paramet
 }  // namespace
 
 void check_statement(const std::string& what) {
-  for (const char* known : {"vartheta0", "lemma1", "b0", "discontinuities", "covering", "periodic", "superstable", "arc-l1"})
+  for (const char* known : {"vartheta0", "lemma1", "b0", "discontinuities", "covering", "periodic", "superstable", "arc-l1", "lemma4-uniform"})
     if (what == known) return;
-  throw InvalidParameter("what", "one of vartheta0, lemma1, b0, discontinuities, covering, periodic, superstable, arc-l1 (got '" + what + "')");
+  throw InvalidParameter(
+      "what", "one of vartheta0, lemma1, b0, discontinuities, covering, periodic, superstable, arc-l1, lemma4-uniform (got '" + what + "')");
 }
 
 Result certify(const Request& r) {
@@ -102,17 +103,24 @@ Result certify(const Request& r) {
     if (c.proved && r.certificate) c.certificate = certificate_b0(a, q, p, claim_of(c));
     return c;
   }
-  if (r.what == "arc-l1") {
+  if (r.what == "arc-l1" || r.what == "lemma4-uniform") {
     const double a = bounded("a", r.a);
     if (!(a > 0)) throw InvalidParameter("a", "a > 0", a);
-    if (!r.q) throw InvalidParameter("q", "required for certify arc-l1");
+    if (!r.q) throw InvalidParameter("q", "required for certify " + r.what);
     const Range q = bounded("q", *r.q);
     if (!(q.lo > 0)) throw InvalidParameter("q", "q > 0", q.lo);
     if (!(q.hi <= a)) throw InvalidParameter("q", "q <= a (t0 exists for every b > 0)", q.hi);
     // q/a enclosed: the proof is about the ratios (lower end rounded down, upper end up).
-    const ArcL1Proof p = prove_arc_l1((Ball(q.lo) / Ball(a)).lower(), (Ball(q.hi) / Ball(a)).upper());
+    const double k_lo = (Ball(q.lo) / Ball(a)).lower(), k_hi = (Ball(q.hi) / Ball(a)).upper();
+    if (r.what == "arc-l1") {
+      const ArcL1Proof p = prove_arc_l1(k_lo, k_hi);
+      Result c{p.verdict.proved, to_json(a, p)};
+      if (c.proved && r.certificate) c.certificate = certificate_arc_l1(a, p, claim_of(c));
+      return c;
+    }
+    const Lemma4UniformProof p = prove_lemma4_uniform(k_lo, k_hi);
     Result c{p.verdict.proved, to_json(a, p)};
-    if (c.proved && r.certificate) c.certificate = certificate_arc_l1(a, p, claim_of(c));
+    if (c.proved && r.certificate) c.certificate = certificate_lemma4_uniform(a, p, claim_of(c));
     return c;
   }
   if (r.what == "discontinuities") {

@@ -75,6 +75,15 @@ std::string statement_arc_l1(double kappa_lo, double kappa_hi, double eps_max) {
          "(Eq. 17): the mass then waits for t0 + 2pi, so T = t2 on L1 wherever Lemma 1 holds. b/a <= b_over_a_max is all the "
          "smallness needed (beyond it L1 is empty).";
 }
+std::string statement_lemma4_uniform(double kappa_lo, double kappa_hi, double eps_star) {
+  return "Lemma 4 (hence Theorem 1) for every a > 0 and every b, q with 0 < b/a <= " + format_double(eps_star) + " and q/a in [" +
+         format_double(kappa_lo) + ", " + format_double(kappa_hi) +
+         "], by the paper's construction on L2 = [101pi/100, 51pi/50]: the inequalities (I1)-(I8) of docs/certified.md are proved in "
+         "ball arithmetic for all such b/a at once (L2 holds at least three first-contact tangencies z_1 < z_2 < z_3 of T1, no "
+         "other discontinuity, theta2 decreases along each branch, and from each T1(z_i) in L1 the progression stops in (t3, t0 + "
+         "2pi)); by the argument written there, T decreases continuously on a segment [z_i, theta_c] from T(z_i) >= 99pi/50 to t2, "
+         "i = 1, 2. The inequalities are certified; the argument that they imply Lemma 4 is a proof on paper, not a computation.";
+}
 std::string statement_discontinuities(const std::string& segment, std::size_t n) {
   return "Lemma 2 on " + segment + " at the double values of a, b: T1 has exactly " + std::to_string(n) +
          " discontinuities there, the z_k with 2z - (a/b) cos z = (2k+1) pi (enclosed), each a first-contact tangency "
@@ -225,6 +234,18 @@ Json to_json(double a, const ArcL1Proof& p) {
   j.set("g", Json::array().push(p.g_lo).push(p.g_hi)).set("dH", Json::array().push(p.h_lo).push(p.h_hi));
   if (p.verdict.proved) j.set("x1_max", ball_json(p.x1_max, 8)).set("gamma", ball_json(p.gamma, 8)).set("t0_min", ball_json(p.t0_min, 8));
   j.set("pieces", static_cast<long long>(p.pieces.size()));
+  return j;
+}
+
+Json to_json(double a, const Lemma4UniformProof& p) {
+  Json j = Json::object();
+  j.set("statement", statement_lemma4_uniform(p.kappa_lo, p.kappa_hi, p.eps_star));
+  j.set("parameters", Json::object().set("a", a).set("q_over_a", Json::array().push(p.kappa_lo).push(p.kappa_hi)));
+  add_verdict(j, p.verdict);
+  j.set("b_over_a_max", p.eps_star);
+  j.set("departure_g_max", p.departure_g_max).set("middle_max", p.middle_max).set("end_bracket_max", p.end_bracket_max);
+  if (p.verdict.proved) j.set("count_length", ball_json(p.count_length, 8)).set("s_min", ball_json(p.s_min, 8));
+  j.set("arc_l1", to_json(a, p.arc_l1));
   return j;
 }
 

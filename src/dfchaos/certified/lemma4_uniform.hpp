@@ -1,0 +1,61 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+/// @file lemma4_uniform.hpp
+/// @brief Lemma 4 for every b/a below an explicit bound at once: the paper's construction on
+/// \f$L_2 = [101\pi/100, 51\pi/50]\f$, its "b/a sufficiently small" replaced by inequalities proved in
+/// ball arithmetic for all \f$\varepsilon = b/a \in (0, \varepsilon_*]\f$.
+///
+/// Take a = 1, \f$\theta = \pi + w \in L_2\f$ (\f$w \in [\pi/100, \pi/50]\f$), s = t − θ, and
+/// \f$s_0 = \cos w/\varepsilon\f$, so that \f$G_1(\theta, \theta + s) = \varepsilon s(s - s_0) + \sin\theta - \sin(\theta + s)\f$
+/// (Eq. 11). The inequalities, each over all w and all \f$\varepsilon \le \varepsilon_*\f$:
+///  - **(I1)** \f$2\varepsilon_* < \sin(\pi/100)\f$: \f$L_2 \subset (t_2, t_3)\f$, \f$t_3 > 199\pi/100\f$, and
+///    \f$h(z) = 2z - \cos z/\varepsilon\f$ decreases on \f$L_2\f$ (\f$h' = 2 + \sin z/\varepsilon < 0\f$);
+///  - **(I2)** departure: \f$\varepsilon - \tfrac12\sin w < 0\f$ and \f$g = \sin w\, sE(s) + \cos w\, K(s) < 0\f$ on
+///    \f$s \in [0, 1]\f$ (next_hit.hpp's factorisation), so \f$G_1 < 0\f$ for \f$s \in (0, 1]\f$;
+///  - **(I3)** middle: \f$\varepsilon + 1 - \cos w - \sin w < 0\f$ and \f$s_0 \ge 2\f$; on \f$[1, s_0 - 1]\f$,
+///    \f$\varepsilon s(s - s_0) \le \varepsilon - \cos w\f$, so \f$G_1 \le \varepsilon - \cos w - \sin w + 1 < 0\f$:
+///    every first contact from \f$L_2\f$ has \f$s > s_0 - 1\f$;
+///  - **(I4)** end window at a symmetric tangency \f$z\f$ (\f$h(z) = (2k+1)\pi\f$, \f$t^* = (2k+1)\pi - z\f$):
+///    \f$G_1(z, t^* + u) = u^2[\varepsilon - \sin w(\tfrac12 - u^2E(u)) - \cos w\, uK(u)]\f$ exactly, and the bracket
+///    is < 0 on \f$u \in [-1, 0]\f$: z is a first-contact tangency, \f$T_1(z) = t^*\f$;
+///  - **(I5)** count: \f$h(101\pi/100) - h(51\pi/50) \ge 6\pi\f$, so \f$L_2\f$ holds at least three such z;
+///  - **(I6)** no other first-contact tangency on \f$L_2\f$: eliminating \f$t\f$ from \f$G_1 = \partial_tG_1 = 0\f$
+///    leaves \f$\sigma = \varepsilon s - \cos w = 0\f$ (the symmetric family) or
+///    \f$\sigma = (2s\sin w - 4\cos w)/(4 + s^2)\f$, where \f$\sin t < 0\f$ (needed for a local maximum 0 of
+///    \f$G_1\f$: \f$\partial_{tt}G_1 = 2\varepsilon + \sin t \le 0\f$) forces \f$s < 2\cot(w/2)\f$; (I6) is
+///    \f$s_0 - 1 \ge 2\cot(\pi/200)\f$;
+///  - **(I7)** \f$\theta_2\f$ decreases along a branch: \f$(q/a - 2\varepsilon)(s_0 - 1) > 2\f$, so
+///    \f$q\,|T_1'| = q|F(\theta)|s/v > |F(\theta)|\f$ (impact velocity \f$v \le 2\varepsilon s + 2\f$) and
+///    \f$d\theta_2/d\theta = (q T_1' - F(\theta))/(q - F(\theta_2)) < 0\f$ wherever \f$\theta_2 \bmod 2\pi \in (t_2, t_3)\f$;
+///  - **(I8)** the arc \f$L_1\f$ (arc_l1.hpp) for q/a in the box and every \f$\varepsilon \le \varepsilon_*\f$.
+/// The argument that turns them into Lemma 4 (two segments \f$[z_i, \theta_c]\f$, i = 1, 2, on which T
+/// decreases continuously from \f$T(z_i) = t^*_i \bmod 2\pi \ge 99\pi/50\f$ to \f$t_2\f$) is written out in
+/// docs/certified.md; it is the paper's proof with the steps it leaves to "b/a small" made explicit,
+/// and it is an argument, not a computation. Lemma 1 is not needed on this route.
+#pragma once
+
+#include "dfchaos/certified/arc_l1.hpp"
+#include "dfchaos/certified/ball.hpp"
+#include "dfchaos/certified/outcome.hpp"
+
+namespace dfchaos::certified {
+
+/// The inequalities (I1)-(I8) of the file comment for every b/a in (0, eps_star] and q/a in [kappa_lo, kappa_hi].
+struct Lemma4UniformProof {
+  Outcome verdict;        ///< proved: every inequality, for every b/a in (0, eps_star]
+  double kappa_lo = 0;    ///< the box of q/a: lower end
+  double kappa_hi = 0;    ///< upper end
+  double eps_star = 0;    ///< the bound: the largest double with (I5), \f$(\cos(\pi/100) - \cos(\pi/50))/(6\pi + \pi/50)\f$ rounded down
+  int w_pieces = 0;       ///< pieces of \f$[\pi/100, \pi/50]\f$ in (I2)-(I4)
+  int u_pieces = 0;       ///< pieces of \f$[-1, 0]\f$ in (I4) (and of \f$[0, 1]\f$ in (I2))
+  double departure_g_max = 0;  ///< (I2): a double above every enclosure of g (negative when proved)
+  double middle_max = 0;       ///< (I3): a double above every enclosure of \f$\varepsilon + 1 - \cos w - \sin w\f$
+  double end_bracket_max = 0;  ///< (I4): a double above every enclosure of the bracket
+  Ball count_length;      ///< (I5): \f$h(101\pi/100) - h(51\pi/50)\f$ at \f$\varepsilon_*\f$ (it grows as \f$\varepsilon\f$ shrinks)
+  Ball s_min;             ///< \f$s_0 - 1\f$ at its least, \f$\cos(\pi/50)/\varepsilon_* - 1\f$
+  ArcL1Proof arc_l1;      ///< (I8)
+};
+
+/// Proves (I1)-(I8) with `pieces` pieces in w and in u (and s).
+Lemma4UniformProof prove_lemma4_uniform(double kappa_lo, double kappa_hi, int pieces = 16);
+
+}  // namespace dfchaos::certified
