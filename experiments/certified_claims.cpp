@@ -52,6 +52,18 @@ std::string lower_decimal(double x, int decimals) {
   if (std::strtod(buf, nullptr) >= x) std::snprintf(buf, sizeof buf, "%.*f", decimals, (std::floor(x * scale) - 1) / scale);
   return buf;
 }
+/// x > 0 rounded down to `digits` significant digits, as "d.dde-N" (a printed upper bound of a range
+/// of b/a stays below the proved one).
+std::string lower_significant(double x, int digits) {
+  const int e = static_cast<int>(std::floor(std::log10(x))) - (digits - 1);
+  double m = std::floor(x / std::pow(10.0, e));
+  char buf[64];
+  for (int i = 0; i < 3; ++i, m -= 1) {  // the division may round up by one unit
+    std::snprintf(buf, sizeof buf, "%.0fe%d", m, e);
+    if (std::strtod(buf, nullptr) <= x) break;
+  }
+  return dfchaos::format_shortest(std::strtod(buf, nullptr));
+}
 /// A number for LaTeX text mode ("5e-05" becomes 5 x 10^-5).
 std::string num(double x, int digits = 6) { return latex_number(format_significant(x, digits)); }
 
@@ -398,8 +410,9 @@ const Experiment experiment{
 
       // ---- the arc L1 of the proof of Lemma 4, for every b/a up to an explicit bound -------------------
       {
-        // q/a over assumption (2)'s range (sin(vartheta0) < 0.7246 < q/a < 1), widened down to 0.72.
-        const double kappa_lo = 0.72, kappa_hi = 1.0;
+        // q/a over assumption (2)'s range (sin(vartheta0) < 0.7246 < q/a < 1) and below it, down to where the
+        // deceleration bound of the proof still closes (it fails at 0.6).
+        const double kappa_lo = 0.62, kappa_hi = 1.0;
         const auto t0 = Clock::now();
         const ArcL1Proof p = prove_arc_l1(kappa_lo, kappa_hi);
         time_row("arc L1 of Lemma 4's proof", since(t0));
@@ -416,6 +429,23 @@ const Experiment experiment{
                 p.verdict.proved ? "from rest on $L_1$: one simple contact after $t_3$, stop in $(t_3, t_0+2\\pi)$ within $" + fmt(p.W, 2) + "$"
                                  : "not proved: " + latex_escape(p.verdict.step),
                 std::to_string(p.pieces.size()));
+        // Lemma 4 (and the covering part of Theorem 1) for every b/a up to an explicit bound, by the paper's
+        // construction on L2 with its "b/a sufficiently small" made explicit (lemma4_uniform.hpp).
+        const auto tu = Clock::now();
+        const Lemma4UniformProof u = prove_lemma4_uniform(kappa_lo, kappa_hi);
+        time_row("Lemma 4 for every small b/a", since(tu));
+        const std::string su = statement_lemma4_uniform(u.kappa_lo, u.kappa_hi, u.eps_star);
+        if (u.verdict.proved) run.certificate("cert.lemma4.uniform_small_b", certificate_text(certificate_lemma4_uniform(1.0, u, su)));
+        auto& cu = certified_claim(out, "cert.lemma4.uniform_small_b", "Lemma 4, Theorem 1", su, to_json(1.0, u), u.verdict.proved, &u.verdict);
+        cu.parameter_object(Json::object().set("q_over_a", Json::array().push(kappa_lo).push(kappa_hi)).set("b_over_a_max", u.eps_star));
+        out.macro("CertLemmaFourEpsStar", latex_number(lower_significant(u.eps_star, 3)));
+        tex_row("Lemma 4 (all small b/a)",
+                "$[" + dfchaos::format_shortest(kappa_lo) + ", " + dfchaos::format_shortest(kappa_hi) + "] \\times (0, " +
+                    latex_number(lower_significant(u.eps_star, 3)) + "]$",
+                u.verdict.proved ? "(I1)--(I8) for every $b/a$ in the box: at least three tangencies on $L_2$, no other jump, "
+                                   "$\\theta_2$ decreasing along each branch"
+                                 : "not proved: " + latex_escape(u.verdict.step),
+                "---");
       }
 
       // ---- Lemma 1: certified lower bounds of b0(q) ------------------------------------------------

@@ -15,6 +15,7 @@
 #include "certify/json.hpp"
 #include "dfchaos/certified/arc_l1.hpp"
 #include "dfchaos/certified/bisect.hpp"
+#include "dfchaos/certified/lemma4_uniform.hpp"
 #include "dfchaos/certified/region.hpp"
 #include "dfchaos/next_hit.hpp"
 #include "dfchaos/progression_stop.hpp"
@@ -353,4 +354,66 @@ TEST(CertifiedArcL1, NotProvedWhereTheProgressionMayNotStopInTime) {
   const ArcL1Proof pr = prove_arc_l1(0.3, 1.0);
   EXPECT_FALSE(pr.verdict.proved);
   EXPECT_NE(pr.verdict.step.find("progression"), std::string::npos) << pr.verdict.describe();
+}
+
+// Lemma 4 for every b/a <= eps* (lemma4_uniform.hpp): the floating layer, with its own scan for the
+// discontinuities of T1 (branch labels, both families of Eq. 14) and its own T, must show what the
+// argument of docs/certified.md derives from the certified inequalities: on L2 the discontinuities
+// are exactly the symmetric tangencies (at least three); T(z_i + 0) lies in [99pi/50, 199pi/100];
+// along a branch T1 decreases, and T = theta2 mod 2pi (scenario A) decreases until theta2 leaves
+// [t2, t3) through t2; just left of z_(i+1) the progression stops in the stop arc (t3, t0 + 2pi),
+// so T = t2 there where Lemma 1 holds (q/a = 0.85; at 0.65 < sin(vartheta0) it does not).
+TEST(CertifiedLemma4Uniform, ProvedAndTheFloatingBranchesAgree) {
+  const Lemma4UniformProof pr = prove_lemma4_uniform(0.62, 1.0);
+  ASSERT_TRUE(pr.verdict.proved) << pr.verdict.describe();
+  EXPECT_GT(pr.eps_star, 7.8e-5);
+  const double L2lo = 1.01 * M_PI, L2hi = 1.02 * M_PI, two_pi = 2 * M_PI;
+  for (double eps : {0.999 * pr.eps_star, 3e-5, 1e-5, 1e-6}) {
+    for (double kappa : {0.65, 0.85}) {
+      const Parameters p(1, eps, kappa);
+      const std::string at = "b/a=" + std::to_string(eps) + " q/a=" + std::to_string(kappa);
+      const std::vector<GrazingPoint> gp = grazing_points(p, L2lo, L2hi, 4000);
+      const std::vector<SymmetricTangency> sym = symmetric_tangencies(p, L2lo, L2hi);
+      ASSERT_GE(sym.size(), 3u) << at;
+      ASSERT_EQ(gp.size(), sym.size()) << at;
+      for (std::size_t i = 0; i < sym.size(); ++i) EXPECT_NEAR(gp[i].z, sym[i].z, 1e-9 * std::fabs(sym[i].z)) << at << " i=" << i;
+      const double t2 = *p.t2(), t3 = *p.t3(), t0 = *p.t0();
+      for (std::size_t i = 0; i + 1 < 3; ++i) {
+        const double z0 = sym[i].z, w = sym[i + 1].z - z0;
+        std::vector<double> frac;  // of the branch: near z_i, uniform, then geometric towards z_(i+1)
+        frac.push_back(1e-9);
+        for (int j = 1; j < 400; ++j) frac.push_back(j / 400.0);
+        for (int m = 3; m <= 9; ++m) frac.push_back(1 - std::pow(10.0, -m));
+        double last_T = 0, last_T1 = 0;
+        bool left_free = false;
+        for (std::size_t j = 0; j < frac.size(); ++j) {
+          const double th = z0 + w * frac[j];
+          const MapStep s = return_map_step(p, th);
+          const double th2 = std::fmod(s.theta2.value(), two_pi);
+          if (j == 0) {
+            EXPECT_GE(s.T, 1.98 * M_PI - 1e-6) << at << " T(z_i + 0)";
+            EXPECT_LE(s.T, 1.99 * M_PI + 1e-6) << at << " T(z_i + 0)";
+          } else {
+            EXPECT_LT(s.hit.t1.value(), last_T1) << at << " T1 decreases on the branch, theta=" << th;
+          }
+          last_T1 = s.hit.t1.value();
+          left_free = left_free || !(th2 > t2 && th2 < t3);
+          if (!left_free) {
+            EXPECT_EQ(s.scenario, Scenario::A) << at << " theta=" << th;
+            if (j > 0) {
+              EXPECT_LT(s.T, last_T) << at << " T decreases until theta2 leaves [t2, t3), theta=" << th;
+            }
+          }
+          last_T = s.T;
+          if (j + 1 == frac.size()) {
+            EXPECT_TRUE(th2 > t3 || th2 < t0) << at << " stop arc left of z_(i+1): theta2 mod 2pi = " << th2;
+            if (kappa > sin_vartheta0()) {
+              EXPECT_EQ(s.T, t2) << at << " T = t2 just left of z_(i+1)";
+            }
+          }
+        }
+        EXPECT_TRUE(left_free) << at << " branch " << i;
+      }
+    }
+  }
 }

@@ -35,7 +35,8 @@ Lemma4UniformProof prove_lemma4_uniform(double kappa_lo, double kappa_hi, int pi
     const double a = wa + (wb - wa) * i / pieces, b = i + 1 == pieces ? wb : wa + (wb - wa) * (i + 1) / pieces;
     Ball sw, cw;
     sin_cos(Ball::interval(a, b), sw, cw);
-    if (!(eps - sw / 2.0).is_negative()) return fail("(I2) departure", "eps - sin(w)/2 not < 0 for w in [" + std::to_string(a) + ", " + std::to_string(b) + "]");
+    if (!(eps - sw / 2.0).is_negative())
+      return fail("(I2) departure", "eps - sin(w)/2 not < 0 for w in [" + std::to_string(a) + ", " + std::to_string(b) + "]");
     const Ball mid = eps + 1.0 - cw - sw;
     r.middle_max = first ? mid.upper() : std::max(r.middle_max, mid.upper());
     if (!mid.is_negative()) return fail("(I3) middle of the flight", "eps + 1 - cos w - sin w = " + mid.str(6));

@@ -41,18 +41,18 @@ namespace dfchaos::certified {
 
 /// The inequalities (I1)-(I8) of the file comment for every b/a in (0, eps_star] and q/a in [kappa_lo, kappa_hi].
 struct Lemma4UniformProof {
-  Outcome verdict;        ///< proved: every inequality, for every b/a in (0, eps_star]
-  double kappa_lo = 0;    ///< the box of q/a: lower end
-  double kappa_hi = 0;    ///< upper end
-  double eps_star = 0;    ///< the bound: the largest double with (I5), \f$(\cos(\pi/100) - \cos(\pi/50))/(6\pi + \pi/50)\f$ rounded down
-  int w_pieces = 0;       ///< pieces of \f$[\pi/100, \pi/50]\f$ in (I2)-(I4)
-  int u_pieces = 0;       ///< pieces of \f$[-1, 0]\f$ in (I4) (and of \f$[0, 1]\f$ in (I2))
+  Outcome verdict;             ///< proved: every inequality, for every b/a in (0, eps_star]
+  double kappa_lo = 0;         ///< the box of q/a: lower end
+  double kappa_hi = 0;         ///< upper end
+  double eps_star = 0;         ///< the bound: the largest double with (I5), \f$(\cos(\pi/100) - \cos(\pi/50))/(6\pi + \pi/50)\f$ rounded down
+  int w_pieces = 0;            ///< pieces of \f$[\pi/100, \pi/50]\f$ in (I2)-(I4)
+  int u_pieces = 0;            ///< pieces of \f$[-1, 0]\f$ in (I4) (and of \f$[0, 1]\f$ in (I2))
   double departure_g_max = 0;  ///< (I2): a double above every enclosure of g (negative when proved)
   double middle_max = 0;       ///< (I3): a double above every enclosure of \f$\varepsilon + 1 - \cos w - \sin w\f$
   double end_bracket_max = 0;  ///< (I4): a double above every enclosure of the bracket
-  Ball count_length;      ///< (I5): \f$h(101\pi/100) - h(51\pi/50)\f$ at \f$\varepsilon_*\f$ (it grows as \f$\varepsilon\f$ shrinks)
-  Ball s_min;             ///< \f$s_0 - 1\f$ at its least, \f$\cos(\pi/50)/\varepsilon_* - 1\f$
-  ArcL1Proof arc_l1;      ///< (I8)
+  Ball count_length;           ///< (I5): \f$h(101\pi/100) - h(51\pi/50)\f$ at \f$\varepsilon_*\f$ (it grows as \f$\varepsilon\f$ shrinks)
+  Ball s_min;                  ///< \f$s_0 - 1\f$ at its least, \f$\cos(\pi/50)/\varepsilon_* - 1\f$
+  ArcL1Proof arc_l1;           ///< (I8)
 };
 
 /// Proves (I1)-(I8) with `pieces` pieces in w and in u (and s).
