@@ -13,6 +13,8 @@
 ///   covering         Lemma 4 / Theorem 1 at a point or over a box of (b, q)
 ///   periodic         Sections 6-7: a periodic point of minimal period m, at a point
 ///   superstable      Theorem 2 at a point, or a window in b with both edges
+///   arc-l1           the arc L1 of Lemma 4's proof, for every b/a up to its bound, q/a in a box
+///   lemma4-uniform   Lemma 4 for every b/a up to an explicit bound, q/a in a box
 #pragma once
 
 #include <optional>
@@ -38,7 +40,7 @@ struct SegmentEnds {
 
 /// A request: the statement and its parameters (each statement reads only the ones it needs).
 struct Request {
-  std::string what;             ///< vartheta0, lemma1, b0, discontinuities, covering, periodic, superstable
+  std::string what;             ///< vartheta0, lemma1, b0, discontinuities, covering, periodic, superstable, arc-l1, lemma4-uniform
   double a = 1;                 ///< forcing amplitude a > 0
   std::optional<Range> b;       ///< dry friction b (a box for lemma1 and covering)
   std::optional<Range> q;       ///< constant force q (a box for lemma1 and covering)
