@@ -103,6 +103,8 @@ REQUIRED_STATEMENT = [
     (r"cert\.lemma1\.", "lemma1"),
     (r"cert\.lemma2\.", "discontinuities"),
     (r"cert\.lemma4\.paper_construction$", "paper_construction"),
+    (r"cert\.lemma4\.arc_l1$", "arc-l1"),
+    (r"cert\.lemma4\.uniform_small_b$", "lemma4-uniform"),
     (r"cert\.lemma4\.", "covering"),
     (r"cert\.eq1\.", "vartheta0"),
 ]
@@ -154,6 +156,16 @@ def bind(path, cert, claim, part):
     if cert.get("claim") not in (rec.get("statement"), claim["statement"]):
         return "its claim text is neither the claim's statement nor its record's"
     cp, rp = cert.get("parameters", {}), rec.get("parameters") or claim.get("parameters", {})
+    if cert.get("statement") in ("arc-l1", "lemma4-uniform"):  # ratios: a, the box of q/a and the bound of b/a
+        if set(cp) != {"a", "q_over_a", "b_over_a_max"} or set(rp) != {"a", "q_over_a"}:
+            return f"parameters {sorted(cp)} / record {sorted(rp)} are not a, q_over_a, b_over_a_max"
+        if exact(cp["a"]["hex"]) != float(rp["a"]):
+            return "its a is not the claim's"
+        if [exact(cp["q_over_a"][e]["hex"]) for e in ("lo", "hi")] != [float(x) for x in rp["q_over_a"]]:
+            return "its box of q/a is not the claim's"
+        if exact(cp["b_over_a_max"]["hex"]) != float(rec["b_over_a_max"]):
+            return "its bound of b/a is not the claim's"
+        return None
     if cert.get("statement") == "discontinuities":  # the segment is a name: "L0" for the record's "L0 = [...]"
         cp = {k: v for k, v in cp.items() if k != "segment"}
         if not str(rec.get("segment", "")).startswith(f"{cert['parameters'].get('segment')} = "):
