@@ -416,7 +416,7 @@ const Experiment experiment{
         const auto t0 = Clock::now();
         const ArcL1Proof p = prove_arc_l1(kappa_lo, kappa_hi);
         time_row("arc L1 of Lemma 4's proof", since(t0));
-        const std::string statement = statement_arc_l1(p.kappa_lo, p.kappa_hi, p.eps_max);
+        const std::string statement = statement_arc_l1(p);
         if (p.verdict.proved) run.certificate("cert.lemma4.arc_l1", certificate_text(certificate_arc_l1(1.0, p, statement)));
         auto& c = certified_claim(out, "cert.lemma4.arc_l1", "Lemma 4 (proof)", statement, to_json(1.0, p), p.verdict.proved, &p.verdict);
         c.parameter_object(Json::object().set("q_over_a", Json::array().push(kappa_lo).push(kappa_hi)).set("b_over_a_max", p.eps_max));
@@ -434,7 +434,7 @@ const Experiment experiment{
         const auto tu = Clock::now();
         const Lemma4UniformProof u = prove_lemma4_uniform(kappa_lo, kappa_hi);
         time_row("Lemma 4 for every small b/a", since(tu));
-        const std::string su = statement_lemma4_uniform(u.kappa_lo, u.kappa_hi, u.eps_star);
+        const std::string su = statement_lemma4_uniform(u);
         if (u.verdict.proved) run.certificate("cert.lemma4.uniform_small_b", certificate_text(certificate_lemma4_uniform(1.0, u, su)));
         auto& cu = certified_claim(out, "cert.lemma4.uniform_small_b", "Lemma 4, Theorem 1", su, to_json(1.0, u), u.verdict.proved, &u.verdict);
         cu.parameter_object(Json::object().set("q_over_a", Json::array().push(kappa_lo).push(kappa_hi)).set("b_over_a_max", u.eps_star));

@@ -165,7 +165,7 @@ def rejects_arc_l1(cli, checker, what, d, bad):
         "g_bound": (g_hi_down, 1, "g in [g_lo, g_hi]"),
         "W_short": (lambda c: set_hex(c, "witnesses", "W", float.fromhex(c["witnesses"]["W"]["hex"]) / 2), 1, "stops within W"),
         "q_lower": (lambda c: c["parameters"]["q_over_a"]["lo"].update(hex=float.hex(0.6)), 1, "stops within W"),
-        "b_larger": (lambda c: set_hex(c, "parameters", "b_over_a_max", 0.0471), 1, "L1 not empty"),
+        "b_larger": (lambda c: set_hex(c, "parameters", "b_over_a_max", 0.2), 1, "stops within W"),
         "grid_short": (lambda c: c["witnesses"]["delta_cuts"].pop(), 1, "grid covers"),
     }
     change, want, word = cases[what]
@@ -180,9 +180,9 @@ def rejects_lemma4_uniform(cli, checker, what, d, bad):
     """The mutations of a lemma4-uniform certificate, each rejected with the step named."""
     path, _ = write_certificate(cli, "lemma4_uniform", d)
     cases = {  # name: (change, exit status, a word of the step the checker must name)
-        "b_larger": (lambda c: c["parameters"]["b_over_a_max"].update(hex=float.hex(1e-4)), 1, "(I5)"),
+        "b_larger": (lambda c: c["parameters"]["b_over_a_max"].update(hex=float.hex(4 * float.fromhex(c["parameters"]["b_over_a_max"]["hex"]))), 1, "(I"),
         "q_lower": (lambda c: c["parameters"]["q_over_a"]["lo"].update(hex=float.hex(0.5)), 1, "(I8)"),
-        "arc_W": (lambda c: c["witnesses"]["arc_l1"]["witnesses"]["W"].update(hex=float.hex(0.01)), 1, "stops within W"),
+        "arc_tau": (lambda c: c["witnesses"]["arc_l1"]["witnesses"]["tau"].__setitem__(0, float.hex(3.2)), 1, "landing precedes"),
         "arc_missing": (lambda c: c["witnesses"].pop("arc_l1"), 2, "arc_l1"),
     }
     change, want, word = cases[what]

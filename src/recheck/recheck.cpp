@@ -1295,9 +1295,10 @@ long check_periodic(const json& c, std::string& what) {
 
 // ---- arc-l1: the arc L1 = [197pi/100, t3) of the proof of Lemma 4 ------------------------------------
 
-/// A list of exact doubles, strictly increasing, starting at 0.
-std::vector<double> cuts(const json& j, const std::string& where) {
-  if (!j.is_array() || j.size() < 2) throw Malformed("'" + where + "' is not an array of at least 2 numbers");
+/// A list of exact doubles (the grid's cuts: at least two; whether they increase from 0 is a step).
+std::vector<double> cuts(const json& j, const std::string& where, bool grid = true) {
+  if (!j.is_array() || j.size() < (grid ? 2U : 1U))
+    throw Malformed("'" + where + "' is not an array of at least " + (grid ? "2 numbers" : "1 number"));
   std::vector<double> v;
   for (std::size_t i = 0; i < j.size(); ++i) v.push_back(exact_double(j[i], where + "[" + std::to_string(i) + "]"));
   return v;
@@ -1317,21 +1318,25 @@ long check_arc_l1(const json& c) {
   const json& p = field(c, "parameters", "");
   const json& k = field(p, "q_over_a", "parameters.");
   const double k_lo = parameter(k, "lo", "parameters.q_over_a."), k_hi = parameter(k, "hi", "parameters.q_over_a.");
-  const double eps_max = parameter(p, "b_over_a_max", "parameters.");
+  const double eps_max = parameter(p, "b_over_a_max", "parameters."), delta_max = parameter(p, "delta_max", "parameters.");
   const json& w = field(c, "witnesses", "");
+  const json& concl = field(w, "conclusion", "witnesses.");
+  if (!concl.is_string() || (concl.get<std::string>() != "stop_arc" && concl.get<std::string>() != "before_t0"))
+    throw Malformed("'witnesses.conclusion' is neither \"stop_arc\" nor \"before_t0\"");
+  const bool stop_arc = concl.get<std::string>() == "stop_arc";
   const double S = parameter(w, "S", "witnesses."), W = parameter(w, "W", "witnesses.");
   const double g_lo = parameter(w, "g_lo", "witnesses."), g_hi = parameter(w, "g_hi", "witnesses.");
   const double h_lo = parameter(w, "dH_lo", "witnesses."), h_hi = parameter(w, "dH_hi", "witnesses.");
   const std::vector<double> dc = cuts(field(w, "delta_cuts", "witnesses."), "witnesses.delta_cuts");
   const std::vector<double> sc = cuts(field(w, "s_cuts", "witnesses."), "witnesses.s_cuts");
-  const Iv Delta = 3.0 * pi() / Iv(100.0), sinD = sin(Delta), cosD = cos(Delta);
+  const Iv Delta(delta_max), sinD = sin(Delta), cosD = cos(Delta);
   st.require(0 < k_lo && k_lo <= k_hi && k_hi <= 1, "0 < q/a lo <= q/a hi <= 1");
-  st.require(eps_max > 0 && le(2.0 * Iv(eps_max), sinD), "0 < b_over_a_max and 2 b_over_a_max <= sin(3pi/100) (L1 not empty)");
-  st.require(S > 0 && S <= 1 && W > 0, "0 < S <= 1, W > 0");
-  bool grid = dc.front() == 0 && sc.front() == 0 && sc.back() == S && le(Delta, Iv(dc.back()));
+  st.require(eps_max > 0 && eps_max < 0.25 && delta_max > 0 && delta_max <= 0.5, "0 < b_over_a_max < 1/4 and 0 < delta_max <= 1/2");
+  st.require(S > 0 && S <= 1 && (stop_arc || W > 0), "0 < S <= 1, W > 0");
+  bool grid = dc.front() == 0 && sc.front() == 0 && sc.back() == S && dc.back() == delta_max;
   for (std::size_t i = 1; i < dc.size(); ++i) grid = grid && dc[i] > dc[i - 1];
   for (std::size_t i = 1; i < sc.size(); ++i) grid = grid && sc[i] > sc[i - 1];
-  st.require(grid, "the grid covers [0, 3pi/100] x [0, S] (cuts increasing from 0)");
+  st.require(grid, "the grid covers [0, delta_max] x [0, S] (cuts increasing from 0)");
   for (std::size_t i = 0; i + 1 < dc.size(); ++i) {
     const Iv d(dc[i], dc[i + 1]), sd = sin(d), cd = cos(d);
     for (std::size_t j = 0; j + 1 < sc.size(); ++j) {
@@ -1350,12 +1355,27 @@ long check_arc_l1(const json& c) {
   }
   st.require(g_lo > 0 && h_lo > 0, "g_lo > 0 and dH_lo > 0 (H increasing: one simple contact)");
   const Iv s_star = sinD / (2.0 * Iv(g_lo));
-  st.require(le(s_star, Iv(S)), "the contact lies within S: sin(3pi/100) / (2 g_lo) <= S");
-  st.require(lt(2.0 * Iv(g_hi), cosD), "the contact is past t3: 2 g_hi < cos(3pi/100)");
-  const Iv x1 = sqr(s_star) * Iv(h_hi), SW = Iv(S) + Iv(W), room = Iv(k_lo) - sinD, gamma = room - sin(SW);
+  st.require(le(s_star, Iv(S)), "the contact lies within S: sin(delta_max) / (2 g_lo) <= S");
+  st.require(lt(2.0 * Iv(g_hi), cosD), "the contact is past t3: 2 g_hi < cos(delta_max)");
+  const Iv room = Iv(k_lo) - 2.0 * Iv(eps_max);
+  if (stop_arc) {  // per row: at 2pi + tau, l_hi < tau < pi, u = x1 + (2 b/a - q/a)(tau - l) - cos(tau) + cos(l) < 0, l = theta1 - 2pi
+    const std::vector<double> tau = cuts(field(w, "tau", "witnesses."), "witnesses.tau", false);
+    st.require(tau.size() + 1 == dc.size(), "one tau per row of the grid");
+    for (std::size_t i = 0; i + 1 < dc.size(); ++i) {
+      const Iv s_row = sin(Iv(dc[i + 1])) / (2.0 * Iv(g_lo));
+      const Iv l = hull(-Iv(dc[i + 1]), s_row - Iv(dc[i]));
+      const Iv T(tau[i]);
+      const Iv u = sqr(s_row) * Iv(h_hi) - room * (T - l) - cos(T) + cos(l);
+      const std::string row = "the row delta in [" + std::to_string(dc[i]) + ", " + std::to_string(dc[i + 1]) + "]";
+      st.require(lt(l, T) && lt(T, pi()), "the landing precedes 2pi + tau < 3pi on " + row);
+      st.require(u.negative(), "the progression stops before 2pi + tau (u < 0) on " + row);
+    }
+    return st.n;
+  }
+  const Iv x1 = sqr(s_star) * Iv(h_hi), SW = Iv(S) + Iv(W), gamma = room - sin(SW);
   st.require(lt(SW, 0.5 * pi()), "S + W < pi/2");
   st.require(gamma.positive() && lt(x1, gamma * Iv(W)), "the progression stops within W: gamma W > x1_max, gamma > 0");
-  st.require(room.positive() && lt(room, Iv(1.0)) && lt(SW, asin(room)), "the stop precedes t0 + 2pi: S + W < asin(q/a lo - sin(3pi/100))");
+  st.require(room.positive() && lt(room, Iv(1.0)) && lt(SW, asin(room)), "the stop precedes t0 + 2pi: S + W < asin(q/a lo - 2 b_over_a_max)");
   return st.n;
 }
 
@@ -1386,24 +1406,26 @@ long check_lemma4_uniform(const json& c) {
   st.n += check_arc_l1(arc);
   const json& ap = field(arc, "parameters", "witnesses.arc_l1.");
   const json& ak = field(ap, "q_over_a", "witnesses.arc_l1.parameters.");
+  const double w_lo = parameter(p, "w_lo", "parameters."), w_hi = parameter(p, "w_hi", "parameters.");
   st.require(parameter(ak, "lo", "witnesses.arc_l1.parameters.q_over_a.") <= k_lo &&
                  parameter(ak, "hi", "witnesses.arc_l1.parameters.q_over_a.") >= k_hi &&
-                 parameter(ap, "b_over_a_max", "witnesses.arc_l1.parameters.") >= eps_star,
-             "(I8) the arc L1 is proved for these q/a and every b/a <= b_over_a_max");
+                 parameter(ap, "b_over_a_max", "witnesses.arc_l1.parameters.") >= eps_star &&
+                 parameter(ap, "delta_max", "witnesses.arc_l1.parameters.") >= w_hi,
+             "(I8) the arc [2pi - w_hi, t3) is proved for these q/a and every b/a <= b_over_a_max");
   st.require(0 < k_lo && k_lo <= k_hi && k_hi <= 1 && eps_star > 0, "0 < q/a lo <= q/a hi <= 1, b_over_a_max > 0");
-  const Iv PI = pi(), w1 = PI / Iv(100.0), w2 = PI / Iv(50.0), E(eps_star), eps(0.0, eps_star);
-  st.require(le(6.0 * PI, (cos(w1) - cos(w2)) / E - w2), "(I5) h(101pi/100) - h(51pi/50) >= 6 pi at b_over_a_max (so for every smaller b/a)");
-  st.require(lt(2.0 * E, sin(w1)), "(I1) 2 b_over_a_max < sin(pi/100)");
-  Num wa, wb;
-  mpfi_get_left(wa.x, w1.x);
-  mpfi_get_right(wb.x, w2.x);
-  const double a0 = mpfr_get_d(wa.x, MPFR_RNDD), b0 = mpfr_get_d(wb.x, MPFR_RNDU);
+  st.require(0 < w_lo && w_lo < w_hi && w_hi <= 0.5, "0 < w_lo < w_hi <= 1/2: the segment [pi + w_lo, pi + w_hi]");
+  const Iv PI = pi(), w1(w_lo), w2(w_hi), E(eps_star), eps(0.0, eps_star);
+  st.require(le(6.0 * PI, (cos(w1) - cos(w2)) / E - 2.0 * (w2 - w1)),
+             "(I5) h(pi + w_lo) - h(pi + w_hi) >= 6 pi at b_over_a_max (so for every smaller b/a)");
+  st.require(lt(2.0 * E, sin(w1)), "(I1) 2 b_over_a_max < sin(w_lo)");
+  const double a0 = w_lo, b0 = w_hi;
   for (int i = 0; i < n; ++i) {
     const double a = a0 + (b0 - a0) * i / n, b = i + 1 == n ? b0 : a0 + (b0 - a0) * (i + 1) / n;
     const Iv W(a, b), sw = sin(W), cw = cos(W);
     const std::string cell = "w in [" + std::to_string(a) + ", " + std::to_string(b) + "]";
     st.require((eps - 0.5 * sw).negative(), "(I2) b/a - sin(w)/2 < 0 on " + cell);
-    st.require((eps + Iv(1.0) - cw - sw).negative(), "(I3) b/a + 1 - cos w - sin w < 0 on " + cell);
+    // 1 - cos w - sin w decreases on [0, pi/4] (derivative sin w - cos w < 0): its largest value is at w = a.
+    st.require(b <= 0.75 && (eps + Iv(1.0) - cos(Iv(a)) - sin(Iv(a))).negative(), "(I3) b/a + 1 - cos w - sin w < 0 on " + cell);
     st.require(le(2.0 * E, cw), "(I3) s0 = cos(w)/(b/a) >= 2 on " + cell);
     for (int j = 0; j < n; ++j) {
       const double s1 = static_cast<double>(j) / n, s2 = j + 1 == n ? 1.0 : static_cast<double>(j + 1) / n;
@@ -1417,7 +1439,7 @@ long check_lemma4_uniform(const json& c) {
     }
   }
   const Iv s_min = cos(w2) / E - Iv(1.0);
-  st.require(lt(2.0 * cot(PI / Iv(200.0)), s_min), "(I6) s0 - 1 > 2 cot(pi/200)");
+  st.require(lt(2.0 * cot(0.5 * w1), s_min), "(I6) s0 - 1 > 2 cot(w_lo/2)");
   st.require(lt(Iv(2.0), (Iv(k_lo) - 2.0 * E) * s_min), "(I7) (q/a - 2 b/a)(s0 - 1) > 2");
   return st.n;
 }

@@ -53,7 +53,7 @@ std::string statement_covering(const certified::ParameterBox& box);
 std::string statement_periodic(int m);
 std::string statement_superstable();
 std::string statement_window();
-std::string statement_arc_l1(double kappa_lo, double kappa_hi, double eps_max);
-std::string statement_lemma4_uniform(double kappa_lo, double kappa_hi, double eps_star);
+std::string statement_arc_l1(const certified::ArcL1Proof& p);
+std::string statement_lemma4_uniform(const certified::Lemma4UniformProof& p);
 
 }  // namespace dfchaos::certify

@@ -160,6 +160,7 @@ kit::Json certificate_arc_l1(double a, const certified::ArcL1Proof& p, const std
   par.set("a", exact_number(a));
   par.set("q_over_a", exact_range(Range{p.kappa_lo, p.kappa_hi}));
   par.set("b_over_a_max", exact_number(p.eps_max));
+  par.set("delta_max", exact_number(p.delta_max));
   j.set("parameters", par);
   // The grid: the pieces run over delta cells, and over s cells inside each.
   std::vector<double> dc{p.pieces.front().delta_lo}, sc{p.pieces.front().s_lo};
@@ -171,10 +172,16 @@ kit::Json certificate_arc_l1(double a, const certified::ArcL1Proof& p, const std
   for (double d : dc) dj.push(hex_double(d));
   for (double s : sc) sj.push(hex_double(s));
   kit::Json w = kit::Json::object();
+  w.set("conclusion", p.stop_arc ? "stop_arc" : "before_t0");
   w.set("S", exact_number(p.S)).set("W", exact_number(p.W));
   w.set("g_lo", exact_number(p.g_lo)).set("g_hi", exact_number(p.g_hi));
   w.set("dH_lo", exact_number(p.h_lo)).set("dH_hi", exact_number(p.h_hi));
   w.set("delta_cuts", dj).set("s_cuts", sj);
+  if (p.stop_arc) {
+    kit::Json tj = kit::Json::array();
+    for (double t : p.tau) tj.push(hex_double(t));
+    w.set("tau", tj);
+  }
   j.set("witnesses", w);
   return j;
 }
@@ -186,10 +193,12 @@ kit::Json certificate_lemma4_uniform(double a, const certified::Lemma4UniformPro
   par.set("a", exact_number(a));
   par.set("q_over_a", exact_range(Range{p.kappa_lo, p.kappa_hi}));
   par.set("b_over_a_max", exact_number(p.eps_star));
+  par.set("w_lo", exact_number(p.w_a));
+  par.set("w_hi", exact_number(p.w_b));
   j.set("parameters", par);
   kit::Json w = kit::Json::object();
   w.set("pieces", static_cast<long long>(p.w_pieces));
-  w.set("arc_l1", certificate_arc_l1(a, p.arc_l1, statement_arc_l1(p.arc_l1.kappa_lo, p.arc_l1.kappa_hi, p.arc_l1.eps_max)));
+  w.set("arc_l1", certificate_arc_l1(a, p.arc_l1, statement_arc_l1(p.arc_l1)));
   j.set("witnesses", w);
   return j;
 }

@@ -118,7 +118,7 @@ Result certify(const Request& r) {
       if (c.proved && r.certificate) c.certificate = certificate_arc_l1(a, p, claim_of(c));
       return c;
     }
-    const Lemma4UniformProof p = prove_lemma4_uniform(k_lo, k_hi);
+    const Lemma4UniformProof p = best_lemma4_uniform(k_lo, k_hi);
     Result c{p.verdict.proved, to_json(a, p)};
     if (c.proved && r.certificate) c.certificate = certificate_lemma4_uniform(a, p, claim_of(c));
     return c;

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "certify/json.hpp"
 
+#include <cmath>
+
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -67,22 +69,31 @@ std::string statement_b0(double a, double q, double b_low) {
   return "Lemma 1 holds for every b in (0, " + format_double(b_low) + "] at a = " + format_double(a) + ", q = " + format_double(q) +
          " (u(t2) < 0 proved over b-balls covering [0, b_low]): b0(q) >= " + format_double(b_low) + ".";
 }
-std::string statement_arc_l1(double kappa_lo, double kappa_hi, double eps_max) {
-  return "The arc L1 = [197pi/100, t3) of the proof of Lemma 4, for every a > 0 and every b, q with 0 < b/a <= " + format_double(eps_max) +
-         " and q/a in [" + format_double(kappa_lo) + ", " + format_double(kappa_hi) +
-         "]: from rest at any theta in L1 the mass flies, hits the delimiter once, transversally and after t3 (the first zero "
-         "theta1 of G1, Eq. 11, is simple and theta1 > t3), and the progression that follows stops at theta2 in (t3, t0 + 2pi) "
-         "(Eq. 17): the mass then waits for t0 + 2pi, so T = t2 on L1 wherever Lemma 1 holds. b/a <= b_over_a_max is all the "
-         "smallness needed (beyond it L1 is empty).";
+std::string statement_arc_l1(const ArcL1Proof& p) {
+  const bool paper_arc = !p.stop_arc && p.delta_max >= 0.03 * M_PI;  // the default grid ends at 3pi/100 rounded up
+  const std::string arc = paper_arc
+                              ? "The arc L1 = [197pi/100, t3) of the proof of Lemma 4"
+                              : "The arc [2pi - Delta, t3), Delta = " + format_double(p.delta_max) + " (the arc L1 of the proof of Lemma 4 widened)";
+  return arc + ", for every a > 0 and every b, q with 0 < b/a <= " + format_double(p.eps_max) + " and q/a in [" + format_double(p.kappa_lo) + ", " +
+         format_double(p.kappa_hi) +
+         "]: from rest at any theta in it the mass flies, hits the delimiter once, transversally and after t3 (the first zero "
+         "theta1 of G1, Eq. 11, is simple and theta1 > t3), and the progression that follows stops at theta2 in " +
+         (p.stop_arc ? std::string("(t3, 3pi), inside the stop arc [t3, t2 + 2pi) (Eq. 17): T = t2 there wherever Lemma 1 holds.")
+                     : std::string("(t3, t0 + 2pi) (Eq. 17): the mass then waits for t0 + 2pi, so T = t2 on it wherever Lemma 1 holds.")) +
+         (paper_arc ? " b/a <= b_over_a_max is all the smallness needed (beyond it L1 is empty)." : "");
 }
-std::string statement_lemma4_uniform(double kappa_lo, double kappa_hi, double eps_star) {
-  return "Lemma 4 (hence Theorem 1) for every a > 0 and every b, q with 0 < b/a <= " + format_double(eps_star) + " and q/a in [" +
-         format_double(kappa_lo) + ", " + format_double(kappa_hi) +
-         "], by the paper's construction on L2 = [101pi/100, 51pi/50]: the inequalities (I1)-(I8) of docs/certified.md are proved in "
-         "ball arithmetic for all such b/a at once (L2 holds at least three first-contact tangencies z_1 < z_2 < z_3 of T1, no "
-         "other discontinuity, theta2 decreases along each branch, and from each T1(z_i) in L1 the progression stops in (t3, t0 + "
-         "2pi)); by the argument written there, T decreases continuously on a segment [z_i, theta_c] from T(z_i) >= 99pi/50 to t2, "
-         "i = 1, 2. The inequalities are certified; the argument that they imply Lemma 4 is a proof on paper, not a computation.";
+std::string statement_lemma4_uniform(const Lemma4UniformProof& p) {
+  const bool paper_L2 = p.w_a <= 0.01 * M_PI && p.w_b >= 0.02 * M_PI && p.w_b < 0.0629;  // the default: L2 widened to doubles
+  const std::string segment = paper_L2 ? "the paper's L2 = [101pi/100, 51pi/50]"
+                                       : "the segment [pi + w_lo, pi + w_hi], w_lo = " + format_double(p.w_a) + ", w_hi = " + format_double(p.w_b) +
+                                             " (wider than the paper's L2)";
+  return "Lemma 4 (hence Theorem 1) for every a > 0 and every b, q with 0 < b/a <= " + format_double(p.eps_star) + " and q/a in [" +
+         format_double(p.kappa_lo) + ", " + format_double(p.kappa_hi) + "], by the paper's construction on " + segment +
+         ": the inequalities (I1)-(I8) of docs/certified.md are proved in ball arithmetic for all such b/a at once (the segment "
+         "holds at least three first-contact tangencies z_1 < z_2 < z_3 of T1 and no other discontinuity, theta2 decreases along "
+         "each branch, and from each T1(z_i) the progression stops in the stop arc); by the argument written there, T decreases "
+         "continuously on a segment [z_i, theta_c] from T(z_i) = T1(z_i) mod 2pi > 3pi/2 to t2, i = 1, 2. The inequalities are "
+         "certified; the argument that they imply Lemma 4 is a proof on paper, not a computation.";
 }
 std::string statement_discontinuities(const std::string& segment, std::size_t n) {
   return "Lemma 2 on " + segment + " at the double values of a, b: T1 has exactly " + std::to_string(n) +
@@ -227,10 +238,11 @@ Json to_json(double a, double q, const WindowProof& w) {
 
 Json to_json(double a, const ArcL1Proof& p) {
   Json j = Json::object();
-  j.set("statement", statement_arc_l1(p.kappa_lo, p.kappa_hi, p.eps_max));
+  j.set("statement", statement_arc_l1(p));
   j.set("parameters", Json::object().set("a", a).set("q_over_a", Json::array().push(p.kappa_lo).push(p.kappa_hi)));
   add_verdict(j, p.verdict);
-  j.set("b_over_a_max", p.eps_max).set("S", p.S).set("W", p.W);
+  j.set("b_over_a_max", p.eps_max).set("delta_max", p.delta_max).set("conclusion", p.stop_arc ? "stop_arc" : "before_t0");
+  j.set("S", p.S).set("W", p.W);
   j.set("g", Json::array().push(p.g_lo).push(p.g_hi)).set("dH", Json::array().push(p.h_lo).push(p.h_hi));
   if (p.verdict.proved) j.set("x1_max", ball_json(p.x1_max, 8)).set("gamma", ball_json(p.gamma, 8)).set("t0_min", ball_json(p.t0_min, 8));
   j.set("pieces", static_cast<long long>(p.pieces.size()));
@@ -239,7 +251,8 @@ Json to_json(double a, const ArcL1Proof& p) {
 
 Json to_json(double a, const Lemma4UniformProof& p) {
   Json j = Json::object();
-  j.set("statement", statement_lemma4_uniform(p.kappa_lo, p.kappa_hi, p.eps_star));
+  j.set("statement", statement_lemma4_uniform(p));
+  j.set("segment", Json::array().push(p.w_a).push(p.w_b));
   j.set("parameters", Json::object().set("a", a).set("q_over_a", Json::array().push(p.kappa_lo).push(p.kappa_hi)));
   add_verdict(j, p.verdict);
   j.set("b_over_a_max", p.eps_star);

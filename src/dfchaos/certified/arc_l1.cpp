@@ -2,6 +2,7 @@
 #include "dfchaos/certified/arc_l1.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "dfchaos/certified/next_hit.hpp"
@@ -21,20 +22,28 @@ std::string num(const Ball& x) { return x.str(6); }
 
 }  // namespace
 
-ArcL1Proof prove_arc_l1(double kappa_lo, double kappa_hi, int delta_pieces, int s_pieces) {
+ArcL1Proof prove_arc_l1(double kappa_lo, double kappa_hi, const ArcL1Options& opt) {
   ArcL1Proof r;
   r.kappa_lo = kappa_lo;
   r.kappa_hi = kappa_hi;
+  r.S = opt.S;
+  r.stop_arc = opt.stop_arc;
   const auto fail = [&r](const std::string& step, const std::string& detail) {
     r.verdict = Outcome::fail("arc L1: " + step, detail);
     return r;
   };
+  const int delta_pieces = opt.delta_pieces, s_pieces = opt.s_pieces;
   if (!(kappa_lo > 0 && kappa_lo <= kappa_hi && kappa_hi <= 1)) return fail("parameters", "needs 0 < q/a lo <= hi <= 1");
   if (delta_pieces < 1 || s_pieces < 1 || delta_pieces > 4096 || s_pieces > 4096) return fail("parameters", "pieces in 1..4096");
-  const Ball Delta = Ball::pi() * 3.0 / 100.0;
+  if (!(opt.S > 0 && opt.S <= 1)) return fail("parameters", "0 < S <= 1");
+  const bool paper_arc = std::isnan(opt.delta_max);
+  if (!paper_arc && !(opt.delta_max > 0 && opt.delta_max <= 0.5)) return fail("parameters", "0 < Delta <= 0.5");
+  const Ball Delta = paper_arc ? Ball::pi() * 3.0 / 100.0 : Ball(opt.delta_max);
   const Ball sinD = sin(Delta);
-  r.eps_max = (sinD / 2.0).lower();  // 2 eps_max <= sin(Delta): t3 >= 197 pi / 100 (L1 not empty)
-  const double delta_end = Delta.upper(), S = r.S;
+  r.delta_max = paper_arc ? Delta.upper() : opt.delta_max;
+  r.eps_max = std::isnan(opt.eps_max) ? (sinD / 2.0).lower() : opt.eps_max;  // default: 2 eps_max <= sin(Delta)
+  if (!(r.eps_max > 0 && r.eps_max < 0.25)) return fail("parameters", "0 < b/a max < 1/4");
+  const double delta_end = r.delta_max, S = r.S;
 
   // g and H' = g + s dg/ds on the pieces of [0, Delta] x [0, S].
   Ball g_all, dH_all;
@@ -68,11 +77,37 @@ ArcL1Proof prove_arc_l1(double kappa_lo, double kappa_hi, int delta_pieces, int 
   const Ball s_star_max = A_max / Ball(r.g_lo);
   if (!le(s_star_max, Ball(S))) return fail("contact within S", "A_max/g_lo = " + num(s_star_max));
   // 2. The contact is past t3: cos(Delta) > 2 g_hi.
-  if (!lt(Ball(2.0 * r.g_hi), cos(Delta))) return fail("contact past t3", "2 g_hi = " + num(Ball(2.0 * r.g_hi)) + " vs cos(3 pi/100)");
-  // 3. The progression stops within W: gamma W > x1_max, gamma = kappa_lo - sin(Delta) - sin(S + W) > 0.
-  r.x1_max = sqr(s_star_max) * Ball(r.h_hi);
+  if (!lt(Ball(2.0 * r.g_hi), cos(Delta))) return fail("contact past t3", "2 g_hi = " + num(Ball(2.0 * r.g_hi)) + " vs cos(Delta)");
+  r.x1_max = sqr(s_star_max) * Ball(r.h_hi);  // the impact velocity x1 = s*^2 H'(s*)
   const Ball k_lo(kappa_lo);
-  const Ball room = k_lo - sinD;  // kappa - 2 eps >= this
+  const Ball room = k_lo - 2.0 * Ball(r.eps_max);  // q/a - 2 b/a >= this
+  if (opt.stop_arc) {
+    // 3'. Per row [d1, d2] of the grid: s* <= sin(d2)/(2 g_lo), the landing l = theta1 - 2pi lies in
+    // [-d2, s* - d1] and x1 <= s*^2 h_hi. A time 2pi + tau (l < tau < pi) with progression velocity
+    // u = x1 + (2 eps - q/a)(tau - l) - cos(tau) + cos(l) < 0 puts the first stop in (theta1, 2pi + tau),
+    // inside the stop arc (t3, t2 + 2pi). tau is searched on a grid of (l_hi, pi) (bounded).
+    for (int i = 0; i < delta_pieces; ++i) {
+      const ArcL1Piece& row = r.pieces[static_cast<std::size_t>(i) * static_cast<std::size_t>(s_pieces)];
+      const Ball s_row = sin(Ball(row.delta_hi)) / 2.0 / Ball(r.g_lo);
+      const Ball l = Ball::hull(-Ball(row.delta_hi), s_row - Ball(row.delta_lo));
+      const Ball x1 = sqr(s_row) * Ball(r.h_hi);
+      const double l_hi = l.upper();
+      double tau = 0.0 / 0.0;
+      Ball u;
+      for (int m = 1; m <= 256 && std::isnan(tau); ++m) {
+        const double t = l_hi + (3.1415926 - l_hi) * m / 256;  // 3.1415926 < pi
+        u = x1 - room * (Ball(t) - l) - cos(Ball(t)) + cos(l);
+        if (u.is_negative()) tau = t;
+      }
+      if (std::isnan(tau))
+        return fail("stop before t2 + 2pi",
+                    "no time in (l, pi) with u < 0 on the row delta in [" + std::to_string(row.delta_lo) + ", " + std::to_string(row.delta_hi) + "]");
+      r.tau.push_back(tau);
+    }
+    r.verdict = Outcome::ok();
+    return r;
+  }
+  // 3. The progression stops within W: gamma W > x1_max, gamma = kappa_lo - 2 eps_max - sin(S + W) > 0.
   // W from gamma(W) W = x1_max, by a few fixed-point steps from W = 0 (W grows monotonically; bounded).
   double W = 0;
   for (int it = 0; it < 50; ++it) {
@@ -87,8 +122,8 @@ ArcL1Proof prove_arc_l1(double kappa_lo, double kappa_hi, int delta_pieces, int 
   r.gamma = room - sin(SW);
   if (!lt(SW, Ball::pi() / 2.0) || !r.gamma.is_positive() || !lt(r.x1_max, r.gamma * Ball(r.W)))
     return fail("progression stops within W", "gamma = " + num(r.gamma) + ", W = " + num(Ball(r.W)));
-  // 4. ... before t0 + 2 pi: S + W <= asin(kappa_lo - sin(Delta)) <= t0.
-  if (!lt(room, Ball(1.0))) return fail("t0 exists", "q/a lo - sin(3 pi/100) >= 1");
+  // 4. ... before t0 + 2 pi: S + W <= asin(kappa_lo - 2 eps_max) <= t0.
+  if (!lt(room, Ball(1.0))) return fail("t0 exists", "q/a lo - 2 b/a max >= 1");
   r.t0_min = asin(room);
   if (!lt(SW, r.t0_min)) return fail("stop before t0", "S + W = " + num(SW) + ", t0 >= " + num(r.t0_min));
   r.verdict = Outcome::ok();

@@ -39,6 +39,24 @@
 
 namespace dfchaos::certified {
 
+/// Options of prove_arc_l1(): the defaults prove the paper's statement on its arc.
+struct ArcL1Options {
+  /// \f$\Delta\f$: the arc is \f$[2\pi - \Delta, t_3)\f$. NaN: \f$3\pi/100\f$ (the paper's \f$L_1\f$, the grid ending at the
+  /// double just above it); else a double in (0, 0.5].
+  double delta_max = 0.0 / 0.0;
+  /// The bound of b/a. NaN: the largest double with \f$2\varepsilon \le \sin\Delta\f$ (beyond it the arc is empty).
+  double eps_max = 0.0 / 0.0;
+  double S = 0.3;  ///< flights considered: \f$s \in [0, S]\f$, S <= 1
+  /// false: the paper's conclusion, the stop lies in \f$(t_3, t_0 + 2\pi)\f$ (steps 3-4 of the file comment).
+  /// true: the weaker \f$\theta_2 \in (t_3, 2\pi + \tau) \subset (t_3, t_2 + 2\pi)\f$, the stop arc, shown per row of the
+  /// grid by a time \f$\tau < \pi\f$ at which the progression's velocity
+  /// \f$u = x_1 + (2\varepsilon - q/a)(2\pi + \tau - \theta_1) - \cos\tau + \cos\theta_1 < 0\f$ (Eq. 17; increasing in
+  /// \f$\varepsilon\f$ and \f$x_1\f$, decreasing in q/a). Enough for lemma4_uniform.hpp, and it reaches larger \f$\Delta\f$.
+  bool stop_arc = false;
+  int delta_pieces = 16;  ///< rows of the grid (pieces of \f$[0, \Delta]\f$)
+  int s_pieces = 16;      ///< columns (pieces of [0, S])
+};
+
 /// One piece \f$[\delta_1, \delta_2] \times [s_1, s_2]\f$ of the cover and the enclosures of g and H' on it.
 struct ArcL1Piece {
   double delta_lo = 0;  ///< \f$\delta_1\f$
@@ -52,12 +70,16 @@ struct ArcL1Piece {
 /// The statement of the file comment over \f$\varepsilon \in (0, \varepsilon_{\max}]\f$ and
 /// \f$q/a \in [\kappa_{lo}, \kappa_{hi}]\f$.
 struct ArcL1Proof {
-  Outcome verdict;                 ///< proved: every start of L1 ends its first progression in (t3, t0 + 2 pi)
-  double kappa_lo = 0;             ///< the box of q/a: lower end
-  double kappa_hi = 0;             ///< upper end
-  double eps_max = 0;              ///< \f$\varepsilon_{\max}\f$: the statement holds for every \f$0 < b/a \le\f$ this
-  double S = 0.3;                  ///< the flights considered: \f$s \in [0, S]\f$
-  double W = 0;                    ///< the progression stops within W of the impact
+  Outcome verdict;        ///< proved: every start of L1 ends its first progression in (t3, t0 + 2 pi)
+  double kappa_lo = 0;    ///< the box of q/a: lower end
+  double kappa_hi = 0;    ///< upper end
+  double delta_max = 0;   ///< \f$\Delta\f$ as the double that ends the grid: the arc is \f$[2\pi - \Delta, t_3)\f$
+  bool stop_arc = false;  ///< the weaker conclusion (ArcL1Options::stop_arc) was proved
+  double eps_max = 0;     ///< \f$\varepsilon_{\max}\f$: the statement holds for every \f$0 < b/a \le\f$ this
+  double S = 0.3;         ///< the flights considered: \f$s \in [0, S]\f$
+  double W = 0;           ///< the progression stops within W of the impact (the paper\'s conclusion)
+  /// (stop_arc) per row of the grid, tau with the progression velocity u < 0 at 2pi + tau (the stop lies before)
+  std::vector<double> tau;
   double g_lo = 0;                 ///< \f$\min g\f$ (a double below every enclosure)
   double g_hi = 0;                 ///< \f$\max g\f$
   double h_lo = 0;                 ///< \f$\min H'\f$
@@ -69,7 +91,7 @@ struct ArcL1Proof {
 };
 
 /// Proves the statement of the file comment for q/a in [kappa_lo, kappa_hi] (0 < kappa_lo <= kappa_hi <= 1),
-/// splitting \f$[0, \Delta] \times [0, S]\f$ into `delta_pieces` x `s_pieces` pieces.
-ArcL1Proof prove_arc_l1(double kappa_lo, double kappa_hi, int delta_pieces = 16, int s_pieces = 16);
+/// on the grid of `opt`.
+ArcL1Proof prove_arc_l1(double kappa_lo, double kappa_hi, const ArcL1Options& opt = {});
 
 }  // namespace dfchaos::certified

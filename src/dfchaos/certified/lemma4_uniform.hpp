@@ -39,11 +39,24 @@
 
 namespace dfchaos::certified {
 
+/// Options of prove_lemma4_uniform(). The argument works on any segment \f$L = [\pi + w_a, \pi + w_b]\f$
+/// whose landing points \f$2\pi - w\f$ lie in the arc of (I8): wider segments hold more tangencies, so
+/// (I5) holds up to larger b/a.
+struct Lemma4UniformOptions {
+  double w_a = 0.0 / 0.0;  ///< NaN (with w_b): the paper's \f$L_2\f$, \f$w \in [\pi/100, \pi/50]\f$; else a double
+  double w_b = 0.0 / 0.0;  ///< the upper end (a double, 0 < w_a < w_b <= 0.5)
+  /// The bound of b/a. NaN: the largest double with (I5) on the segment.
+  double eps_max = 0.0 / 0.0;
+  int pieces = 16;  ///< pieces in w and in u (and s)
+};
+
 /// The inequalities (I1)-(I8) of the file comment for every b/a in (0, eps_star] and q/a in [kappa_lo, kappa_hi].
 struct Lemma4UniformProof {
   Outcome verdict;             ///< proved: every inequality, for every b/a in (0, eps_star]
   double kappa_lo = 0;         ///< the box of q/a: lower end
   double kappa_hi = 0;         ///< upper end
+  double w_a = 0;              ///< the segment is [pi + w_a, pi + w_b] (the doubles that end its grid)
+  double w_b = 0;              ///< its upper end
   double eps_star = 0;         ///< the bound: the largest double with (I5), \f$(\cos(\pi/100) - \cos(\pi/50))/(6\pi + \pi/50)\f$ rounded down
   int w_pieces = 0;            ///< pieces of \f$[\pi/100, \pi/50]\f$ in (I2)-(I4)
   int u_pieces = 0;            ///< pieces of \f$[-1, 0]\f$ in (I4) (and of \f$[0, 1]\f$ in (I2))
@@ -55,7 +68,13 @@ struct Lemma4UniformProof {
   ArcL1Proof arc_l1;           ///< (I8)
 };
 
-/// Proves (I1)-(I8) with `pieces` pieces in w and in u (and s).
-Lemma4UniformProof prove_lemma4_uniform(double kappa_lo, double kappa_hi, int pieces = 16);
+/// Proves (I1)-(I8) for q/a in [kappa_lo, kappa_hi] on the segment of `opt`.
+Lemma4UniformProof prove_lemma4_uniform(double kappa_lo, double kappa_hi, const Lemma4UniformOptions& opt = {});
+
+/// The largest bound of b/a found for q/a in [kappa_lo, kappa_hi]: for each w_b on a grid of
+/// [0.05, 0.33] (step 0.02), a bisection in log(b/a) over [1e-5, 4e-3] with w_a just above the
+/// smallest (I6) and (I1) allow; the best proved one is returned (any proved one is a valid proof, the
+/// search only chooses). Not proved when none is. Bounded: at most 15 x 12 proofs.
+Lemma4UniformProof best_lemma4_uniform(double kappa_lo, double kappa_hi);
 
 }  // namespace dfchaos::certified
