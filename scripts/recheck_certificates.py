@@ -94,6 +94,7 @@ def bind_region(path, cert, claim, part):
 # a file's own statement, so without this a valid proof of another statement could stand for a claim.
 REQUIRED_STATEMENT = [
     (r"cert\.thm1\.region$", "coverings"),
+    (r"cert\.thm1\.uniform_band$", "lemma4-uniform"),
     (r"cert\.sec6\.periodic\.", "periodic"),
     (r"cert\.sec7\.entropy_graph\.", "entropy"),
     (r"cert\.thm2\.window\d+$", "window"),
@@ -139,6 +140,11 @@ def bind(path, cert, claim, part):
         if part not in recs:
             return f"part '{part}' is none of the claim's proofs ({', '.join(recs)})"
         rec = recs[part]
+    elif "columns" in ev and cert.get("statement") == "lemma4-uniform":  # one certificate per column, named by its q/a
+        recs = {f"q{float(r['parameters']['q_over_a'][0]):.2f}": r for r in ev["columns"]}
+        if part not in recs:
+            return f"part '{part}' is none of the claim's columns ({', '.join(recs)})"
+        rec = recs[part]
     elif part is not None:
         return f"part '{part}' given, but the claim rests on one proof"
     else:
@@ -157,8 +163,13 @@ def bind(path, cert, claim, part):
         return "its claim text is neither the claim's statement nor its record's"
     cp, rp = cert.get("parameters", {}), rec.get("parameters") or claim.get("parameters", {})
     if cert.get("statement") in ("arc-l1", "lemma4-uniform"):  # ratios: a, the box of q/a and the bound of b/a
-        if set(cp) != {"a", "q_over_a", "b_over_a_max"} or set(rp) != {"a", "q_over_a"}:
-            return f"parameters {sorted(cp)} / record {sorted(rp)} are not a, q_over_a, b_over_a_max"
+        extra = {"delta_max"} if cert.get("statement") == "arc-l1" else {"w_lo", "w_hi"}
+        if set(cp) != {"a", "q_over_a", "b_over_a_max"} | extra or set(rp) != {"a", "q_over_a"}:
+            return f"parameters {sorted(cp)} / record {sorted(rp)} are not a, q_over_a, b_over_a_max, {', '.join(sorted(extra))}"
+        if cert.get("statement") == "lemma4-uniform" and [exact(cp[k]["hex"]) for k in ("w_lo", "w_hi")] != [float(x) for x in rec["segment"]]:
+            return "its segment is not the claim's"
+        if cert.get("statement") == "arc-l1" and exact(cp["delta_max"]["hex"]) != float(rec["delta_max"]):
+            return "its arc is not the claim's"
         if exact(cp["a"]["hex"]) != float(rp["a"]):
             return "its a is not the claim's"
         if [exact(cp["q_over_a"][e]["hex"]) for e in ("lo", "hi")] != [float(x) for x in rp["q_over_a"]]:

@@ -1363,7 +1363,10 @@ long check_arc_l1(const json& c) {
     st.require(tau.size() + 1 == dc.size(), "one tau per row of the grid");
     for (std::size_t i = 0; i + 1 < dc.size(); ++i) {
       const Iv s_row = sin(Iv(dc[i + 1])) / (2.0 * Iv(g_lo));
-      const Iv l = hull(-Iv(dc[i + 1]), s_row - Iv(dc[i]));
+      // s* >= A/g_hi, A = (sin(delta) - 2 b/a)/2 >= max(0, (sin(d1) - 2 b_over_a_max)/2)
+      Iv a_min = 0.5 * (sin(Iv(dc[i])) - 2.0 * Iv(eps_max));
+      if (!a_min.positive()) a_min = Iv(0.0);
+      const Iv l = hull(a_min / Iv(g_hi) - Iv(dc[i + 1]), s_row - Iv(dc[i]));
       const Iv T(tau[i]);
       const Iv u = sqr(s_row) * Iv(h_hi) - room * (T - l) - cos(T) + cos(l);
       const std::string row = "the row delta in [" + std::to_string(dc[i]) + ", " + std::to_string(dc[i + 1]) + "]";

@@ -83,13 +83,15 @@ ArcL1Proof prove_arc_l1(double kappa_lo, double kappa_hi, const ArcL1Options& op
   const Ball room = k_lo - 2.0 * Ball(r.eps_max);  // q/a - 2 b/a >= this
   if (opt.stop_arc) {
     // 3'. Per row [d1, d2] of the grid: s* <= sin(d2)/(2 g_lo), the landing l = theta1 - 2pi lies in
-    // [-d2, s* - d1] and x1 <= s*^2 h_hi. A time 2pi + tau (l < tau < pi) with progression velocity
+    // [A_min/g_hi - d2, s* - d1] and x1 <= s*^2 h_hi. A time 2pi + tau (l < tau < pi) with progression velocity
     // u = x1 + (2 eps - q/a)(tau - l) - cos(tau) + cos(l) < 0 puts the first stop in (theta1, 2pi + tau),
     // inside the stop arc (t3, t2 + 2pi). tau is searched on a grid of (l_hi, pi) (bounded).
     for (int i = 0; i < delta_pieces; ++i) {
       const ArcL1Piece& row = r.pieces[static_cast<std::size_t>(i) * static_cast<std::size_t>(s_pieces)];
       const Ball s_row = sin(Ball(row.delta_hi)) / 2.0 / Ball(r.g_lo);
-      const Ball l = Ball::hull(-Ball(row.delta_hi), s_row - Ball(row.delta_lo));
+      // s* >= A/g_hi with A = (sin(delta) - 2 b/a)/2 >= (sin(d1) - 2 eps_max)/2 (when positive)
+      const Ball a_min = max(Ball(0.0), (sin(Ball(row.delta_lo)) - 2.0 * Ball(r.eps_max)) / 2.0);
+      const Ball l = Ball::hull(a_min / Ball(r.g_hi) - Ball(row.delta_hi), s_row - Ball(row.delta_lo));
       const Ball x1 = sqr(s_row) * Ball(r.h_hi);
       const double l_hi = l.upper();
       double tau = 0.0 / 0.0;
