@@ -9,7 +9,9 @@
 # Right (lemma4_coverage): the (q/a, b/a) grid itself, every point marked by what holds there: the
 # covering (b) found, and the paper's construction (a) going through. The thresholds of this panel
 # are grid values (not bisected): b0 is the last grid point of an unbroken column, drawn as steps;
-# beside them the band where certified_region proves the covering for every parameter of its boxes.
+# beside them the band where certified_region proves the covering for every parameter of its boxes,
+# and, per column of q/a (thm1_uniform_band), the whole range of b/a below the bound up to which the
+# covering is proved for every b/a at once (light fill from the panel's floor, the bound a black step).
 load figdir."/style.gp"
 set terminal cairolatex pdf input size 15cm,7cm
 set output "fig_thresholds.tex"
@@ -61,7 +63,13 @@ set mxtics 2
 set yrange [B_min/2 : B_max*2]
 # key outside the panel, on its right; the threshold of each q/a column is drawn over the width of its cell
 set key at screen 0.805, graph 1 left top reverse Left samplen 1.5 spacing 1.2 nobox
-plot g4 using "q_over_a":(column("covering_holds") == 0 && column("literal_all") == 0 ? column("b_over_a") : NaN) w p pt 6 ps 0.45 lc rgb c_grey title 'neither', \
+fu = data."/thm1_uniform_band.tsv"
+ylo = B_min/2
+plot fu using (0.5*(column("q_lo") + column("q_hi"))):(column("proved") == 1 ? sqrt(ylo*column("b_over_a_max")) : NaN):"q_lo":"q_hi":(ylo):"b_over_a_max" \
+        w boxxyerror fs transparent solid 0.3 noborder lc rgb c_sky title 'proved for all smaller $b/a$', \
+     fu using "q_lo":(column("proved") == 1 ? column("b_over_a_max") : NaN):(column("q_hi") - column("q_lo")):(0) \
+        w vectors nohead lw 2.5 lc rgb oi_black notitle, \
+     g4 using "q_over_a":(column("covering_holds") == 0 && column("literal_all") == 0 ? column("b_over_a") : NaN) w p pt 6 ps 0.45 lc rgb c_grey title 'neither', \
      g4 using "q_over_a":(column("covering_holds") == 1 && column("literal_all") == 0 ? column("b_over_a") : NaN) w p pt 7 ps 0.45 lc rgb c_free title 'covering (b) only', \
      g4 using "q_over_a":(column("literal_all") == 1 ? column("b_over_a") : NaN) w p pt 5 ps 0.5 lc rgb c_prog title "(a) and (b)", \
      f4 using "q_over_a":(column("b0_covering") > 0 ? column("b0_covering") : NaN):(column("q_over_a")-dq/2):(column("q_over_a")+dq/2) \
