@@ -87,6 +87,17 @@ def next_double_hex(h, direction):
     return float.hex(math.nextafter(float.fromhex(h), direction * math.inf))
 
 
+def rejected(checker, path, bad, cases, what, label):
+    """Applies the mutation `what` of `cases` (name: (change, exit status, a word of the step the checker
+    must name)) to the certificate at `path`; the checker must reject it so."""
+    change, want, word = cases[what]
+    proc = subprocess.run([checker, mutate(path, bad, change)], capture_output=True, text=True)
+    line = (proc.stdout + proc.stderr).strip()
+    if proc.returncode != want or word not in line:
+        sys.exit(f"FAIL: {label} mutation {what}: dfchaos-recheck exit {proc.returncode}, want {want} naming '{word}': {line}")
+    print(f"ok:   {label} mutation {what}: exit {want}: {line}")
+
+
 def rejects_discontinuities(cli, checker, what, d, bad):
     """The mutations of a Lemma 2 certificate (b = 0.01 on L0; for k_above, the one without tangency):
     each rejected, with the step named."""
@@ -141,12 +152,7 @@ def rejects_discontinuities(cli, checker, what, d, bad):
         "segment_unknown": (lambda c: c["parameters"].update(segment="L1"), 2, "segment"),
         "z_decimal": (lambda c: tangency(c).update(z=["3.2", "3.3"]), 2, "exact hexadecimal"),
     }
-    change, want, word = cases[what]
-    proc = subprocess.run([checker, mutate(path, bad, change)], capture_output=True, text=True)
-    line = (proc.stdout + proc.stderr).strip()
-    if proc.returncode != want or word not in line:
-        sys.exit(f"FAIL: Lemma 2 mutation {what}: dfchaos-recheck exit {proc.returncode}, want {want} naming '{word}': {line}")
-    print(f"ok:   Lemma 2 mutation {what}: exit {want}: {line}")
+    rejected(checker, path, bad, cases, what, "Lemma 2")
 
 
 def rejects_arc_l1(cli, checker, what, d, bad):
@@ -168,12 +174,7 @@ def rejects_arc_l1(cli, checker, what, d, bad):
         "b_larger": (lambda c: set_hex(c, "parameters", "b_over_a_max", 0.2), 1, "stops within W"),
         "grid_short": (lambda c: c["witnesses"]["delta_cuts"].pop(), 1, "grid covers"),
     }
-    change, want, word = cases[what]
-    proc = subprocess.run([checker, mutate(path, bad, change)], capture_output=True, text=True)
-    line = (proc.stdout + proc.stderr).strip()
-    if proc.returncode != want or word not in line:
-        sys.exit(f"FAIL: arc-l1 mutation {what}: dfchaos-recheck exit {proc.returncode}, want {want} naming '{word}': {line}")
-    print(f"ok:   arc-l1 mutation {what}: exit {want}: {line}")
+    rejected(checker, path, bad, cases, what, "arc-l1")
 
 
 def rejects_lemma4_uniform(cli, checker, what, d, bad):
@@ -185,12 +186,7 @@ def rejects_lemma4_uniform(cli, checker, what, d, bad):
         "arc_tau": (lambda c: c["witnesses"]["arc_l1"]["witnesses"]["tau"].__setitem__(0, float.hex(3.2)), 1, "landing precedes"),
         "arc_missing": (lambda c: c["witnesses"].pop("arc_l1"), 2, "arc_l1"),
     }
-    change, want, word = cases[what]
-    proc = subprocess.run([checker, mutate(path, bad, change)], capture_output=True, text=True)
-    line = (proc.stdout + proc.stderr).strip()
-    if proc.returncode != want or word not in line:
-        sys.exit(f"FAIL: lemma4-uniform mutation {what}: dfchaos-recheck exit {proc.returncode}, want {want} naming '{word}': {line}")
-    print(f"ok:   lemma4-uniform mutation {what}: exit {want}: {line}")
+    rejected(checker, path, bad, cases, what, "lemma4-uniform")
 
 
 def main():
