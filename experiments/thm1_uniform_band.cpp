@@ -79,11 +79,11 @@ const Experiment experiment{
       out.macro("UniformColumnsProved", std::to_string(proved));
       out.macro("UniformBandFraction", fraction, 3);
       out.macro("UniformBandPercent", 100 * fraction, 3);
-      // The bound at the column that starts at q/a = 0.85 (the report's line), when the columns have one.
-      for (int i = 0; i < n; ++i)
-        if (std::fabs(edges[static_cast<std::size_t>(i)] - 0.85) < 1e-9 && proofs[static_cast<std::size_t>(i)].verdict.proved)
-          out.macro("UniformBoundAtEightyFive", latex_number(format_significant(proofs[static_cast<std::size_t>(i)].eps_star, 3)));
-
+      out.macro("UniformBandBLo", latex_number(dfchaos::format_shortest(kBandBLo)));
+      out.macro("UniformBandBHi", latex_number(dfchaos::format_shortest(kBandBHi)));
+      out.macro("UniformBandQLo", dfchaos::format_shortest(kBandQLo));
+      out.macro("UniformBandQHi", dfchaos::format_shortest(kBandQHi));
+      out.macro("UniformQLo", dfchaos::format_shortest(q_lo));
       const std::string statement =
           "For every column [q_lo, q_hi] of data/thm1_uniform_band.tsv with proved = 1 and every b/a in (0, b_over_a_max] of that row "
           "(a = 1, hence every a by scaling), Lemma 4 holds (two disjoint segments J0, J1 of [t2, 3pi/2] carried continuously by T onto "
@@ -100,8 +100,8 @@ const Experiment experiment{
                             .set("band_fraction_proved", fraction));
       if (proved == 0) c.evidence("failure", "no column was proved");
       c.holds(proved > 0);
-      std::fprintf(stderr, "thm1_uniform_band: %lld of %d columns proved; %.1f%% of the band b/a in [1e-4, 2e-3] x q/a in [0.78, 0.99]\n",
-                   proved, n, 100 * fraction);
+      std::fprintf(stderr, "thm1_uniform_band: %lld of %d columns proved; %.1f%% of the band b/a in [1e-4, 2e-3] x q/a in [0.78, 0.99]\n", proved, n,
+                   100 * fraction);
     }};
 
 DFCHAOS_EXPERIMENT_MAIN(experiment)
