@@ -73,6 +73,14 @@ py::object certify_py(const std::string& what, double a, std::optional<NumberOrB
   r.period = period;
   r.segment = segment;
   if (window) r.window = range("window", *window);
+  if (certificate) {
+    try {
+      certify::check_certificate_path(*certificate);  // before the proof, not after it
+    } catch (const kit::OutputError& e) {
+      PyErr_SetString(PyExc_OSError, kit::one_line(e.what()).c_str());
+      throw py::error_already_set();
+    }
+  }
   certify::Result c;
   {
     py::gil_scoped_release nogil;

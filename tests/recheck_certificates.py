@@ -411,6 +411,15 @@ def main():
                                   capture_output=True, text=True)
             if os.geteuid() != 0 and (proc.returncode != 2 or os.listdir(ro)):
                 sys.exit(f"FAIL: read-only directory: exit {proc.returncode}, left {os.listdir(ro)}")
+            # a directory that does not exist: refused before the proof (a covering takes some 30 ms; well under
+            # the 10 s allowed here), and not created
+            missing = os.path.join(d, "nodir", "c.json")
+            proc = subprocess.run([cli, "certify", "covering", "--b", "0.001", "--q", "0.85", "--certificate", missing],
+                                  capture_output=True, text=True, timeout=10)
+            if proc.returncode != 2 or proc.stdout or "certificate" not in proc.stderr or os.path.exists(os.path.dirname(missing)):
+                sys.exit(f"FAIL: --certificate in a missing directory: exit {proc.returncode}, stdout {proc.stdout[:80]!r}, "
+                         f"created: {os.path.exists(os.path.dirname(missing))}, stderr {proc.stderr!r}")
+            print(f"ok:   --certificate in a missing directory: exit 2, nothing created: {proc.stderr.strip()}")
             # an empty file name
             proc = subprocess.run([cli, "certify", "vartheta0", "--certificate", ""], capture_output=True, text=True)
             if proc.returncode != 2 or proc.stdout or len(proc.stderr.strip().splitlines()) != 1 or "certificate" not in proc.stderr:

@@ -104,7 +104,7 @@ int run_command(int argc, char** argv) {
   // An empty value would otherwise be read as missing or as 0: refuse it whatever the option.
   for (int i = 1; i < argc; ++i)
     if (argv[i][0] == '\0') {
-      std::fprintf(stderr, "dfchaos: error: %s: empty value (a number is required)\n", i > 1 ? argv[i - 1] : "argument");
+      std::fprintf(stderr, "dfchaos: error: %s: empty value (a value is required)\n", i > 1 ? argv[i - 1] : "argument");
       return 2;
     }
   try {

@@ -197,11 +197,16 @@ int run_certify(const CertifyOptions& o) {
   try {
     kit::apply_process_budget("dfchaos", kit::parse_budget(o.max_seconds, o.max_memory));
     certified::on_allocation_failure(kit::exit_for_memory_budget);
-    c = certify::certify(request_from(o));
+    const certify::Request request = request_from(o);
+    if (!o.certificate.empty()) certify::check_certificate_path(o.certificate);  // before the proof, not after it
+    c = certify::certify(request);
     kit::stop_time_budget();
   } catch (const InvalidParameter& e) {
     std::fprintf(stderr, "dfchaos: error: %s\n", kit::one_line(e.what()).c_str());
     return 2;
+  } catch (const kit::OutputError& e) {
+    std::fprintf(stderr, "dfchaos: error: %s\n", kit::one_line(e.what()).c_str());
+    return e.bad_path() ? 2 : 1;
   } catch (const std::bad_alloc&) {
     std::fprintf(stderr, "dfchaos: gave up: %s\n", kit::memory_budget_line().c_str());
     return 1;

@@ -81,3 +81,11 @@ def test_certificate_when_asked(tmp_path):
     assert r.certificate["bytes"] == path.stat().st_size
     not_proved = dfchaos.certify("lemma1", b=0.05, q=0.73, certificate=str(tmp_path / "d.json"))
     assert not_proved.certificate["written"] is False
+
+
+@pytest.mark.failure
+def test_certificate_in_a_missing_directory_is_refused_before_the_proof(tmp_path):
+    target = tmp_path / "nodir" / "c.json"
+    with pytest.raises(OSError, match="certificate: cannot create a file beside"):
+        dfchaos.certify("covering", b=0.001, q=0.85, certificate=str(target))
+    assert not target.parent.exists()  # nothing created

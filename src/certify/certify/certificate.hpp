@@ -150,6 +150,10 @@ struct WrittenCertificate {
   std::string sha256;     ///< SHA-256 of its bytes, 64 hexadecimal digits
 };
 
+/// Checks, before any proof, that a certificate can be written at `path`: not a directory, device or
+/// FIFO (kit::output_target), and its directory exists (it is not created).
+/// @throws kit::OutputError with bad_path() true, naming the option `certificate`.
+void check_certificate_path(const std::filesystem::path& path);
 /// Writes the certificate to `path` whole or not at all (a temporary beside it, then renamed;
 /// kit::write_atomically). @throws kit::OutputError (bad_path() true when the place is unusable).
 WrittenCertificate write_certificate(const std::filesystem::path& path, const kit::Json& certificate);

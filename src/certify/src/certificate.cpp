@@ -549,7 +549,16 @@ kit::Json certificate_paper_construction(const certified::CoveringProof& cov, co
 
 std::string certificate_text(const kit::Json& certificate) { return certificate.dump(1); }
 
+void check_certificate_path(const std::filesystem::path& path) {
+  const std::filesystem::path target = kit::output_target(path, "certificate");
+  const std::filesystem::path dir = target.has_parent_path() ? target.parent_path() : std::filesystem::path(".");
+  std::error_code ec;
+  if (!std::filesystem::is_directory(dir, ec))
+    throw kit::OutputError("certificate: cannot create a file beside " + path.string() + ": " + dir.string() + " is not an existing directory", true);
+}
+
 WrittenCertificate write_certificate(const std::filesystem::path& path, const kit::Json& certificate) {
+  check_certificate_path(path);  // the directory is not created
   const std::string text = certificate_text(certificate);
   kit::write_atomically(kit::output_target(path, "certificate"), text);
   return WrittenCertificate{path.string(), text.size(), kit::sha256_hex(text)};
