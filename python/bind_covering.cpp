@@ -45,9 +45,10 @@ constexpr int kMinRecheck = 4;
 constexpr int kMinRefine = 1;
 
 /// v unless it lies outside [lo, hi]. @throws InvalidParameter naming `name` with the condition
-/// spelled as the CLI spells a count's ("4 <= recheck <= 100000000").
+/// spelled as the CLI spells a count's ("4 <= recheck <= 1e8").
 int count_in(const char* name, int v, long long lo, long long hi) {
-  if (v < lo || v > hi) throw InvalidParameter(name, std::to_string(lo) + " <= " + name + " <= " + std::to_string(hi), v);
+  if (v < lo || v > hi)
+    throw InvalidParameter(name, format_shortest(static_cast<double>(lo)) + " <= " + name + " <= " + format_shortest(static_cast<double>(hi)), v);
   return v;
 }
 
@@ -61,8 +62,8 @@ CoveringSearch search_options(const std::string& method, int scan, int uniform, 
   else if (method != "dense")
     throw InvalidParameter("method", "'dense' or 'branchwise' (got '" + method + "')");
   // scan and uniform: the library's lower bounds (checked by covering_segments), ours above.
-  if (scan > kMaxElements) throw InvalidParameter("scan", "scan <= " + std::to_string(kMaxElements), scan);
-  if (uniform > kMaxElements) throw InvalidParameter("uniform", "uniform <= " + std::to_string(kMaxElements), uniform);
+  if (scan > kMaxElements) throw InvalidParameter("scan", "scan <= " + format_shortest(static_cast<double>(kMaxElements)), scan);
+  if (uniform > kMaxElements) throw InvalidParameter("uniform", "uniform <= " + format_shortest(static_cast<double>(kMaxElements)), uniform);
   s.scan = scan;
   s.uniform = uniform;
   if (recheck) s.recheck = count_in("recheck", *recheck, kMinRecheck, kMaxElements);

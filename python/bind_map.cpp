@@ -77,7 +77,7 @@ py::dict orbit(const Parameters& p, double theta0, long long steps) {
   finite("theta0", theta0);
   p.require_in_map_domain(theta0, "theta0");  // before any work, as the CLI
   if (steps < 1 || steps > kMaxOrbitSteps)
-    throw InvalidParameter("steps", "1 <= steps <= " + std::to_string(kMaxOrbitSteps), static_cast<double>(steps));
+    throw InvalidParameter("steps", "1 <= steps <= " + format_shortest(static_cast<double>(kMaxOrbitSteps)), static_cast<double>(steps));
   const std::vector<py::ssize_t> shape{static_cast<py::ssize_t>(steps)};
   RealArray theta(shape), elapsed(shape), penetration(shape), time(shape), y(shape);
   StrColumn scenario(shape, kScenarioWidth);

@@ -27,7 +27,8 @@ py::dict simulate_py(const Parameters& p, double x0, double y0, double v0, doubl
     if (!(so.sample_dt > 0)) throw InvalidParameter("sample", "sample > 0", so.sample_dt);
   }
   if (max_events < 1 || max_events > kMaxSimulationEvents)
-    throw InvalidParameter("max-events", "1 <= max-events <= " + std::to_string(kMaxSimulationEvents), static_cast<double>(max_events));
+    throw InvalidParameter("max-events", "1 <= max-events <= " + format_shortest(static_cast<double>(kMaxSimulationEvents)),
+                           static_cast<double>(max_events));
   so.max_events = static_cast<long>(max_events);
 
   Simulation r;

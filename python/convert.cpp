@@ -27,7 +27,8 @@ Reals as_reals(const py::handle& obj, const char* name) {
   if (kind != 'f' && kind != 'i' && kind != 'u')
     throw py::type_error(std::string(name) + ": expected real numbers, got an array of dtype " + py::str(any.dtype()).cast<std::string>());
   const py::ssize_t n = any.size();  // checked before the copy (a broadcast view can be huge)
-  if (n > kMaxElements) throw InvalidParameter(name, "number of elements <= " + std::to_string(kMaxElements), static_cast<double>(n));
+  if (n > kMaxElements)
+    throw InvalidParameter(name, "number of elements <= " + format_shortest(static_cast<double>(kMaxElements)), static_cast<double>(n));
   Reals r;
   r.array = RealArray::ensure(any);
   if (!r.array) throw py::type_error(std::string(name) + ": cannot be converted to float64");

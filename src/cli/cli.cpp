@@ -23,12 +23,7 @@ Parameters ModelOptions::model() const { return Parameters(number("a", a), numbe
 
 double number(const std::string& name, const std::string& text) { return kit::parse_number(name, text, false); }
 
-long long count(const std::string& name, const std::string& text, long long lo, long long hi) {
-  const double v = kit::parse_number(name, text, true);
-  if (v < static_cast<double>(lo) || v > static_cast<double>(hi))
-    throw InvalidParameter(name, std::to_string(lo) + " <= " + name + " <= " + std::to_string(hi), v);
-  return static_cast<long long>(v);
-}
+long long count(const std::string& name, const std::string& text, long long lo, long long hi) { return kit::parse_count(name, text, lo, hi); }
 
 Writer::Writer() { buffer_.reserve(1 << 16); }
 Writer::~Writer() {

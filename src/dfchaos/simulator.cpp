@@ -55,7 +55,8 @@ MechanicalState simulate(const Parameters& p, double x0, double y0, double v0, d
   if (options.sample_dt > 0) {
     const double n = std::floor((t_end - t0) / options.sample_dt) + 1;
     if (!(n <= static_cast<double>(options.max_samples)))
-      throw InvalidParameter("sample", "(t-end - t0)/sample + 1 <= " + std::to_string(options.max_samples) + " samples", options.sample_dt);
+      throw InvalidParameter("sample", "(t-end - t0)/sample + 1 <= " + format_shortest(static_cast<double>(options.max_samples)) + " samples",
+                             options.sample_dt);
     n_samples = static_cast<long>(n);
   }
 

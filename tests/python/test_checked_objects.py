@@ -118,7 +118,7 @@ SEARCH_IDS = ["covering_segments", "lemma4_covering"]
 def test_recheck_that_would_not_recheck_is_refused(search, method, recheck):
     """recheck < 2 used to mark segments rechecked=True with no re-check run (< 4: no jump test)."""
     msg = refusal(lambda: search(model(), method=method, recheck=recheck), "recheck")
-    assert msg == f"recheck: must satisfy 4 <= recheck <= 100000000 (got {recheck})"
+    assert msg == f"recheck: must satisfy 4 <= recheck <= 1e8 (got {recheck})"
 
 
 @pytest.mark.parametrize("search", SEARCHES, ids=SEARCH_IDS)
@@ -126,15 +126,15 @@ def test_recheck_that_would_not_recheck_is_refused(search, method, recheck):
 def test_refine_is_checked(search, refine):
     """refine = 0 used to fail deep inside, naming theta and -nan."""
     msg = refusal(lambda: search(model(), refine=refine), "refine")
-    assert msg == f"refine: must satisfy 1 <= refine <= 100000000 (got {refine})"
+    assert msg == f"refine: must satisfy 1 <= refine <= 1e8 (got {refine})"
 
 
 @pytest.mark.parametrize("search", SEARCHES, ids=SEARCH_IDS)
 @pytest.mark.parametrize("name,value,condition", [
     ("scan", 1, "scan >= 2"),
-    ("scan", 10**8 + 1, "scan <= 100000000"),
+    ("scan", 10**8 + 1, "scan <= 1e8"),
     ("uniform", -1, "uniform >= 0"),
-    ("uniform", 10**8 + 1, "uniform <= 100000000"),
+    ("uniform", 10**8 + 1, "uniform <= 1e8"),
     ("max_segments", -1, "max_segments >= 0 (0: all)"),
     ("max_branches", 0, "max_branches >= 1"),
 ])

@@ -141,7 +141,7 @@ def test_too_many_elements_refused_before_copying():
     huge = np.broadcast_to(4.0, (10**8 + 1,))  # a zero-stride view: copying it would take 800 MB
     with pytest.raises(ValueError) as info:
         dfchaos.T(model(), huge)
-    assert str(info.value) == "theta: must satisfy number of elements <= 100000000 (got 100000001)"
+    assert str(info.value) == "theta: must satisfy number of elements <= 1e8 (got 100000001)"
 
 
 def test_wrong_argument_types():

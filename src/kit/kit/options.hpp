@@ -105,5 +105,8 @@ class OptionValues {
 /// Parses a number as the user wrote it: the whole text must be a finite number. For a count it
 /// must also be an integer ("1e8" is accepted). @throws InvalidParameter naming `name`.
 double parse_number(const std::string& name, const std::string& text, bool integer);
+/// An integer option in [lo, hi] (parse_number with integer = true); the bounds are printed in
+/// shortest form ("1 <= steps <= 1e8"). @throws InvalidParameter naming `name`.
+long long parse_count(const std::string& name, const std::string& text, long long lo, long long hi);
 
 }  // namespace dfchaos::kit

@@ -76,6 +76,13 @@ OptionSpec reals(std::string name, std::vector<double> default_values, std::stri
   return s;
 }
 
+long long parse_count(const std::string& name, const std::string& text, long long lo, long long hi) {
+  const double v = parse_number(name, text, true);
+  if (v < static_cast<double>(lo) || v > static_cast<double>(hi))
+    throw InvalidParameter(name, format_shortest(static_cast<double>(lo)) + " <= " + name + " <= " + format_shortest(static_cast<double>(hi)), v);
+  return static_cast<long long>(v);
+}
+
 double parse_number(const std::string& name, const std::string& text, bool integer) {
   if (text.empty()) throw InvalidParameter(name, "a number is required (got an empty value)");
   errno = 0;

@@ -10,12 +10,7 @@
 namespace dfchaos::sweep {
 
 namespace {
-long long count(const std::string& name, const std::string& text, long long lo, long long hi) {
-  const double v = kit::parse_number(name, text, true);
-  if (v < static_cast<double>(lo) || v > static_cast<double>(hi))
-    throw InvalidParameter(name, std::to_string(lo) + " <= " + name + " <= " + std::to_string(hi), v);
-  return static_cast<long long>(v);
-}
+long long count(const std::string& name, const std::string& text, long long lo, long long hi) { return kit::parse_count(name, text, lo, hi); }
 }  // namespace
 
 void SweepArguments::add_to(CLI::App* app) {

@@ -30,10 +30,11 @@ std::vector<Interval> plan_chunks(long long positions, const std::vector<Interva
 Run::Run(RunOptions options) : o_(std::move(options)) {
   o_.spec.validate();
   if (o_.chunk < 1 || o_.chunk > kMaxChunk)
-    throw InvalidParameter("chunk", "1 <= chunk <= " + std::to_string(kMaxChunk), static_cast<double>(o_.chunk));
+    throw InvalidParameter("chunk", "1 <= chunk <= " + format_shortest(static_cast<double>(kMaxChunk)), static_cast<double>(o_.chunk));
   if (!o_.out.empty() && !o_.resume.empty()) throw InvalidParameter("resume", "give --out FILE or --resume FILE, not both");
   if (o_.max_chunks < 0 || o_.max_chunks > kMaxChunks)
-    throw InvalidParameter("max-chunks", "0 <= max-chunks <= " + std::to_string(kMaxChunks), static_cast<double>(o_.max_chunks));
+    throw InvalidParameter("max-chunks", "0 <= max-chunks <= " + format_shortest(static_cast<double>(kMaxChunks)),
+                           static_cast<double>(o_.max_chunks));
   if (o_.max_chunks > 0 && o_.resume.empty()) throw InvalidParameter("max-chunks", "needs --resume FILE (the chunks done are kept there)");
   shard_ = o_.shard.value_or(Shard{});
   if (shard_.count < 1 || shard_.index < 0 || shard_.index >= shard_.count || shard_.count > o_.spec.cells())
@@ -41,7 +42,7 @@ Run::Run(RunOptions options) : o_(std::move(options)) {
   positions_ = shard_.size(o_.spec.cells());
   if ((positions_ + o_.chunk - 1) / o_.chunk > kMaxChunks)
     throw InvalidParameter("chunk",
-                           "at most " + std::to_string(kMaxChunks) + " chunks: chunk >= " +
+                           "at most " + format_shortest(static_cast<double>(kMaxChunks)) + " chunks: chunk >= " +
                                std::to_string((positions_ + kMaxChunks - 1) / kMaxChunks) + " for " + std::to_string(positions_) + " cells",
                            static_cast<double>(o_.chunk));
   const std::string header = header_text(o_.spec, o_.shard);

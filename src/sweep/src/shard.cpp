@@ -16,8 +16,9 @@ Shard Shard::parse(const std::string& option, const std::string& text, long long
   const double n = kit::parse_number(option + " N", text.substr(slash + 1), true);
   const long long max_n = std::min(kMaxShards, cells);
   if (n < 1 || n > static_cast<double>(max_n))
-    throw InvalidParameter(option, "1 <= N <= " + std::to_string(max_n) + " (at most " + std::to_string(kMaxShards) +
-                                       " shards, and no more than the cells) (got '" + text + "')");
+    throw InvalidParameter(option, "1 <= N <= " + format_shortest(static_cast<double>(max_n)) + " (at most " +
+                                       format_shortest(static_cast<double>(kMaxShards)) + " shards, and no more than the cells) (got '" + text +
+                                       "')");
   if (i < 0 || i >= n) throw InvalidParameter(option, "0 <= i < N (got '" + text + "')");
   return Shard{static_cast<long long>(i), static_cast<long long>(n)};
 }

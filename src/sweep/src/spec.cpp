@@ -11,7 +11,7 @@
 namespace dfchaos::sweep {
 
 namespace {
-std::string count_text(long long v) { return std::to_string(v); }
+std::string count_text(long long v) { return format_shortest(static_cast<double>(v)); }
 }  // namespace
 
 void OrbitSettings::validate() const {
