@@ -45,6 +45,14 @@ void Spec::validate() const {
   for (double r : {q_over_a[0], q_over_a[q_over_a.size() - 1], b_over_a[0], b_over_a[b_over_a.size() - 1]})
     if (!(std::isnormal(a * r) && a * r > 0))
       throw InvalidParameter("a", "a * (q/a) and a * (b/a) must be finite, positive and normal for every cell", a);
+  // ... and inside the model's range, so that an axis no cell of which could be computed is refused
+  // here, not answered by a file of error rows.
+  for (double r : {q_over_a[0], q_over_a[q_over_a.size() - 1]})
+    if (!(a * r >= kMinParameter && a * r <= kMaxParameter))
+      throw InvalidParameter("q-range",
+                             "a * (q/a) within [" + format_shortest(kMinParameter) + ", " + format_shortest(kMaxParameter) +
+                                 "] for every cell (the model's range: only b/a and q/a matter, rescale a)",
+                             r);
   // The product is checked in floating point first: n_q and n_b are each at most 10^8.
   if (static_cast<double>(q_over_a.size()) * static_cast<double>(b_over_a.size()) > static_cast<double>(kMaxCells))
     throw InvalidParameter("q-range", "n_q * n_b <= " + count_text(kMaxCells) + " cells (got " + count_text(q_over_a.size()) + " * " +
