@@ -432,18 +432,22 @@ const Experiment experiment{
         // Lemma 4 (and the covering part of Theorem 1) for every b/a up to an explicit bound, by the paper's
         // construction on L2 with its "b/a sufficiently small" made explicit (lemma4_uniform.hpp).
         const auto tu = Clock::now();
-        const Lemma4UniformProof u = prove_lemma4_uniform(kappa_lo, kappa_hi);
+        // Lemma 1 (I9) needs q/a above sin(vartheta0) (about 0.7246) and below 1 (asin's domain at b -> 0).
+        const double u_lo = 0.73, u_hi = 0.999;
+        const Lemma4UniformProof u = prove_lemma4_uniform(u_lo, u_hi);
         time_row("Lemma 4 for every small b/a", since(tu));
         const std::string su = statement_lemma4_uniform(u);
         if (u.verdict.proved) run.certificate("cert.lemma4.uniform_small_b", certificate_text(certificate_lemma4_uniform(1.0, u, su)));
         auto& cu = certified_claim(out, "cert.lemma4.uniform_small_b", "Lemma 4, Theorem 1", su, to_json(1.0, u), u.verdict.proved, &u.verdict);
-        cu.parameter_object(Json::object().set("q_over_a", Json::array().push(kappa_lo).push(kappa_hi)).set("b_over_a_max", u.eps_star));
+        cu.parameter_object(Json::object().set("q_over_a", Json::array().push(u_lo).push(u_hi)).set("b_over_a_max", u.eps_star));
+        out.macro("CertLemmaFourQLo", dfchaos::format_shortest(u_lo));
+        out.macro("CertLemmaFourQHi", dfchaos::format_shortest(u_hi));
         out.macro("CertLemmaFourEpsStar", latex_number(lower_significant(u.eps_star, 3)));
         tex_row("Lemma 4 (all small b/a)",
-                "$[" + dfchaos::format_shortest(kappa_lo) + ", " + dfchaos::format_shortest(kappa_hi) + "] \\times (0, " +
+                "$[" + dfchaos::format_shortest(u_lo) + ", " + dfchaos::format_shortest(u_hi) + "] \\times (0, " +
                     latex_number(lower_significant(u.eps_star, 3)) + "]$",
-                u.verdict.proved ? "(I1)--(I8) for every $b/a$ in the box: at least three tangencies on $L_2$, no other jump, "
-                                   "$\\theta_2$ decreasing along each branch"
+                u.verdict.proved ? "(I1)--(I9) for every $b/a$ in the box: at least three tangencies on $L_2$, no other jump, "
+                                   "$\\theta_2$ decreasing along each branch, Lemma~1"
                                  : "not proved: " + latex_escape(u.verdict.step),
                 "---");
       }

@@ -40,8 +40,8 @@ REQUESTS = {
     # a box of certified_region, re-proved with the J0, J1 its row records
     # the arc L1 of Lemma 4's proof, for every b/a up to sin(3pi/100)/2 and q/a in [0.72, 1]
     "arc_l1": ["arc-l1", "--q", "0.72:1"],
-    # Lemma 4 by the paper's construction for every b/a up to its bound, q/a in [0.62, 1]
-    "lemma4_uniform": ["lemma4-uniform", "--q", "0.62:1"],
+    # Lemma 4 by the paper's construction for every b/a up to its bound, q/a in [0.73, 0.999]
+    "lemma4_uniform": ["lemma4-uniform", "--q", "0.73:0.999"],
     "covering_box": ["covering", "--a", "1", "--b", "0.0019697602976329739:0.00196980455453853",
                      "--q", "0.80000000000000004:0.81000000000000005", "--J0", "3.2595461317302936:3.3248980967076651",
                      "--J1", "3.3397741191384851:3.3845640013715848"],
@@ -185,6 +185,7 @@ def rejects_lemma4_uniform(cli, checker, what, d, bad):
         "q_lower": (lambda c: c["parameters"]["q_over_a"]["lo"].update(hex=float.hex(0.5)), 1, "(I8)"),
         "arc_tau": (lambda c: c["witnesses"]["arc_l1"]["witnesses"]["tau"].__setitem__(0, float.hex(3.2)), 1, "landing precedes"),
         "arc_missing": (lambda c: c["witnesses"].pop("arc_l1"), 2, "arc_l1"),
+        "lemma1_gap": (lambda c: c["witnesses"]["lemma1"]["sub_boxes"].pop(), 1, "Lemma 1"),
     }
     rejected(checker, path, bad, cases, what, "lemma4-uniform")
 

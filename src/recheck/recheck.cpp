@@ -1443,6 +1443,9 @@ long check_lemma4_uniform(const json& c) {
   }
   const Iv s_min = cos(w2) / E - Iv(1.0);
   st.require(lt(2.0 * cot(0.5 * w1), s_min), "(I6) s0 - 1 > 2 cot(w_lo/2)");
+  // (I9) Lemma 1 on [0, b_over_a_max] x [q/a lo, q/a hi]: cells inside, covering, u(t2) < 0 on each; q > 2b.
+  st.require(2.0 * eps_star < k_lo, "(I9) q/a > 2 b/a on the box");
+  lemma1(st, Iv(1.0), Box{0.0, eps_star, k_lo, k_hi}, read_sub_boxes(field(w, "lemma1", "witnesses."), "witnesses.lemma1."));
   st.require(lt(Iv(2.0), (Iv(k_lo) - 2.0 * E) * s_min), "(I7) (q/a - 2 b/a)(s0 - 1) > 2");
   return st.n;
 }

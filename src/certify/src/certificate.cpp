@@ -198,6 +198,9 @@ kit::Json certificate_lemma4_uniform(double a, const certified::Lemma4UniformPro
   j.set("parameters", par);
   kit::Json w = kit::Json::object();
   w.set("pieces", static_cast<long long>(p.w_pieces));
+  kit::Json cells = kit::Json::array();
+  for (const certified::Lemma1SubBox& c : p.lemma1_cells) cells.push(hex_array({c.b_lo, c.b_hi, c.q_lo, c.q_hi}));
+  w.set("lemma1", kit::Json::object().set("sub_boxes", cells));
   w.set("arc_l1", certificate_arc_l1(a, p.arc_l1, statement_arc_l1(p.arc_l1)));
   j.set("witnesses", w);
   return j;

@@ -89,9 +89,10 @@ std::string statement_lemma4_uniform(const Lemma4UniformProof& p) {
                                              " (wider than the paper's L2)";
   return "Lemma 4 (hence Theorem 1) for every a > 0 and every b, q with 0 < b/a <= " + format_double(p.eps_star) + " and q/a in [" +
          format_double(p.kappa_lo) + ", " + format_double(p.kappa_hi) + "], by the paper's construction on " + segment +
-         ": the inequalities (I1)-(I8) of docs/certified.md are proved in ball arithmetic for all such b/a at once (the segment "
+         ": the inequalities (I1)-(I9) of docs/certified.md are proved in ball arithmetic for all such b/a at once (the segment "
          "holds at least three first-contact tangencies z_1 < z_2 < z_3 of T1 and no other discontinuity, theta2 decreases along "
-         "each branch, and from each T1(z_i) the progression stops in the stop arc); by the argument written there, T decreases "
+         "each branch while it lies in (t2, t3), from each T1(z_i) the progression stops in the stop arc, and Lemma 1 holds on the "
+         "whole box (Eq. 8, so theta2 cannot leave (t2, t3) by a jump)); by the argument written there, T decreases "
          "continuously on a segment [z_i, theta_c] from T(z_i) = T1(z_i) mod 2pi > 3pi/2 to t2, i = 1, 2. The inequalities are "
          "certified; the argument that they imply Lemma 4 is a proof on paper, not a computation.";
 }

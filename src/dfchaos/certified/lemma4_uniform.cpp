@@ -70,6 +70,39 @@ Lemma4UniformProof prove_lemma4_uniform(double kappa_lo, double kappa_hi, const 
   r.s_min = cos(Ball(r.w_b)) / E - 1.0;
   if (!lt(2.0 * cot(Ball(r.w_a) / 2.0), r.s_min)) return fail("(I6) no other tangency", "s0 - 1 = " + r.s_min.str(6) + " <= 2 cot(w_a/2)");
   if (!lt(Ball(2.0), (Ball(kappa_lo) - 2.0 * E) * r.s_min)) return fail("(I7) theta2 decreases", "(q/a - 2 eps)(s0 - 1) <= 2");
+  // (I9): Lemma 1 over [0, eps*] x [kappa_lo, kappa_hi], cells bisected (q and b alternately) until
+  // u(t2) < 0 is proved on each; at most 4096 cells.
+  {
+    struct Cell {
+      double b1, b2, q1, q2;
+      int depth;
+    };
+    std::vector<Cell> todo{{0.0, r.eps_star, kappa_lo, kappa_hi, 0}};
+    while (!todo.empty()) {
+      const Cell c = todo.back();
+      todo.pop_back();
+      const Ball u = lemma1_velocity_at_t2(Ball(1.0), Ball::interval(c.b1, c.b2), Ball::interval(c.q1, c.q2));
+      if (u.is_negative()) {
+        r.lemma1_cells.push_back(Lemma1SubBox{c.b1, c.b2, c.q1, c.q2});
+        if (r.lemma1_cells.size() > 4096) return fail("(I9) Lemma 1", "more than 4096 cells");
+        continue;
+      }
+      if (u.is_positive() && c.b1 == c.b2 && c.q1 == c.q2)
+        return fail("(I9) Lemma 1", "u(t2) > 0 at b/a = " + std::to_string(c.b1) + ", q/a = " + std::to_string(c.q1));
+      if (c.depth >= 40 || todo.size() > 4096)
+        return fail("(I9) Lemma 1",
+                    "u(t2) < 0 not proved near b/a = " + std::to_string(c.b2) + ", q/a = " + std::to_string(c.q1) + " (" + u.str(5) + ")");
+      if (c.depth % 2 == 0) {
+        const double m = 0.5 * (c.q1 + c.q2);
+        todo.push_back({c.b1, c.b2, m, c.q2, c.depth + 1});
+        todo.push_back({c.b1, c.b2, c.q1, m, c.depth + 1});
+      } else {
+        const double m = 0.5 * (c.b1 + c.b2);
+        todo.push_back({m, c.b2, c.q1, c.q2, c.depth + 1});
+        todo.push_back({c.b1, m, c.q1, c.q2, c.depth + 1});
+      }
+    }
+  }
   // (I8): the paper's arc L1 (3pi/100 >= pi/50) for L2, else the stop-arc form on [2pi - w_b, t3).
   ArcL1Options arc;
   if (!paper_L2) {

@@ -26,16 +26,25 @@
 ///  - **(I7)** \f$\theta_2\f$ decreases along a branch: \f$(q/a - 2\varepsilon)(s_0 - 1) > 2\f$, so
 ///    \f$q\,|T_1'| = q|F(\theta)|s/v > |F(\theta)|\f$ (impact velocity \f$v \le 2\varepsilon s + 2\f$) and
 ///    \f$d\theta_2/d\theta = (q T_1' - F(\theta))/(q - F(\theta_2)) < 0\f$ wherever \f$\theta_2 \bmod 2\pi \in (t_2, t_3)\f$;
+///  - **(I9)** Lemma 1 for every b/a in [0, eps*] and q/a in the box: Eq. (8) u(t2) < 0 on sub-boxes
+///    covering them. Along a branch the first zero theta2 of the progression's velocity can jump
+///    only where a local minimum of the velocity touches 0, at phase t0 (where F = q); after such a
+///    touch the motion is the progression from rest at t0, which by Lemma 1 stops in (t1, t2). So,
+///    with (I9), theta2 cannot leave (t2, t3) by a jump: it crosses t2 first (found by a referee's
+///    review: without Lemma 1, at q/a below sin(vartheta0), T stops at t4 in (t2, t3) instead);
 ///  - **(I8)** the arc \f$L_1\f$ (arc_l1.hpp) for q/a in the box and every \f$\varepsilon \le \varepsilon_*\f$.
 /// The argument that turns them into Lemma 4 (two segments \f$[z_i, \theta_c]\f$, i = 1, 2, on which T
 /// decreases continuously from \f$T(z_i) = t^*_i \bmod 2\pi \ge 99\pi/50\f$ to \f$t_2\f$) is written out in
 /// docs/certified.md; it is the paper's proof with the steps it leaves to "b/a small" made explicit,
-/// and it is an argument, not a computation. Lemma 1 is not needed on this route.
+/// and it is an argument, not a computation. Lemma 1 is needed, as (I9).
 #pragma once
+
+#include <vector>
 
 #include "dfchaos/certified/arc_l1.hpp"
 #include "dfchaos/certified/ball.hpp"
 #include "dfchaos/certified/outcome.hpp"
+#include "dfchaos/certified/progression.hpp"
 
 namespace dfchaos::certified {
 
@@ -50,7 +59,7 @@ struct Lemma4UniformOptions {
   int pieces = 16;  ///< pieces in w and in u (and s)
 };
 
-/// The inequalities (I1)-(I8) of the file comment for every b/a in (0, eps_star] and q/a in [kappa_lo, kappa_hi].
+/// The inequalities (I1)-(I9) of the file comment for every b/a in (0, eps_star] and q/a in [kappa_lo, kappa_hi].
 struct Lemma4UniformProof {
   Outcome verdict;             ///< proved: every inequality, for every b/a in (0, eps_star]
   double kappa_lo = 0;         ///< the box of q/a: lower end
@@ -66,9 +75,10 @@ struct Lemma4UniformProof {
   Ball count_length;           ///< (I5): \f$h(101\pi/100) - h(51\pi/50)\f$ at \f$\varepsilon_*\f$ (it grows as \f$\varepsilon\f$ shrinks)
   Ball s_min;                  ///< \f$s_0 - 1\f$ at its least, \f$\cos(\pi/50)/\varepsilon_* - 1\f$
   ArcL1Proof arc_l1;           ///< (I8)
+  std::vector<Lemma1SubBox> lemma1_cells;  ///< (I9): (b/a, q/a) cells covering [0, eps*] x [kappa_lo, kappa_hi], u(t2) < 0 on each
 };
 
-/// Proves (I1)-(I8) for q/a in [kappa_lo, kappa_hi] on the segment of `opt`.
+/// Proves (I1)-(I9) for q/a in [kappa_lo, kappa_hi] on the segment of `opt`.
 Lemma4UniformProof prove_lemma4_uniform(double kappa_lo, double kappa_hi, const Lemma4UniformOptions& opt = {});
 
 /// The largest bound of b/a found for q/a in [kappa_lo, kappa_hi]: for each w_b on a grid of
