@@ -111,7 +111,17 @@ def grouped_claim_rows(rows, parameters=None):
                 pieces.append(nums[0][k] + (" [" + "; ".join(others) + "]" if others else ""))
         names = [variant(rows[j][0])[1] for j in group]
         label = fam + "{" + ",".join(names) + "}"
-        at = "; ".join(f"{n}: {parameters[rows[j][0]]}" for n, j in zip(names, group) if parameters.get(rows[j][0]))
+        # each variant's parameters, unless its statement already names every one of their values
+        # (then the listing would repeat the statement; the values stay in the claims files)
+        def named(j, g):
+            values = re.findall(r"=\s*([^,]+)", parameters.get(rows[j][0], ""))
+            said = {float(x) for x in nums[g]}
+            try:
+                return all(float(v) in said for v in values)
+            except ValueError:
+                return False
+        at = "" if all(named(j, g) for g, j in enumerate(group)) else \
+            "; ".join(f"{n}: {parameters[rows[j][0]]}" for n, j in zip(names, group) if parameters.get(rows[j][0]))
         differ = any(nums[g][k] != nums[0][k] for g in range(1, len(group)) for k in range(len(nums[0])))
         head = (f"[{at}] " if at else "") + (f"[{names[0]}; " + ", ".join(names[1:]) + " in brackets] " if differ else
                                              f"[{', '.join(names)}: the same statement; their numbers are in their claims files] ")
@@ -126,6 +136,10 @@ _W = r"(?<![\w\\.$])"   # not inside a word, a number, a command or after an esc
 _E = r"(?![\w\\-])"      # the end of a word, not joined to the next by a hyphen
 _TYPESET = [  # (pattern, replacement as for re.sub: group references \1, LaTeX backslashes doubled)
     (r"\(0\\textasciicircum\{\}\(m-1\)1\)\\textasciicircum\{\}infinity", r"$(0^{m-1}1)^\\infty$"),
+    (r"(?<![\w\\])0\\textasciicircum\{\}\(m-1\)1" + _E, r"$0^{m-1}1$"),
+    (_W + r"(cos|sin)\\textasciicircum\{\}(\d+)" + _E, r"$\\\1^{\2}$"),
+    (_W + r"([A-Za-z0-9])\\textasciicircum\{\}(\d+|[a-z])" + _E, r"$\1^{\2}$"),
+    (r"\$<\$\$<\$", r"$\\ll$"), (r"\$>\$\$>\$", r"$\\gg$"),
     (r"\$>\$=", r"$\\ge$"), (r"\$<\$=", r"$\\le$"), (r"!=", r"$\\ne$"), (r"-\$>\$", r"$\\to$"),
     (_W + r"(\d*)pi/(\d+)" + _E, r"$\1\\pi/\2$"), (_W + r"(\d*)pi" + _E, r"$\1\\pi$"),
     (_W + r"vartheta0" + _E, r"$\\vartheta_0$"), (_W + r"theta(\d)" + _E, r"$\\theta_\1$"), (_W + r"theta" + _E, r"$\\theta$"),
@@ -233,7 +247,7 @@ def main():
             at = {c["id"]: ", ".join(f"{k.replace('_', chr(92) + '_')}={v!r}" for k, v in c["parameters"].items())
                   for c in d["claims"] if isinstance(c.get("parameters"), dict)}
             for row in grouped_claim_rows(kit_rows, at):
-                row = row[:3] + (typeset(row[3]),) + row[4:]
+                row = row[:2] + (typeset(row[2]), typeset(row[3])) + row[4:]
                 f.write("\\dfcclaimentry" + "".join("{" + x + "}" for x in row) + "\n")
             f.write("}\n")
     print(f"claims map: {len(rows)} paper items, {len(experiments)} experiments -> {build}/claims-map.md")
