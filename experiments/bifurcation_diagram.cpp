@@ -18,6 +18,7 @@
 #include "dfchaos/map_derivative.hpp"
 #include "dfchaos/superstable.hpp"
 #include "kit/experiment.hpp"
+#include "kit/format.hpp"
 #include "kit/grid.hpp"
 
 using namespace dfchaos;
@@ -141,6 +142,8 @@ const Experiment experiment{
       run.out.macro("BifCycleSafety", kStopCycleSafety, 2);
       run.out.macro("BifCycleStepError", kStopCycleStepError, 1);
       run.out.macro("BifValues", std::to_string(pts.size()));
+      run.out.macro("BifQ", dfchaos::format_shortest(q_fixed));
+      run.out.macro("BifB", latex_number(dfchaos::format_shortest(b_fixed)));
       run.out.macro("BifPositiveLyapunov", std::to_string(positive));
       run.out.macro("BifDerivativeWorst", worst, 2);
       run.out.macro("BifDerivativeCompared", std::to_string(compared));

@@ -12,6 +12,7 @@
 /// re-proves that box alone),
 /// data/certified_region-columns.tsv (per column: how far it got), macros for the report, a claim
 /// with evidence_kind "certified", and the timing in the claims file and bench/certified-region-timing.tex.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -81,6 +82,7 @@ const Experiment experiment{
       Table cols({"q_lo", "q_hi", "b_reached", "proved_fraction_of_band", "boxes_proved", "boxes_failed"});
       double proved_area = 0, band_area = (r.b_hi - r.b_lo) * (r.q_hi - r.q_lo);
       Json per_column = Json::array();
+      std::vector<double> widths;  // width of each proved box in b/a, over (b/a)^2 at its middle
       for (const auto& c : res.columns) {
         long long np = 0, nf = 0;
         for (const auto& b : c.boxes) {
@@ -89,6 +91,7 @@ const Experiment experiment{
                      b.proved ? b.J0.theta_top : nan, b.proved ? b.J0.theta_t2 : nan, b.proved ? b.J1.theta_top : nan,
                      b.proved ? b.J1.theta_t2 : nan});
           (b.proved ? np : nf)++;
+          if (b.proved) widths.push_back((b.b_hi - b.b_lo) / std::pow(0.5 * (b.b_lo + b.b_hi), 2));
         }
         proved_area += c.proved_length * (c.q_hi - c.q_lo);
         cols.row({c.q_lo, c.q_hi, c.b_reached, c.proved_length / (r.b_hi - r.b_lo), np, nf});
@@ -106,6 +109,12 @@ const Experiment experiment{
       out.macro("RegionBoxesFailed", std::to_string(res.boxes_failed));
       out.macro("RegionProvedFraction", fraction, 3);
       out.macro("RegionComplete", res.complete ? "yes" : "no");
+      if (!widths.empty()) {  // the median width of a proved box, in units of (b/a)^2
+        std::nth_element(widths.begin(), widths.begin() + static_cast<std::ptrdiff_t>(widths.size() / 2), widths.end());
+        out.macro("RegionMedianWidth", widths[widths.size() / 2], 2);
+      } else {
+        out.macro("RegionMedianWidth", "---");
+      }
 
       auto& c = out.claim("cert.thm1.region", "Theorem 1, Lemma 4", EvidenceKind::Certified, statement);
       c.parameter_object(Json::object()

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "dfchaos/errors.hpp"
 #include "dfchaos/progression_stop.hpp"
 #include "kit/experiment.hpp"
 #include "kit/format.hpp"
@@ -16,6 +17,7 @@ using namespace dfchaos::kit;
 
 namespace {
 constexpr double kBoundFormulaTolerance = 1e-12;  // |bisected threshold of (9) - (q/a - sin vartheta0)/2|
+constexpr double kQuotedQ = 0.85;                 // the row of the b0 table the report quotes in its text
 }  // namespace
 
 const Experiment experiment{
@@ -140,7 +142,7 @@ const Experiment experiment{
       double ratio_min = INFINITY, ratio_max = 0;  // b0 over the proof's bound, over the rows
       double worst_formula = 0;                    // |bisected bound - (q/a - sin vartheta0)/2| over the rows
       int formula_rows = 0;
-      for (double qa : {0.73, 0.75, 0.8, 0.85, 0.9, 0.95, 0.99}) {
+      for (double qa : {0.73, 0.75, 0.8, kQuotedQ, 0.9, 0.95, 0.99}) {
         const double hi = std::min(0.49, qa / 2);
         const double b0 = lemma1_threshold(qa, ba_min, hi, Lemma1Criterion::StopsInT1T2);
         const double bb = lemma1_threshold(qa, ba_min, hi, Lemma1Criterion::ProofBound);
@@ -153,7 +155,8 @@ const Experiment experiment{
           ratio_min = std::min(ratio_min, b0 / bb);
           ratio_max = std::max(ratio_max, b0 / bb);
         }
-        if (qa == 0.85) {
+        if (qa == kQuotedQ) {
+          run.out.macro("LemmaOneQuotedQ", dfchaos::format_shortest(kQuotedQ));
           run.out.macro("LemmaOneBzeroAtEightyFive", b0, 4);
           run.out.macro("LemmaOneBoundAtEightyFive", bb, 4);
           run.out.macro("LemmaOneBoundFormulaAtEightyFive", formula, 4);

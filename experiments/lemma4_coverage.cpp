@@ -9,6 +9,7 @@
 
 #include "dfchaos/bisect.hpp"
 #include "dfchaos/covering.hpp"
+#include "dfchaos/errors.hpp"
 #include "dfchaos/lemma4_construction.hpp"
 #include "dfchaos/map_derivative.hpp"
 #include "dfchaos/next_hit.hpp"
@@ -105,6 +106,8 @@ const Experiment experiment{
       run.out.macro("LemmaFourThresholdTol", format_significant(kThresholdRelTol, 1));
       // A reference example for the report.
       const Parameters ref(1.0, 1e-3, 0.85);
+      run.out.macro("LemmaFourRefB", latex_number(dfchaos::format_shortest(ref.b())));
+      run.out.macro("LemmaFourRefQ", latex_number(dfchaos::format_shortest(ref.q())));
       const Lemma4Covering c = lemma4_covering(ref, search);
       run.out.macro("LemmaFourRefJzeroLo", c.holds ? format_significant(c.J0.lo, 8) : "none");
       run.out.macro("LemmaFourRefJzeroHi", c.holds ? format_significant(c.J0.hi, 8) : "none");

@@ -204,6 +204,9 @@ const Experiment experiment{
       run.out.macro("RateWorstSpread", worst_spread, 2);
       run.out.macro("RateSimulatorDiff", worst_check, 2);
       run.out.macro("RateAtOneHundredth", at01.mean, 3);
+      run.out.macro("RateAtOneHundredthB", line_b[std::min(nb - 1, static_cast<int>(std::lround((nb - 1) * std::log(100.0) / std::log(3000.0))))], 3);
+      run.out.macro("RateQ", dfchaos::format_shortest(q_fixed));
+      run.out.macro("RateSpreadTol", dfchaos::format_shortest(kSpreadTol));
       run.out.macro("RateFailures", std::to_string(failures));
 
       run.out

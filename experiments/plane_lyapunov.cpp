@@ -210,15 +210,15 @@ const Experiment experiment{
       run.out.macro("LyapNoReturn", std::to_string(n_no_return));
       run.out.macro("LyapNoReturnLost", std::to_string(n_no_return_lost));
       run.out.macro("LyapStopCounterexamples", std::to_string(n_no_return - n_no_return_lost + n_cycle_failed));
-      {  // where they are: the first few cells against the claim, as (q/a, b/a)
+      {  // where they are: the first few cells against the claim, as (q/a, b/a); the report words them
         std::string cells;
         const std::size_t shown = std::min<std::size_t>(against_at.size(), 4);
         for (std::size_t i = 0; i < shown; ++i)
-          cells += std::string(i ? (i + 1 == shown && shown == against_at.size() ? " and " : ", ") : "") + "$(" +
-                   dfchaos::format_shortest(against_at[i].first) + ", " + latex_number(dfchaos::format_shortest(against_at[i].second)) + ")$";
-        if (against_at.size() > shown) cells += " and " + std::to_string(against_at.size() - shown) + " more";
-        // the phrase that follows the count in the report: where they are, or nothing when there are none
-        run.out.macro("LyapStopCounterexampleCells", cells.empty() ? std::string() : ", at $(q/a,b/a)={}$" + cells);
+          cells += std::string(i ? ", " : "") + "$(" + dfchaos::format_shortest(against_at[i].first) + ", " +
+                   latex_number(dfchaos::format_shortest(against_at[i].second)) + ")$";
+        run.out.macro("LyapStopCounterexampleCells", cells);
+        run.out.macro("LyapStopCounterexampleShown", std::to_string(shown));
+        run.out.macro("LyapStopCounterexampleAll", std::to_string(against_at.size()));
       }
       run.out.macro("LyapNudge", kNudge, 1);
       run.out.macro("LyapNonpositive", std::to_string(n_neg));

@@ -10,6 +10,7 @@
 /// [t2_eps, 3pi/2], t2_eps being where the stop ends under the perturbed force.
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "dfchaos/covering.hpp"
@@ -26,6 +27,8 @@ using namespace dfchaos::kit;
 namespace {
 constexpr double kValidationTol = 1e-8;  // T_eps at eps = 0 against the exact T
 constexpr int kMaxGaveUp = 3;            // the global search stops after this many integrations that give up
+// The values of eps whose T_eps fig_robustness draws (read from this experiment's macros)
+constexpr double kDrawnEps[] = {0, 1e-3, 1e-2};
 }  // namespace
 
 const Experiment experiment{
@@ -173,6 +176,12 @@ const Experiment experiment{
       run.out.macro("SecTenUZeroMissing", std::isfinite(first_u0_missing) ? format_significant(first_u0_missing, 2) : std::string("none"));
       run.out.macro("SecTenUZeroBack", std::isfinite(first_u0_back) ? format_significant(first_u0_back, 2) : std::string("none"));
       run.out.macro("SecTenQ", q, 3);
+      {
+        std::string drawn;
+        for (double e : kDrawnEps)
+          if (std::find(epsilons.begin(), epsilons.end(), e) != epsilons.end()) drawn += (drawn.empty() ? "" : ", ") + dfchaos::format_shortest(e);
+        run.out.macro("SecTenDrawnEps", drawn);
+      }
 
       run.out
           .claim("sec10.validation", "Section 10 (numerics)", EvidenceKind::Sampled,

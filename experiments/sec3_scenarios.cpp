@@ -6,6 +6,7 @@
 #include <map>
 #include <tuple>
 
+#include "dfchaos/errors.hpp"
 #include "dfchaos/parameters.hpp"
 #include "dfchaos/progression_stop.hpp"
 #include "dfchaos/return_map.hpp"
@@ -45,6 +46,10 @@ const Experiment experiment{
     .body = [](Run& run) {
       const int n = run.count_int("n");
       const std::vector<std::pair<double, double>> sets = {{0.01, 0.85}, {0.05, 0.85}, {0.1, 0.95}, {0.002, 0.8}, {0.05, 0.7}, {0.01, 0.6}};
+      // the set drawn on the phase circle (fig_phase_circle reads it from these macros)
+      constexpr std::size_t kCircleSet = 1;
+      run.out.macro("SecThreeCircleB", dfchaos::format_shortest(sets[kCircleSet].first));
+      run.out.macro("SecThreeCircleQ", dfchaos::format_shortest(sets[kCircleSet].second));
       Table counts({"b_over_a", "q_over_a", "lemma1_holds", "A", "B", "C", "D", "G", "other"});
       Table arcs({"b_over_a", "q_over_a", "scenario", "theta_lo", "theta_hi", "points"});
       LatexTable counts_tex("rrcrrrrrr", {"$b/a$", "$q/a$", "Lemma 1", "A", "B", "C", "D", "grazing", "other"});

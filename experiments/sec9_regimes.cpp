@@ -104,6 +104,7 @@ const Experiment experiment{
       run.latex("sec9_regimes", tex.render());
       run.out.macro("SecNinePeriods", periods, 3);
       run.out.macro("SecNineWindow", window, 3);  // the periods at the end of each run that are classified
+      run.out.macro("SecNineStarts", std::to_string(starts.size()));
 
       Claim& remark = run.out.claim("sec9.remark", "Section 9, Remark", EvidenceKind::Sampled,
                                     "Outside b < a/2 the motion eventually has no free flight, and its eventual behaviour is the one the "

@@ -123,6 +123,8 @@ const Experiment experiment{
       bw.holds(n_checked > 0 && n_differ == 0);
       run.out.macro("PlaneNq", std::to_string(nq));
       run.out.macro("PlaneNb", std::to_string(nb));
+      run.out.macro("PlaneBLo", b_axis[0], 6);
+      run.out.macro("PlaneBHi", b_axis[nb - 1], 6);
       run.out.macro("PlaneCheckEvery", std::to_string(every));
       run.out.macro("PlaneChecked", std::to_string(n_checked));
       run.out.macro("PlaneDisagree", std::to_string(n_differ));

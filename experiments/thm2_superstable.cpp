@@ -9,6 +9,7 @@
 /// the certified windows (certified_claims.cpp).
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "dfchaos/errors.hpp"
@@ -40,6 +41,10 @@ std::vector<JoinedInterval> join_pieces(const std::vector<SuperstableWindow>& w)
   }
   return out;
 }
+// The two lines of q/a the report shows (figures fig_windows, fig_theta2_arcs and the text read them
+// from this experiment's macros): one inside assumption (2), one below sin(vartheta0), where (2) fails.
+constexpr double kShownQ = 0.85;
+constexpr double kOutsideQ = 0.6;
 }  // namespace
 
 const Experiment experiment{
@@ -48,7 +53,7 @@ const Experiment experiment{
     .tests = {"test_symbolic"},
     .options = {count("samples", 5000, "samples of theta2(t2), uniform in a/b, for the window search").range(2, 10'000'000).fast_value(500),
                 count("grid", 20000, "independent grid points (uniform in a/b) for the cross-check").range(2, 10'000'000).fast_value(400),
-                reals("q", {0.85, 0.95, 0.6}, "values of q/a").range(0.003, 1.0 - 1e-12)},
+                reals("q", {kShownQ, 0.95, kOutsideQ}, "values of q/a").range(0.003, 1.0 - 1e-12)},
     .outputs = {data("windows",
                      "every piece of b/a in [1e-3, 0.1] where (21) or (22) holds, with epsilon at its middle and the joined interval it belongs to"),
                 data("", "per q/a: counts of joined intervals and of their (21), (22) pieces, the resolution check, and the independent grid check"),
@@ -58,6 +63,14 @@ const Experiment experiment{
       const double b_lo = 1e-3, b_hi = 0.1;
       run.out.macro("ThmTwoScanBLo", latex_number(dfchaos::format_shortest(b_lo)));
       run.out.macro("ThmTwoScanBHi", latex_number(dfchaos::format_shortest(b_hi)));
+      run.out.macro("ThmTwoShownQ", dfchaos::format_shortest(kShownQ));
+      run.out.macro("ThmTwoOutsideQ", dfchaos::format_shortest(kOutsideQ));
+      {  // the values of q/a run inside assumption (2), as a list of numbers
+        std::string inside;
+        for (double qa : run.reals("q"))
+          if (qa > sin_vartheta0() && qa < 1) inside += (inside.empty() ? "" : ", ") + dfchaos::format_shortest(qa);
+        run.out.macro("ThmTwoQInsideTwo", inside);
+      }
       Table windows({"q_over_a", "b_lo", "b_hi", "condition", "b_mid", "epsilon_mid", "theorem2_hypotheses_mid", "interval"});
       Table summary({"q_over_a", "intervals", "intervals_joined_21_22", "pieces_21", "pieces_22", "intervals_at_4x_samples",
                      "grid_points_in_conditions", "grid_points_outside_windows", "smallest_epsilon", "widest_interval_relative"});
@@ -126,7 +139,7 @@ const Experiment experiment{
         smallest_eps = std::min(smallest_eps, eps_min);
         summary.row({qa, static_cast<long long>(joined.size()), n_joined, n21, n22, static_cast<long long>(joined4.size()), in_cond, outside, eps_min,
                      widest});
-        if (qa == 0.85) {
+        if (qa == kShownQ) {
           run.out.macro("ThmTwoIntervalsEightyFive", std::to_string(joined.size()));
           run.out.macro("ThmTwoJoinedEightyFive", std::to_string(n_joined));
           run.out.macro("ThmTwoWidestEightyFive", widest, 2);

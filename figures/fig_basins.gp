@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # Figure: where the drilling rate depends on the start (penetration_rate, output basins): at the
-# three values of b/a on the line q/a = 0.85 with the largest spread over initial phases, the rate
+# three values of b/a on the line q/a of the experiment with the largest spread over initial phases, the rate
 # of the orbit from each of 200 initial phases theta0 in [t2, t3) (transient discarded, the same
 # number of steps averaged as in the rate experiment). Blue: the orbit stays on the chaotic set over
 # the whole run (finite Lyapunov exponent); green: it falls onto the superstable cycle through t2
@@ -21,7 +21,7 @@ nb = words(bvals)
 sel(b) = (abs(column("b_over_a") - b) <= 1e-12*b && column("failed") == 0)
 set multiplot
 set grid noxtics noytics
-set bmargin at screen 0.16; set tmargin at screen 0.84
+set bmargin at screen 0.16; set tmargin at screen 0.8
 do for [k=1:nb] {
   b = real(word(bvals, k))
   set autoscale xy   # stats obeys the ranges of the previous panel

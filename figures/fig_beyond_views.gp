@@ -38,8 +38,8 @@ row_t = 0.62; row_b = 0.13; ph = 0.29
 set lmargin at screen col_l; set rmargin at screen col_l + pw
 set bmargin at screen row_t; set tmargin at screen row_t + ph
 set title '\small (a) stroboscopic section, $t=2\pi k$' offset 0,-0.6
-set xlabel '$x-y$' offset 0,0.8
-set ylabel '$\dot x$' offset 1.5,0
+set xlabel '$x-y$' offset 0,0.4
+set ylabel '$\dot x$' offset 0.3,0
 bound = -(2 + 1/(4*b_sec))
 set xrange [bound*1.08:0.5]
 set autoscale y

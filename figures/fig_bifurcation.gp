@@ -1,6 +1,7 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # Figure: orbit diagrams of T with the Lyapunov exponent (bifurcation_diagram). Top: phases after
-# the transient against b/a (q/a = 0.85) and against q/a (b/a = 0.01). Bottom: the Lyapunov
+# the transient against b/a (at the q/a of the experiment's option --q) and against q/a (at its --b);
+# both values read from the experiment's macros. Bottom: the Lyapunov
 # exponent lambda (mean of ln|T'|) where it is finite; parameter values whose orbit meets a stop
 # arc (a step with T' = 0, so lambda = -inf) are drawn in a band of their own below the axis
 # break, marked -inf, and those whose orbit then returns to t2 on a cycle that double precision
@@ -12,6 +13,8 @@ set output "fig_bifurcation.tex"
 orb = data."/bifurcation_diagram-orbits.tsv"
 lya = data."/bifurcation_diagram-lyapunov.tsv"
 s0 = sin_vartheta0   # Eq. (1), from eq1_vartheta0 (style.gp)
+eval tex_macro("q_fixed", "bifurcation_diagram", "BifQ")
+eval tex_macro("b_fixed", "bifurcation_diagram", "BifB")
 # ranges of the data (stats obeys ranges: read before any is set)
 stats lya using (strcol("sweep") eq "b" ? column("b_over_a") : NaN) name "BX" nooutput
 stats lya using (strcol("sweep") eq "q" ? column("q_over_a") : NaN) name "QX" nooutput
@@ -32,7 +35,7 @@ set logscale x
 set format x '$10^{%T}$'
 set xrange [BX_min/1.15:BX_max*1.15]
 set xlabel '$b/a$' offset 0,0.4
-set title '$q/a=0.85$' offset 0,-0.4
+set title '$q/a='.q_fixed.'$' offset 0,-0.4
 plot orb using (strcol("sweep") eq "b" ? column("b_over_a") : NaN):"theta" w dots lc rgb c_free notitle
 unset logscale x
 set lmargin at screen col_r; set rmargin at screen col_r + pw
@@ -40,7 +43,7 @@ set format x '$%.1f$'
 set xrange [QX_min - 0.01:QX_max + 0.01]
 set xtics 0.1
 set xlabel '$q/a$'
-set title '$b/a=0.01$'
+set title '$b/a='.b_fixed.'$'
 set object 1 rect from graph 0, graph 0 to first s0, graph 1 fc rgb "#d9d9d9" fs solid 0.5 noborder back
 set label 1 '\footnotesize (2) fails' at first (QX_min + s0)/2, graph 0.94 center front
 plot orb using (strcol("sweep") eq "q" ? column("q_over_a") : NaN):"theta" w dots lc rgb c_free notitle

@@ -28,7 +28,7 @@ stats fp using (abs(column("q_over_a") - Q_min) <= 1e-12*abs(Q_min) ? 1 : 0) nam
 nb = int(NBQ_sum); nq = int(Q_records / nb + 0.5)
 dq = (Q_max - Q_min) / (nq > 1 ? nq - 1 : 1); db = (B_max - B_min) / (nb > 1 ? nb - 1 : 1)
 # the classes of fig_plane: 0 neither, 1 covering, 2 superstable, 3 both, -1 failed
-rgbof(c) = (c == 0 ? 0xe8e8e8 : (c == 1 ? 0x56B4E9 : (c == 2 ? 0xD55E00 : (c == 3 ? 0x0072B2 : 0x000000))))
+rgbof(c) = (c == 0 ? 0xe8e8e8 : (c == 1 ? 0x56B4E9 : (c == 2 ? 0xE69F00 : (c == 3 ? 0x0072B2 : 0x000000))))
 red(c) = int(rgbof(c)) >> 16 & 255; green(c) = int(rgbof(c)) >> 8 & 255; blue(c) = int(rgbof(c)) & 255
 
 set multiplot
@@ -68,7 +68,7 @@ eval key_box(11, 0.03, k1, "#56B4E9")
 set label 11 '\small covering found (sampled)' at screen 0.045, screen k1 left front
 eval key_box(12, 0.03, k2, "#0072B2")
 set label 12 '\small covering and $t_2$ superstable' at screen 0.045, screen k2 left front
-eval key_box(13, 0.36, k1, "#D55E00")
+eval key_box(13, 0.36, k1, "#E69F00")
 set label 13 '\small $t_2$ superstable only' at screen 0.375, screen k1 left front
 eval key_box(14, 0.36, k2, "#e8e8e8")
 set label 14 '\small neither' at screen 0.375, screen k2 left front

@@ -1,17 +1,19 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # Figure: the drilling rate (penetration_rate): mean advance of the delimiter per unit time.
-# (a) the rate against b/a at q/a = 0.85 (mean over initial phases, bars from min to max);
+# (a) the rate against b/a on the line q/a of the experiment (its macro) (mean over initial phases, bars from min to max);
 # (b) the rate divided by b/a on the same line: the rate is nearly proportional to b, and this
 #     shows how it is not, and where it depends on the initial phase (open circles: relative spread
-#     above 0.05, the tolerance of rate.independent_of_start);
+#     above the tolerance of rate.independent_of_start, read from the experiment's macros);
 # (c) the rate divided by b/a over the (q/a, b/a) plane, with a labelled colour bar; crosses mark
-#     cells whose rate depends on the initial phase (spread above 0.05).
+#     cells whose rate depends on the initial phase (spread above that tolerance).
 load figdir."/style.gp"
 set terminal cairolatex pdf input size 15cm,6.6cm
 set output "fig_penetration.tex"
 f = data."/penetration_rate-line.tsv"
 g = data."/penetration_rate-plane.tsv"
-spread_tol = 0.05
+eval tex_macro("q_line", "penetration_rate", "RateQ")
+eval tex_macro("tol", "penetration_rate", "RateSpreadTol")
+spread_tol = real(tol)
 stats f using "b_over_a" name "L" nooutput
 stats g using "q_over_a" name "Q" nooutput
 stats g using (log10(column("b_over_a"))) name "B" nooutput
@@ -29,7 +31,7 @@ set mxtics 10
 
 # ---- (a)
 set lmargin at screen 0.115; set rmargin at screen 0.315
-set title '(a) $q/a=0.85$'
+set title '(a) $q/a='.q_line.'$'
 # y labels placed by hand: gnuplot overestimates the width of TeX tick labels such as $10^{-4}$
 unset ylabel
 set label 90 'rate' at screen 0.025, graph 0.5 rotate center
@@ -39,7 +41,7 @@ plot f using "b_over_a":"rate_mean":"rate_min":"rate_max" w yerrorbars pt 7 ps 0
 
 # ---- (b)
 set lmargin at screen 0.41; set rmargin at screen 0.615
-set title '(b) $q/a=0.85$'
+set title '(b) $q/a='.q_line.'$'
 set label 90 'rate$/(b/a)$' at screen 0.343, graph 0.5 rotate center
 unset logscale y
 set format y '$%.1f$'

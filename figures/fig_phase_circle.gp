@@ -1,16 +1,20 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # Figure: the phase circle with t0 < t1 (zeros of F - q) and t2 < t3 (zeros of F), and what each
 # regime may do on each arc (our version of the paper's Fig. 2). Phases from sec3_scenarios
-# (table sec3_scenarios-phases.tsv, row b/a = 0.05, q/a = 0.85).
+# (table sec3_scenarios-phases.tsv, the row of the set that sec3_scenarios names in its macros).
 load figdir."/style.gp"
 set terminal cairolatex pdf input size 11cm,7.5cm dashlength 2.5
 set output "fig_phase_circle.tex"
 file = data."/sec3_scenarios-phases.tsv"
-# pick the row b/a = 0.05, q/a = 0.85
-stats file using (abs(column("b_over_a")-0.05)<1e-12 && abs(column("q_over_a")-0.85)<1e-12 ? column("t0") : NaN) name "T0" nooutput
-stats file using (abs(column("b_over_a")-0.05)<1e-12 && abs(column("q_over_a")-0.85)<1e-12 ? column("t1") : NaN) name "T1" nooutput
-stats file using (abs(column("b_over_a")-0.05)<1e-12 && abs(column("q_over_a")-0.85)<1e-12 ? column("t2") : NaN) name "T2" nooutput
-stats file using (abs(column("b_over_a")-0.05)<1e-12 && abs(column("q_over_a")-0.85)<1e-12 ? column("t3") : NaN) name "T3" nooutput
+# pick the row of the set chosen by the experiment
+eval tex_macro("cb", "sec3_scenarios", "SecThreeCircleB")
+eval tex_macro("cq", "sec3_scenarios", "SecThreeCircleQ")
+B0 = real(cb); Q0 = real(cq)
+stats file using (abs(column("b_over_a")-B0)<1e-12 && abs(column("q_over_a")-Q0)<1e-12 ? column("t0") : NaN) name "T0" nooutput
+stats file using (abs(column("b_over_a")-B0)<1e-12 && abs(column("q_over_a")-Q0)<1e-12 ? column("t1") : NaN) name "T1" nooutput
+stats file using (abs(column("b_over_a")-B0)<1e-12 && abs(column("q_over_a")-Q0)<1e-12 ? column("t2") : NaN) name "T2" nooutput
+stats file using (abs(column("b_over_a")-B0)<1e-12 && abs(column("q_over_a")-Q0)<1e-12 ? column("t3") : NaN) name "T3" nooutput
+if (T0_records != 1) { print "fig_phase_circle: no single row b/a = ".cb.", q/a = ".cq; exit status 1 }
 t0 = T0_mean; t1 = T1_mean; t2 = T2_mean; t3 = T3_mean
 unset border; unset tics; unset grid
 set size ratio -1

@@ -9,9 +9,9 @@ set output "fig_plane.tex"
 f = data."/thm1_parameter_plane.tsv"
 # class: 0 neither, 1 covering, 2 superstable, 3 both, -1 error (header of the table)
 # Okabe-Ito colours (style.gp), chosen to differ in lightness too: neither very light, covering sky
-# blue, t2 superstable only vermilion (it lies among the 'neither' cells), both blue (among the
-# covering cells), failed black.
-col0 = 0xe8e8e8; col1 = 0x56B4E9; col2 = 0xD55E00; col3 = 0x0072B2; colE = 0x000000
+# blue, t2 superstable only orange (it lies among the 'neither' cells), both blue (among the
+# covering cells), failed black; in greyscale 'superstable only' (mid grey) and 'both' (dark) differ.
+col0 = 0xe8e8e8; col1 = 0x56B4E9; col2 = 0xE69F00; col3 = 0x0072B2; colE = 0x000000
 rgbof(c) = (c == 0 ? col0 : (c == 1 ? col1 : (c == 2 ? col2 : (c == 3 ? col3 : colE))))
 red(c) = int(rgbof(c)) >> 16 & 255; green(c) = int(rgbof(c)) >> 8 & 255; blue(c) = int(rgbof(c)) & 255
 do for [c=-1:3] {

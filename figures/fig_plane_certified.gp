@@ -35,9 +35,10 @@ nb = int(NBQ_sum); nq = int(QQ_records / nb + 0.5)
 dq = (QQ_max - QQ_min) / (nq > 1 ? nq - 1 : 1); db = (BB_max - BB_min) / (nb > 1 ? nb - 1 : 1)
 
 set multiplot
-set lmargin at screen 0.1; set rmargin at screen 0.97; set bmargin at screen 0.33; set tmargin at screen 0.97
+set lmargin at screen 0.1; set rmargin at screen 0.97; set bmargin at screen 0.36; set tmargin at screen 0.97
 set xrange [QQ_min - dq/2 : QQ_max + dq/2]; set yrange [BB_min - db/2 : BB_max + db/2]
 eval plane_axes
+set xlabel offset 0,0.5   # clear of the key below
 cell(cond) = (cond ? log10(column("b_over_a")) : NaN)
 plot f using "q_over_a":(cell(ok(0) && column("certified") == 1)):(0.52*dq):(0.56*db) w boxxyerror fs solid 1.0 noborder fc rgb c_proved notitle, \
      f using "q_over_a":(cell(ok(0) && column("certified") != 1 && column("covering") == 1)):(0.52*dq):(0.56*db) w boxxyerror fs solid 1.0 noborder fc rgb c_sampled notitle, \
@@ -51,7 +52,7 @@ plot f using "q_over_a":(cell(ok(0) && column("certified") == 1)):(0.52*dq):(0.5
 unset border; unset tics; unset xlabel; unset ylabel
 set lmargin at screen 0; set rmargin at screen 1; set bmargin at screen 0; set tmargin at screen 1
 set xrange [0:1]; set yrange [0:1]
-ky = 0.17; ky2 = 0.105; ky3 = 0.04
+ky = 0.16; ky2 = 0.1; ky3 = 0.04
 set object 11 rect center screen 0.06, screen ky size screen 0.018, screen 0.03 fc rgb c_proved fs solid noborder front
 set label 11 sprintf('\small proved at the cell''s point: %d', int(NP_sum)) at screen 0.075, screen ky left front
 set object 12 rect center screen 0.55, screen ky size screen 0.018, screen 0.03 fc rgb c_sampled fs solid noborder front

@@ -19,7 +19,7 @@ set multiplot
 set format x "$%g$"; set format y "$%g$"
 set grid xtics ytics
 # panel k: column (k-1)%2, row (k-1)/2; plot areas leave room for tick labels and axis labels
-px0(k) = ((k-1)%2 == 0 ? 0.095 : 0.605); ph = 0.2
+px0(k) = ((k-1)%2 == 0 ? 0.095 : 0.605); ph = 0.18
 py0(k) = 0.68 - ((k-1)/2)*0.3
 do for [k=1:words(cases)] {
   c = word(cases, k)

@@ -7,14 +7,17 @@
 # Filled points: the hypotheses of Theorem 2 hold there; open: the condition holds but not the
 # hypotheses ((22) needs (2)). Short ticks inside the bands: every window found by the continuation
 # (thm2_superstable-windows.tsv), most of them narrower than the spacing of the samples.
-# Left: q/a = 0.85, where (2) holds; right: q/a = 0.6 < sin(vartheta0), where (2) fails, so only
+# Left: the line q/a inside (2) that the report shows; right: the line below sin(vartheta0), where (2) fails, so only
 # (21) with (23) would count (the Remark of Section 8), and no (21) window exists on this range.
+# Both values of q/a are chosen by thm2_superstable and read from its macros.
 load figdir."/style.gp"
 set terminal cairolatex pdf input size 15cm,7.2cm
 set output "fig_theta2_arcs.tex"
 f = data."/thm2_superstable-theta2.tsv"
 w = data."/thm2_superstable-windows.tsv"
 sel(q) = (abs(column("q_over_a") - q) < 1e-12)
+eval tex_macro("q_shown", "thm2_superstable", "ThmTwoShownQ")
+eval tex_macro("q_outside", "thm2_superstable", "ThmTwoOutsideQ")
 stats f using "b_over_a" name "B" nooutput
 set multiplot
 set grid noxtics noytics
@@ -26,9 +29,9 @@ set xlabel '$b/a$' offset 0,0.3
 set yrange [0:2*pi]
 set ytics ('$0$' 0, '$\frac{\pi}{2}$' pi/2, '$\pi$' pi, '$\frac{3\pi}{2}$' 1.5*pi, '$2\pi$' 2*pi)
 do for [k=1:2] {
-  q = (k == 1 ? 0.85 : 0.6)
+  q = real(k == 1 ? q_shown : q_outside)
   set lmargin at screen (k == 1 ? 0.085 : 0.585); set rmargin at screen (k == 1 ? 0.475 : 0.975)
-  set title sprintf('$q/a=%g$%s', q, (k == 1 ? '' : ' $<\sin\vartheta_0$: (2) fails')) offset 0,-0.4
+  set title '$q/a='.(k == 1 ? q_shown : q_outside).'$'.(k == 1 ? '' : ' $<\sin\vartheta_0$: (2) fails') offset 0,-0.4
   if (k == 1) { set ylabel '$\theta_2(t_2)\bmod 2\pi$' offset 1,0 } else { unset ylabel }
   set label 1 '\footnotesize (21): $(t_1,t_2)$' at graph 0.97, first 2.68 right front
   set label 2 '\footnotesize (22): $[0,t_0)$' at graph 0.03, first 0.62 left front

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
-# Figure: superstable windows of Theorem 2 at q/a = 0.85 (thm2_superstable): each piece of b/a
+# Figure: superstable windows of Theorem 2 on the line q/a that thm2_superstable shows (its macro): each piece of b/a
 # where (21) or (22) holds. The pieces are far narrower than a marker on a b/a axis, so instead of
 # bars their width is drawn as a quantity: (a) epsilon at the piece's middle (the width of
 # [t2, t2 + epsilon) sent to t2); (b) the piece's relative width (b_hi - b_lo)/b_mid, same b/a axis.
@@ -8,7 +8,9 @@ load figdir."/style.gp"
 set terminal cairolatex pdf input size 14cm,8cm
 set output "fig_windows.tex"
 f = data."/thm2_superstable-windows.tsv"
-sel(c) = (abs(column("q_over_a") - 0.85) < 1e-12 && column("condition") == c)
+eval tex_macro("q_shown", "thm2_superstable", "ThmTwoShownQ")
+qs = real(q_shown)
+sel(c) = (abs(column("q_over_a") - qs) < 1e-12 && column("condition") == c)
 set multiplot
 set logscale xy
 set format x '$10^{%T}$'; set format y '$10^{%T}$'

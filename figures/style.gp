@@ -48,6 +48,15 @@ set format y "$%g$"
 sin_vartheta0 = real(system("sed -n 's/^\\\\newcommand{\\\\dfcSinVarthetaZero}{\\(.*\\)}$/\\1/p' '".data."/../tables/eq1_vartheta0-macros.tex'"))
 if (!(sin_vartheta0 > 0.7 && sin_vartheta0 < 0.75)) { print "style.gp: no sin(vartheta0) in tables/eq1_vartheta0-macros.tex (run eq1_vartheta0)"; exit status 1 }
 
+# A number an experiment computed or chose, read from its macros (build/tables/EXP-macros.tex) into the
+# string variable VAR: `eval tex_macro("VAR", "EXP", "Name")` sets VAR = '<value of \dfcName>'. When
+# the macro is missing VAR stays undefined and its first use stops the figure (nothing typed here).
+tex_macro(var, exp, name) = system(sprintf('sed -n "s/^\\\\newcommand{\\\\dfc%s}{\\(.*\\)}\$/%s = ''\\1''/p" "%s/../tables/%s-macros.tex"', name, var, data, exp))
+# b and q of a data table whose description line ends in 'at a=1 b=B q=Q' (Parameters::describe()),
+# as strings in their shortest form.
+header_b(file) = system("sed -n 's/^# .* at a=1 b=\\([^ ]*\\) q=\\([^ ]*\\)$/\\1/p' '".file."' | head -1")
+header_q(file) = system("sed -n 's/^# .* at a=1 b=\\([^ ]*\\) q=\\([^ ]*\\)$/\\2/p' '".file."' | head -1")
+
 # The (q/a, b/a) plane figures share one axis convention: q/a linear with ticks every 0.05, b/a on a
 # logarithmic axis plotted as log10(b/a) with ticks at the powers of ten. `eval plane_axes` after
 # setting the ranges.

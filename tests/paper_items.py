@@ -100,6 +100,17 @@ class OneRowPerFamily(unittest.TestCase):
         self.assertEqual((label, first, ref), ("c.l4.{A,B,C}", "c.l4.A", "Lemma 4"))
         self.assertEqual(stmt, "[A; B, C in brackets] at b=0.001 [B: 0.003; C: 0.01] q=0.85 [C: 0.95]: J0 in [t2, 3pi/2]")
 
+    def test_parameters_are_listed_only_when_the_statement_does_not_name_them(self):
+        rows = [self.r("c.l4.A", "at b=0.001 q=0.85: J0 in [t2, 3pi/2]"), self.r("c.l4.B", "at b=0.003 q=0.85: J0 in [t2, 3pi/2]")]
+        named = M.grouped_claim_rows(rows, {"c.l4.A": "b=0.001, q=0.85", "c.l4.B": "b=0.003, q=0.85"})
+        self.assertFalse(named[0][3].startswith("[A: "), named[0][3])
+        other = M.grouped_claim_rows(rows, {"c.l4.A": "b=0.001, q=0.85", "c.l4.B": "b=0.003, q=0.9"})
+        self.assertTrue(other[0][3].startswith("[A: b=0.001, q=0.85; B: b=0.003, q=0.9] "), other[0][3])
+
+    def test_powers_and_much_less_are_typeset(self):
+        self.assertEqual(M.typeset(r"cos\textasciicircum{}2 t3 and a\textasciicircum{}2, T\textasciicircum{}n, b $<$$<$ q"),
+                         r"$\cos^{2}$ $t_3$ and $a^{2}$, $T^{n}$, b $\ll$ q")
+
     def test_a_different_word_verdict_or_reference_keeps_its_own_row(self):
         base = self.r("c.l2.A", "L0 has 158 jumps")
         for other in (self.r("c.l2.B", "L2 has 5 jumps"), self.r("c.l2.B", "L0 has 52 jumps", verdict="fails"),

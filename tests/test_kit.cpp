@@ -209,6 +209,12 @@ TEST(Output, WritesEverythingWithKindsAndVerdicts) {
   fs::remove_all(root);
 }
 
+TEST(LatexTable, TypesetsCellsInExponentNotationAndLeavesOtherCells) {
+  const std::string t = LatexTable("rrrr", {"a", "b", "c", "d"}).row({"8.68e-05", "1e-12", "0.85", "---"}).render();
+  EXPECT_NE(t.find("\\ensuremath{8.68\\times 10^{-5}} & \\ensuremath{10^{-12}} & 0.85 & ---\\\\\n"), std::string::npos) << t;
+  EXPECT_EQ(t.find("e-05"), std::string::npos) << t;
+}
+
 TEST(Output, CertificatesGoWithTheOtherOutputsOrNotAtAll) {
   const fs::path root = fresh_dir("cert");
   Output out("demo", root);

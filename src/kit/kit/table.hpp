@@ -39,7 +39,8 @@ class LatexTable {
   /// @param spec     the column specification, e.g. "rrrr"
   /// @param header   the header cells (LaTeX)
   LatexTable(std::string spec, std::vector<std::string> header);
-  /// Appends a row of LaTeX cells. @throws std::logic_error if the number of cells differs from the header.
+  /// Appends a row of LaTeX cells; a cell that is a number in exponent notation ("8.7e-05") is typeset
+  /// as one (latex_number). @throws std::logic_error if the number of cells differs from the header.
   LatexTable& row(const std::vector<std::string>& cells);
   /// Appends a \midrule before the next row.
   LatexTable& rule();

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "dfchaos/errors.hpp"
+#include "kit/format.hpp"
 
 namespace dfchaos::kit {
 
@@ -43,7 +44,8 @@ LatexTable::LatexTable(std::string spec, std::vector<std::string> header) : spec
 
 LatexTable& LatexTable::row(const std::vector<std::string>& cells) {
   if (cells.size() != columns_) throw std::logic_error("LatexTable::row: wrong number of cells");
-  for (std::size_t k = 0; k < cells.size(); ++k) body_ += (k ? " & " : "") + cells[k];
+  // a cell that is a number in exponent notation ("8.7e-05") is typeset as one (latex_number)
+  for (std::size_t k = 0; k < cells.size(); ++k) body_ += (k ? " & " : "") + latex_number(cells[k]);
   body_ += "\\\\\n";
   ++rows_;
   return *this;
