@@ -426,11 +426,11 @@ const Experiment experiment{
         out.macro("CertArcLOneEpsMax", lower_decimal(p.eps_max, 4));
         out.macro("CertArcLOneQLo", dfchaos::format_shortest(kappa_lo));
         out.macro("CertArcLOneW", fmt(p.W, 2));
-        tex_row("Lemma 4 (paper's L1)",
-                "$[" + dfchaos::format_shortest(kappa_lo) + ", " + dfchaos::format_shortest(kappa_hi) + "] \\times (0, " +
-                    lower_decimal(p.eps_max, 4) + "]$",
-                p.verdict.proved ? "from rest on $L_1$: one simple contact after $t_3$, stop in $(t_3, t_0+2\\pi)$ within $" + fmt(p.W, 2) + "$"
-                                 : "not proved: " + latex_escape(p.verdict.step),
+        tex_row("Lemma 4 (paper's L1)", "$b/a\\le " + lower_decimal(p.eps_max, 4) + "$",
+                p.verdict.proved
+                    ? "$q/a\\in[" + dfchaos::format_shortest(kappa_lo) + "," + dfchaos::format_shortest(kappa_hi) +
+                          "]$; from rest on $L_1$: one simple contact after $t_3$, stop in $(t_3, t_0+2\\pi)$ within $" + fmt(p.W, 2) + "$"
+                    : "not proved: " + latex_escape(p.verdict.step),
                 std::to_string(p.pieces.size()));
         // Lemma 4 (and the covering part of Theorem 1) for every b/a up to an explicit bound, by the paper's
         // construction on L2 with its "b/a sufficiently small" made explicit (lemma4_uniform.hpp).
@@ -446,11 +446,10 @@ const Experiment experiment{
         out.macro("CertLemmaFourQLo", dfchaos::format_shortest(u_lo));
         out.macro("CertLemmaFourQHi", dfchaos::format_shortest(u_hi));
         out.macro("CertLemmaFourEpsStar", latex_number(lower_significant(u.eps_star, 3)));
-        tex_row("Lemma 4 (all small b/a)",
-                "$[" + dfchaos::format_shortest(u_lo) + ", " + dfchaos::format_shortest(u_hi) + "] \\times (0, " +
-                    latex_number(lower_significant(u.eps_star, 3)) + "]$",
-                u.verdict.proved ? "(I1)--(I9) for every $b/a$ in the box: at least three tangencies on $L_2$, no other jump, "
-                                   "$\\theta_2$ decreasing along each branch, Lemma~1"
+        tex_row("Lemma 4 (all small b/a)", "$b/a\\le " + latex_number(lower_significant(u.eps_star, 3)) + "$",
+                u.verdict.proved ? "$q/a\\in[" + dfchaos::format_shortest(u_lo) + "," + dfchaos::format_shortest(u_hi) +
+                                       "]$; (I1)--(I9) for every such $b/a$: at least three tangencies on $L_2$, no other jump, "
+                                       "$\\theta_2$ decreasing along each branch, Lemma~1"
                                  : "not proved: " + latex_escape(u.verdict.step),
                 "---");
       }
