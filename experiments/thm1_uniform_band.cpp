@@ -87,10 +87,9 @@ const Experiment experiment{
       out.macro("UniformBandQHi", dfchaos::format_shortest(kBandQHi));
       out.macro("UniformQLo", dfchaos::format_shortest(q_lo));
       const std::string statement =
-          "For every column [q_lo, q_hi] of data/thm1_uniform_band.tsv with proved = 1 and every b/a in (0, b_over_a_max] of that row "
-          "(a = 1, hence every a by scaling), Lemma 4 holds (two disjoint segments J0, J1 of [t2, 3pi/2] carried continuously by T onto "
-          "a set containing [t2, 3pi/2]), hence the covering of Theorem 1: the inequalities (I1)-(I9) of docs/certified.md are "
-          "certified for all those b/a at once; the argument from them to Lemma 4 is a proof on paper.";
+          "For every proved column [q_lo, q_hi] of data/thm1_uniform_band.tsv and every b/a <= its b_over_a_max, Lemma 4 holds, hence "
+          "the covering of Theorem 1: the inequalities (I1)-(I9) of docs/certified.md are proved for all these b/a at once; the "
+          "argument from them is a proof on paper.";
       auto& c = out.claim("cert.thm1.uniform_band", "Theorem 1, Lemma 4", EvidenceKind::Certified, statement).ours();
       c.parameter_object(Json::object().set("q_over_a", Json::array().push(q_lo).push(q_hi)).set("columns", n));
       c.evidence_object(Json::object()

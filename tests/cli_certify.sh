@@ -55,7 +55,7 @@ expect 2 'q:'   arc-l1 --q 0
 expect 2 '--q is required' arc-l1
 expect 2 'b'    arc-l1 --q 0.8 --b 0.001
 expect 0 '"proved": true' lemma4-uniform --q 0.73:0.999
-expect 0 'wider than the paper' lemma4-uniform --q 0.85:0.999
+expect 0 'wider than L2' lemma4-uniform --q 0.85:0.999
 expect 1 '"failed_step": "Lemma 4 for small b/a: (I9) Lemma 1' lemma4-uniform --q 0.62:0.999
 expect 1 '"failed_step": "Lemma 4 for small b/a: (I9) Lemma 1' lemma4-uniform --q 0.85:1
 expect 2 'q:'   lemma4-uniform --q 0.7:2

@@ -71,30 +71,22 @@ std::string statement_b0(double a, double q, double b_low) {
 }
 std::string statement_arc_l1(const ArcL1Proof& p) {
   const bool paper_arc = !p.stop_arc && p.delta_max >= 0.03 * M_PI;  // the default grid ends at 3pi/100 rounded up
-  const std::string arc = paper_arc
-                              ? "The arc L1 = [197pi/100, t3) of the proof of Lemma 4"
-                              : "The arc [2pi - Delta, t3), Delta = " + format_double(p.delta_max) + " (the arc L1 of the proof of Lemma 4 widened)";
-  return arc + ", for every a > 0 and every b, q with 0 < b/a <= " + format_double(p.eps_max) + " and q/a in [" + format_double(p.kappa_lo) + ", " +
-         format_double(p.kappa_hi) +
-         "]: from rest at any theta in it the mass flies, hits the delimiter once, transversally and after t3 (the first zero "
-         "theta1 of G1, Eq. 11, is simple and theta1 > t3), and the progression that follows stops at theta2 in " +
-         (p.stop_arc ? std::string("(t3, 3pi), inside the stop arc [t3, t2 + 2pi) (Eq. 17): T = t2 there wherever Lemma 1 holds.")
-                     : std::string("(t3, t0 + 2pi) (Eq. 17): the mass then waits for t0 + 2pi, so T = t2 on it wherever Lemma 1 holds.")) +
-         (paper_arc ? " b/a <= b_over_a_max is all the smallness needed (beyond it L1 is empty)." : "");
+  const std::string arc = paper_arc ? "The arc L1 = [197pi/100, t3) of Lemma 4's proof"
+                                    : "The arc [2pi - Delta, t3), Delta = " + format_double(p.delta_max) + " (L1 widened)";
+  return arc + ", for every b/a <= " + format_double(p.eps_max) + " and q/a in [" + format_double(p.kappa_lo) + ", " + format_double(p.kappa_hi) +
+         "] at once: from rest on it the first contact (Eq. 11) is simple and after t3, and the progression stops in " +
+         (p.stop_arc ? std::string("(t3, 3pi), inside the stop arc (Eq. 17)") : std::string("(t3, t0 + 2pi) (Eq. 17)")) +
+         ", so T = t2 there wherever Lemma 1 holds.";
 }
 std::string statement_lemma4_uniform(const Lemma4UniformProof& p) {
   const bool paper_L2 = p.w_a <= 0.01 * M_PI && p.w_b >= 0.02 * M_PI && p.w_b < 0.0629;  // the default: L2 widened to doubles
-  const std::string segment = paper_L2 ? "the paper's L2 = [101pi/100, 51pi/50]"
-                                       : "the segment [pi + w_lo, pi + w_hi], w_lo = " + format_double(p.w_a) + ", w_hi = " + format_double(p.w_b) +
-                                             " (wider than the paper's L2)";
-  return "Lemma 4 (hence Theorem 1) for every a > 0 and every b, q with 0 < b/a <= " + format_double(p.eps_star) + " and q/a in [" +
-         format_double(p.kappa_lo) + ", " + format_double(p.kappa_hi) + "], by the paper's construction on " + segment +
-         ": the inequalities (I1)-(I9) of docs/certified.md are proved in ball arithmetic for all such b/a at once (the segment "
-         "holds at least three first-contact tangencies z_1 < z_2 < z_3 of T1 and no other discontinuity, theta2 decreases along "
-         "each branch while it lies in (t2, t3), from each T1(z_i) the progression stops in the stop arc, and Lemma 1 holds on the "
-         "whole box (Eq. 8, so theta2 cannot leave (t2, t3) by a jump)); by the argument written there, T decreases "
-         "continuously on a segment [z_i, theta_c] from T(z_i) = T1(z_i) mod 2pi > 3pi/2 to t2, i = 1, 2. The inequalities are "
-         "certified; the argument that they imply Lemma 4 is a proof on paper, not a computation.";
+  const std::string segment =
+      paper_L2 ? "L2 = [101pi/100, 51pi/50]"
+               : "[pi + w_lo, pi + w_hi], w_lo = " + format_double(p.w_a) + ", w_hi = " + format_double(p.w_b) + " (wider than L2)";
+  return "Lemma 4 (hence Theorem 1) for every b/a <= " + format_double(p.eps_star) + " and q/a in [" + format_double(p.kappa_lo) + ", " +
+         format_double(p.kappa_hi) + "], by the paper's construction on " + segment +
+         ": the inequalities (I1)-(I9) of docs/certified.md are proved in ball arithmetic for all these b/a at once; the argument "
+         "from them to Lemma 4 (written there) is a proof on paper.";
 }
 std::string statement_discontinuities(const std::string& segment, std::size_t n) {
   return "Lemma 2 on " + segment + " at the double values of a, b: T1 has exactly " + std::to_string(n) +
