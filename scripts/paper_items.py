@@ -113,6 +113,17 @@ def evidence_summary(claims):
     return ", ".join(f"{k} {held.count(k)}" for k in STRENGTH if k in held)
 
 
+def fmt_down(x, digits=3):
+    """x > 0 rounded down to `digits` significant digits, for math mode (a bound stated as "every b/a
+    <= X" stays true when X is printed smaller)."""
+    import math
+    e = math.floor(math.log10(x)) - (digits - 1)
+    m = math.floor(x / 10**e)
+    while m * 10**e > x:  # the division may round up
+        m -= 1
+    return fmt(float("%de%d" % (m, e)))
+
+
 def fmt(x):
     """A number for the report: its shortest form that reads back to the same double, powers of ten
     typeset (for math mode)."""
@@ -136,7 +147,10 @@ def scope(claims):
         p = c["parameters"]
         b = p.get("b_over_a", p.get("b"))
         q = p.get("q_over_a", p.get("q"))
-        if isinstance(b, list) and isinstance(q, list) and len(b) == 2 and len(q) == 2:
+        if number(p.get("b_over_a_max")) and isinstance(q, list) and len(q) == 2:  # every b/a up to a bound
+            if (("max", p["b_over_a_max"]), q, None) not in regions:
+                regions.append((("max", p["b_over_a_max"]), q, None))
+        elif isinstance(b, list) and isinstance(q, list) and len(b) == 2 and len(q) == 2:
             ev = c.get("evidence")
             frac = ev.get("proved_fraction_of_band") if isinstance(ev, dict) else None
             if (b, q, frac) not in regions:
@@ -149,6 +163,9 @@ def scope(claims):
             other.add(c["evidence_kind"])
     parts = []
     for b, q, frac in regions:
+        if isinstance(b, tuple):  # every b/a in (0, bound]
+            parts.append(r"every $b/a\le%s$, $q/a\in[%s,%s]$" % (fmt_down(b[1]), fmt(q[0]), fmt(q[1])))
+            continue
         share = r"%d\,\%% of " % int(100 * frac) if number(frac) else ""  # rounded down
         parts.append(share + r"$b/a\in[%s,%s]$, $q/a\in[%s,%s]$" % (fmt(b[0]), fmt(b[1]), fmt(q[0]), fmt(q[1])))
     if points:
