@@ -147,7 +147,8 @@ def scope(claims):
         p = c["parameters"]
         b = p.get("b_over_a", p.get("b"))
         q = p.get("q_over_a", p.get("q"))
-        if number(p.get("b_over_a_max")) and isinstance(q, list) and len(q) == 2:  # every b/a up to a bound
+        # every b/a up to a bound: the item's statement itself (a step of a proof, "(proof)", proves less)
+        if number(p.get("b_over_a_max")) and isinstance(q, list) and len(q) == 2 and "(proof)" not in c["reference"]:
             if (("max", p["b_over_a_max"]), q, None) not in regions:
                 regions.append((("max", p["b_over_a_max"]), q, None))
         elif isinstance(b, list) and isinstance(q, list) and len(b) == 2 and len(q) == 2:
