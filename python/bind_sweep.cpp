@@ -69,8 +69,8 @@ py::dict provenance(const sweep::Spec& spec) {
 }
 
 py::tuple sweep_py(const AxisArg& q_range, const AxisArg& b_range, double a, const ObservablesArg& observables, long long max_branches,
-                   long long superstable_scan, double theta0_fraction, long long transient, long long steps, long long period_max,
-                   double period_tol) {
+                   long long superstable_scan, double theta0_fraction, long long transient, long long steps, long long period_max, double period_tol,
+                   long long region_max_boxes) {
   // The checks of SweepArguments::resolve, in its order and with its option names.
   sweep::Spec s;
   s.a = finite("a", a);
@@ -84,6 +84,7 @@ py::tuple sweep_py(const AxisArg& q_range, const AxisArg& b_range, double a, con
   s.orbit.steps = steps;
   s.period.max = period_max;
   s.period.tol = finite("period-tol", period_tol);
+  s.region_max_boxes = region_max_boxes;
   s.validate();
 
   const long long cells = s.cells();
@@ -114,23 +115,7 @@ py::tuple sweep_py(const AxisArg& q_range, const AxisArg& b_range, double a, con
         out[c++][i] = v.b_over_a;
         status.set(i, sweep::status_name(v.status));
         // The observables in the order of their columns, as format_row writes them.
-        for (sweep::Observable o : sweep::kAllObservables) {
-          if (!s.observables.has(o)) continue;
-          switch (o) {
-            case sweep::Observable::Covering: out[c++][i] = v.covering; break;
-            case sweep::Observable::Superstable:
-              out[c++][i] = v.superstable;
-              out[c++][i] = v.epsilon;
-              break;
-            case sweep::Observable::Lyapunov: out[c++][i] = v.lyapunov; break;
-            case sweep::Observable::Rate: out[c++][i] = v.rate; break;
-            case sweep::Observable::Period: out[c++][i] = v.period; break;
-            case sweep::Observable::Certified:
-              out[c++][i] = v.certified;
-              out[c++][i] = v.certified_step;
-              break;
-          }
-        }
+        for (double x : sweep::observable_values(s, v)) out[c++][i] = x;
         errors[static_cast<std::size_t>(i)] = sweep::error_field(v);
       }
     }
@@ -154,9 +139,10 @@ void bind_sweep(py::module_& m) {
   m.def("sweep", &sweep_py, py::arg("q_range"), py::arg("b_range"), py::arg("a") = d.a, py::arg("observables") = sweep::kDefaultObservables,
         py::arg("max_branches") = d.covering_max_branches, py::arg("superstable_scan") = d.superstable_scan,
         py::arg("theta0_fraction") = d.orbit.theta0_fraction, py::arg("transient") = d.orbit.transient, py::arg("steps") = d.orbit.steps,
-        py::arg("period_max") = d.period.max, py::arg("period_tol") = d.period.tol,
+        py::arg("period_max") = d.period.max, py::arg("period_tol") = d.period.tol, py::arg("region_max_boxes") = d.region_max_boxes,
         R"doc(sweep(q_range, b_range, a=1.0, observables='covering,superstable,lyapunov,rate,period', max_branches=1000000,
-      superstable_scan=400, theta0_fraction=0.5, transient=1000, steps=1000, period_max=64, period_tol=1e-9)
+      superstable_scan=400, theta0_fraction=0.5, transient=1000, steps=1000, period_max=64, period_tol=1e-9,
+      region_max_boxes=4000)
     -> (columns, provenance)
 
 The observables over a grid of the (q/a, b/a) plane, as `dfchaos sweep` computes them: the same checks
@@ -169,13 +155,14 @@ q_range, b_range: an axis as the tool writes it, 'lo:hi:n[:lin|log|mid]' or 'x',
   (lo, hi, n, kind), or one number x; both ends included for lin and log (one value x is (x, x, 1)),
   cell centres for mid.
 observables: a comma-separated string or a list of names among covering, superstable, lyapunov, rate,
-  period, certified (the columns always come in that order).
+  period, certified, region (the columns always come in that order).
 
 Returns a tuple:
   columns     a dict of numpy arrays, one element per cell, keyed by the tool's column names, in its
               order: index (int64; index = i * n_b + j, i over q/a, j over b/a), q_over_a, b_over_a,
               status (str: ok, inadmissible, error), the observables' columns (float64: covering,
-              superstable, epsilon, lyapunov, rate, period, certified, certified_step; nan where not
+              superstable, epsilon, lyapunov, rate, period, certified, certified_step, region,
+              region_uniform, region_boxes, region_stop; nan where not
               computed) and error (str: 'observable: message', '-' when none). pandas.DataFrame(columns)
               is the tool's table.
   provenance  a dict of str: title, version, git_hash, compiler, then each 'key = value' line of the

@@ -11,8 +11,9 @@
 #
 # The grid, 6 x 5 cells with every default observable, holds ok, inadmissible (q/a <= 2 b/a) and error
 # cells (eternal stick-slip at b/a = 0.45). A second grid C, 5 x 5 cells with covering and
-# certified (a proof in ball arithmetic per cell), holds proved and not-proved cells: its outputs
-# too must not depend on threads, shards, resumption or ranks. Each check prints ok/FAIL; exit 1 if
+# certified (a proof in ball arithmetic per cell), holds proved and not-proved cells, and R (region:
+# proofs over each cell's rectangle) cells proved whole and in part: their outputs too must not depend
+# on threads, shards, resumption or ranks. Each check prints ok/FAIL; exit 1 if
 # any failed.
 set -u
 mode=$1
@@ -23,6 +24,9 @@ fails=0
 checks=0
 S=(--q-range 0.6:0.98:6 --b-range 2e-3:0.45:5:log --transient 200 --steps 200)
 C=(--q-range 0.7:1.1:5 --b-range 1e-3:0.45:5:log --observables covering,certified)
+# R: 2 x 4 cells with region (Lemma 4 over each cell's rectangle): below, across and above the
+# uniform bound of each q/a column, 40 boxes a cell at most.
+R=(--q-range 0.85:0.87:2:mid --b-range 1e-3:3.2e-3:4:log --observables covering,region --region-max-boxes 40)
 
 same() {  # same DESCRIPTION FILE-A FILE-B
   checks=$((checks + 1))
@@ -57,6 +61,15 @@ else
   echo "FAIL: the certified grid lacks proved, not-proved or inadmissible cells"; fails=$((fails + 1))
 fi
 
+OMP_NUM_THREADS=1 "$cli" sweep "${R[@]}" > "$tmp/rserial.tsv" || { echo "FAIL: the serial sweep of R"; exit 1; }
+checks=$((checks + 1))
+# region is column 6: R holds cells proved whole and cells proved in part.
+if awk -F'\t' '!/^#/ && NR > 1 && $6 == 1 { w = 1 } !/^#/ && NR > 1 && $6 > 0 && $6 < 1 { p = 1 } END { exit !(w && p) }' "$tmp/rserial.tsv"; then
+  echo "ok:   the region grid holds cells proved whole and in part"
+else
+  echo "FAIL: the region grid lacks cells proved whole or in part"; fails=$((fails + 1))
+fi
+
 case "$mode" in
 serial)
   OMP_NUM_THREADS=2 "$cli" sweep "${S[@]}" --chunk 7 > "$tmp/threads.tsv"
@@ -85,6 +98,16 @@ serial)
   status "certified: stopped by --max-chunks 2" 3 $?
   OMP_NUM_THREADS=2 "$cli" sweep "${C[@]}" --resume "$tmp/cresumed.tsv" --chunk 7 2> /dev/null
   same "certified: stopped and resumed = one run" "$tmp/cserial.tsv" "$tmp/cresumed.tsv"
+
+  OMP_NUM_THREADS=2 "$cli" sweep "${R[@]}" --chunk 3 > "$tmp/rthreads.tsv"
+  same "region: 2 threads, chunks of 3 = 1 thread" "$tmp/rserial.tsv" "$tmp/rthreads.tsv"
+  for i in 0 1 2; do "$cli" sweep "${R[@]}" --shard "$i/3" --out "$tmp/rshard-$i.tsv"; done
+  "$cli" sweep-merge "$tmp/rshard-2.tsv" "$tmp/rshard-0.tsv" "$tmp/rshard-1.tsv" > "$tmp/rmerged.tsv"
+  same "region: 3 shards merged" "$tmp/rserial.tsv" "$tmp/rmerged.tsv"
+  "$cli" sweep "${R[@]}" --resume "$tmp/rresumed.tsv" --chunk 2 --max-chunks 2 2> /dev/null
+  status "region: stopped by --max-chunks 2" 3 $?
+  OMP_NUM_THREADS=2 "$cli" sweep "${R[@]}" --resume "$tmp/rresumed.tsv" --chunk 3 2> /dev/null
+  same "region: stopped and resumed = one run" "$tmp/rserial.tsv" "$tmp/rresumed.tsv"
 
   "$cli" sweep "${S[@]}" --resume "$tmp/resumed.tsv" --chunk 4 --max-chunks 3 2> /dev/null
   status "stopped by --max-chunks 3" 3 $?
@@ -133,6 +156,8 @@ mpi)
   "${launch[@]}" "$mpi" "${S[@]}" > "$tmp/mpi.tsv"
   status "dfchaos-sweep-mpi on 2 ranks" 0 $?
   same "2 MPI ranks = serial" "$tmp/serial.tsv" "$tmp/mpi.tsv"
+  "${launch[@]}" "$mpi" "${R[@]}" --chunk 1 > "$tmp/mpi-region.tsv"
+  same "region: 2 MPI ranks, chunks of 1 = serial" "$tmp/rserial.tsv" "$tmp/mpi-region.tsv"
   "${launch[@]}" "$mpi" "${S[@]}" --chunk 3 --out "$tmp/mpi-out.tsv"
   same "2 MPI ranks, chunks of 3, --out = serial" "$tmp/serial.tsv" "$tmp/mpi-out.tsv"
   "$cli" sweep "${S[@]}" --shard 1/4 > "$tmp/shard.tsv"

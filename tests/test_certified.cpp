@@ -9,6 +9,7 @@
 //    jump of T, is never proved continuous; Lemma 1 below q = a sin(vartheta0)).
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstdlib>
 
@@ -16,6 +17,7 @@
 #include "dfchaos/certified/arc_l1.hpp"
 #include "dfchaos/certified/bisect.hpp"
 #include "dfchaos/certified/lemma4_uniform.hpp"
+#include "dfchaos/certified/rectangle.hpp"
 #include "dfchaos/certified/region.hpp"
 #include "dfchaos/next_hit.hpp"
 #include "dfchaos/progression_stop.hpp"
@@ -450,4 +452,60 @@ TEST(CertifiedLemma4Uniform, ProvedAndTheFloatingBranchesAgree) {
     EXPECT_GT(wide.eps_star, 4 * pr.eps_star) << "q/a=" << kappa;
     for (double f : {0.999, 0.5, 0.1}) check_branches(wide.w_a, wide.w_b, f * wide.eps_star, kappa);
   }
+}
+
+// prove_rectangle: the uniform route where it applies (exactly), boxes above it, and the stops.
+TEST(CertifiedRectangle, UniformRouteAppliesExactlyWhereItsProofHolds) {
+  const Lemma4UniformProof u = prove_lemma4_uniform(0.85, 0.86);  // the paper's L2: every b/a <= eps*
+  ASSERT_TRUE(u.verdict.proved) << u.verdict.describe();
+  const double e = u.eps_star;
+  // Inside: the whole rectangle, no box.
+  RectangleProof r = prove_rectangle(1, e / 8, e / 2, 0.85, 0.86, u);
+  EXPECT_EQ(r.proved_fraction(), 1);
+  EXPECT_EQ(r.attempts, 0);
+  EXPECT_EQ(r.stop, RectangleStop::Decided);
+  EXPECT_EQ(r.uniform_bound, e);
+  // The same rectangle scaled by a = 2: only ratios matter, and the comparisons are exact.
+  r = prove_rectangle(2, e / 4, e, 1.7, 1.72, u);
+  EXPECT_EQ(r.proved_fraction(), 1) << r.uniform_length;
+  // Straddling eps*: the uniform part ends at eps* exactly; above it one box is allowed.
+  RectangleOptions one;
+  one.max_boxes = 1;
+  r = prove_rectangle(1, e / 2, 2 * e, 0.85, 0.86, u, one);
+  EXPECT_EQ(r.uniform_length, e - e / 2);
+  EXPECT_EQ(r.attempts, 1);
+  EXPECT_EQ(r.stop, RectangleStop::BoxBudget);
+  EXPECT_LT(r.proved_fraction(), 1);
+  EXPECT_GE(r.proved_fraction(), 1.0 / 3);
+  // A q range reaching outside the proof's box, or a proof not proved: no uniform route.
+  for (const RectangleProof& x :
+       {prove_rectangle(1, e / 8, e / 2, 0.8499999, 0.86, u, one), prove_rectangle(1, e / 8, e / 2, 0.85, 0.8600001, u, one),
+        prove_rectangle(1, e / 8, e / 2, 0.85, 0.86, Lemma4UniformProof{}, one)}) {
+    EXPECT_EQ(x.uniform_bound, 0);
+    EXPECT_EQ(x.uniform_length, 0);
+  }
+  for (auto bad : {std::array<double, 5>{1, 0, 1e-3, 0.85, 0.86},
+                   {1, 2e-3, 1e-3, 0.85, 0.86},
+                   {1, 1e-3, 1e-3, 0.85, 0.86},
+                   {0, 1e-3, 2e-3, 0.85, 0.86},
+                   {1, 1e-3, 2e-3, 0.86, 0.85},
+                   {1, 1e-3, NAN, 0.85, 0.86}})
+    EXPECT_THROW(prove_rectangle(bad[0], bad[1], bad[2], bad[3], bad[4], u), std::invalid_argument);
+}
+
+TEST(CertifiedRectangle, BoxesAboveTheBoundAndGivingUpBeyondTheCovering) {
+  // Above any uniform bound, in the solid covering region (docs/cluster.md): proved by boxes.
+  RectangleProof r = prove_rectangle(1, 5e-3, 5.005e-3, 0.9, 0.91, Lemma4UniformProof{});
+  EXPECT_EQ(r.proved_fraction(), 1);
+  EXPECT_GT(r.boxes_proved, 0);
+  EXPECT_EQ(r.stop, RectangleStop::Decided);
+  EXPECT_EQ(r.box_length, r.b_hi - r.b_lo);
+  // Far above the sampled edge no box is proved: the run of failures stops it.
+  RectangleOptions o;
+  o.max_failed_run = 3;
+  r = prove_rectangle(1, 0.03, 0.031, 0.9, 0.91, Lemma4UniformProof{}, o);
+  EXPECT_EQ(r.proved_fraction(), 0);
+  EXPECT_EQ(r.boxes_failed, 3);
+  EXPECT_EQ(r.stop, RectangleStop::FailedRun);
+  EXPECT_LT(r.b_reached, 0.031);
 }

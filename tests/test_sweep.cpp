@@ -154,9 +154,42 @@ TEST(Observables, CertifiedIsLastAndNotInTheDefaultSet) {
   EXPECT_EQ(s.columns(), (std::vector<std::string>{"covering", "period", "certified", "certified_step"}));
   const auto d = ObservableSet::parse("observables", kDefaultObservables);
   EXPECT_FALSE(d.has(Observable::Certified));
-  for (Observable o : kAllObservables) EXPECT_EQ(d.has(o), o != Observable::Certified) << observable_name(o);
+  for (Observable o : kAllObservables) EXPECT_EQ(d.has(o), o != Observable::Certified && o != Observable::Region) << observable_name(o);
   EXPECT_EQ(spec_of("0.8:0.9:2", "0.01:0.02:2", "certified,lyapunov").columns(),
             (std::vector<std::string>{"index", "q_over_a", "b_over_a", "status", "lyapunov", "certified", "certified_step", "error"}));
+}
+
+TEST(Observables, RegionHasFourColumnsAfterCertified) {
+  const auto s = ObservableSet::parse("observables", "region,covering,certified");
+  EXPECT_EQ(s.canonical(), "covering,certified,region");
+  EXPECT_EQ(s.columns(),
+            (std::vector<std::string>{"covering", "certified", "certified_step", "region", "region_uniform", "region_boxes", "region_stop"}));
+  // A cell's rectangle reaches the next point: a b/a axis of one point has none.
+  const std::string msg = rejection([] { spec_of("0.8:0.9:2", "0.002", "region").validate(); });
+  EXPECT_NE(msg.find("b-range"), std::string::npos) << msg;
+  EXPECT_NO_THROW(spec_of("0.85", "0.002:0.003:1:mid", "region").validate());
+  auto s2 = spec_of("0.8:0.9:2", "0.01:0.02:2", "region");
+  s2.region_max_boxes = 0;
+  EXPECT_NE(rejection([&] { s2.validate(); }).find("region-max-boxes"), std::string::npos);
+}
+
+TEST(Range, ExtentsTileTheAxis) {
+  const Range lin = Range::parse("q-range", "0.5:1:5");
+  const Range log = Range::parse("b-range", "1e-4:0.1:4:log");
+  const Range mid = Range::parse("q-range", "0.76:0.99:23:mid");
+  for (const Range* r : {&lin, &log, &mid})
+    for (long long i = 0; i + 1 < r->size(); ++i) {
+      EXPECT_EQ(r->extent(i).second, r->extent(i + 1).first) << r->canonical() << " " << i;  // adjacent, no gap, no overlap
+      EXPECT_LE(r->extent(i).first, (*r)[i]);
+      EXPECT_GE(r->extent(i).second, (*r)[i]);
+    }
+  EXPECT_EQ(lin.extent(0), std::make_pair(0.5, lin[1]));
+  EXPECT_DOUBLE_EQ(lin.extent(4).second, 1.125);  // the last reaches one step beyond hi
+  EXPECT_DOUBLE_EQ(log.extent(3).second, 1.0);    // one log step beyond 0.1
+  EXPECT_EQ(mid.extent(0).first, 0.76);           // mid: exactly the range
+  EXPECT_EQ(mid.extent(22).second, 0.99);
+  EXPECT_NEAR(mid.extent(9).second - mid.extent(9).first, 0.01, 1e-15);
+  EXPECT_EQ(Range::parse("q-range", "0.85").extent(0), std::make_pair(0.85, 0.85));  // a single point
 }
 
 TEST(Observables, RejectsUnknownEmptyAndRepeatedNames) {

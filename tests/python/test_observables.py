@@ -133,18 +133,20 @@ def test_derivative_against_difference_quotients():
 @pytest.mark.crossval
 def test_sweep_equals_the_tool_file(cli, tmp_path):
     """A 3 x 4 grid with every observable, an inadmissible cell and error cells (a covering budget
-    too small for b/a = 1e-3): every column, the error texts and the header, byte for byte."""
+    too small for b/a = 1e-3): every column, the error texts and the header, byte for byte. The
+    region cells hold the uniform route (q/a below 1) and boxes (20 a cell)."""
     out = tmp_path / "s.tsv"
     args = ["--a", "2", "--q-range", "0.75:0.95:3", "--b-range", "1e-3:0.45:4:log", "--observables",
-            "covering,superstable,lyapunov,rate,period,certified", "--max-branches", "60", "--superstable-scan", "50",
-            "--theta0-fraction", "0.25", "--transient", "100", "--steps", "200", "--period-max", "20", "--period-tol", "1e-7"]
+            "covering,superstable,lyapunov,rate,period,certified,region", "--max-branches", "60", "--superstable-scan", "50",
+            "--theta0-fraction", "0.25", "--transient", "100", "--steps", "200", "--period-max", "20", "--period-tol", "1e-7",
+            "--region-max-boxes", "20"]
     rc, _, err = cli.run("sweep", *args, "--out", out)
     assert rc == 0, err
     text = out.read_text()
     header, names, rows = split_sweep(text)
     cols, prov = dfchaos.sweep("0.75:0.95:3", (1e-3, 0.45, 4, "log"), a=2, observables=["covering", "superstable", "lyapunov",
-                               "rate", "period", "certified"], max_branches=60, superstable_scan=50, theta0_fraction=0.25,
-                               transient=100, steps=200, period_max=20, period_tol=1e-7)
+                               "rate", "period", "certified", "region"], max_branches=60, superstable_scan=50, theta0_fraction=0.25,
+                               transient=100, steps=200, period_max=20, period_tol=1e-7, region_max_boxes=20)
     assert list(cols) == names == prov["columns"]
     # The header names the build (version, git hash): rebuild both dfchaos_cli and dfchaos_python.
     assert prov["header"] == header, "the module and the tool are not of the same build?"

@@ -65,7 +65,7 @@ void tile_column(const RegionOptions& opt, const ProvedBoxSink& sink, ColumnStat
   double& c = st.c;
   std::vector<Candidate>& cand = st.cand;
   long used = 0;
-  while (b < opt.b_hi && used < budget) {
+  while (b < opt.b_hi && used < budget && !col.gave_up) {
     const double w = std::min(c * b * b / opt.a, opt.b_hi - b);
     ParameterBox box{opt.a, b, b + w, q_lo, q_hi};
     if (box.b_hi == box.b_lo) break;
@@ -93,6 +93,7 @@ void tile_column(const RegionOptions& opt, const ProvedBoxSink& sink, ColumnStat
       col.boxes.push_back(RegionBox{box.b_lo, box.b_hi, q_lo, q_hi, true, sub, "", J0, J1});
       if (sink) sink(st.index, col.boxes.back(), p);
       col.proved_length += box.b_hi - box.b_lo;
+      col.failed_run = 0;
       b = box.b_hi;
       c = std::min(opt.c_max, c * 1.25);
       continue;
@@ -104,8 +105,9 @@ void tile_column(const RegionOptions& opt, const ProvedBoxSink& sink, ColumnStat
     col.boxes.push_back(RegionBox{box.b_lo, box.b_hi, q_lo, q_hi, false, 0, p.verdict.step, {}, {}});
     b = box.b_hi;
     cand.clear();
+    if (++col.failed_run == opt.max_failed_run) col.gave_up = true;
   }
-  st.done = !(b < opt.b_hi);
+  st.done = !(b < opt.b_hi) || col.gave_up;
   col.b_reached = b;
   col.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
@@ -160,7 +162,7 @@ RegionResult certify_region(const RegionOptions& opt, const ProvedBoxSink& sink)
   r.complete = true;
   for (auto& s : st) {
     for (const auto& bx : s.col.boxes) (bx.proved ? r.boxes_proved : r.boxes_failed)++;
-    if (!s.done) r.complete = false;
+    if (!s.done || s.col.gave_up) r.complete = false;
     r.columns.push_back(std::move(s.col));
   }
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

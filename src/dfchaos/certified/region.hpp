@@ -34,8 +34,11 @@ struct RegionOptions {
   double c_max = 0.5;      ///< largest width
   int split_depth = 0;     ///< halvings in b of a failed box (same candidates)
   long max_boxes = 20000;  ///< boxes attempted in total (proved or not), all columns
-  bool progress = false;   ///< print progress on stderr
-  long precision = 64;     ///< bits of the ball arithmetic (64: one limb, enough for b/a >= 1e-5)
+  /// A column gives up after this many boxes in a row were not proved (0: never): beyond the edge of
+  /// the region where coverings exist every box fails, and each failure costs several attempts.
+  int max_failed_run = 0;
+  bool progress = false;  ///< print progress on stderr
+  long precision = 64;    ///< bits of the ball arithmetic (64: one limb, enough for b/a >= 1e-5)
 };
 
 struct RegionBox;
@@ -69,6 +72,8 @@ struct RegionColumn {
   double proved_length = 0;      ///< total b-length of proved boxes
   long attempts = 0;             ///< box proofs attempted (including retries)
   double seconds = 0;            ///< wall time of the column
+  int failed_run = 0;            ///< unproved boxes in a row at the column's end
+  bool gave_up = false;          ///< stopped after RegionOptions::max_failed_run unproved boxes in a row
 };
 
 /// The whole region.
@@ -77,7 +82,7 @@ struct RegionResult {
   std::vector<RegionColumn> columns;  ///< by increasing q
   long boxes_proved = 0;              ///< proved boxes
   long boxes_failed = 0;              ///< boxes given up
-  bool complete = false;              ///< every column reached b_hi within max_boxes
+  bool complete = false;              ///< every column reached b_hi within max_boxes (none gave up)
   double seconds = 0;                 ///< wall time (all threads)
 };
 

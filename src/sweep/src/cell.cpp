@@ -3,11 +3,15 @@
 
 #include <algorithm>
 #include <exception>
+#include <map>
+#include <mutex>
 #include <new>
 #include <optional>
 #include <stdexcept>
+#include <utility>
 
 #include "dfchaos/certified/covering.hpp"
+#include "dfchaos/certified/rectangle.hpp"
 #include "dfchaos/covering.hpp"
 #include "dfchaos/errors.hpp"
 #include "dfchaos/map_derivative.hpp"
@@ -96,6 +100,45 @@ PlaneCertified plane_certified(const Parameters& p, long long max_branches) {
   return {.proved = false, .step = *step};
 }
 
+std::string region_stop_legend() {
+  return "0 decided to the top | 1 gave up after " + std::to_string(kRegionFailedRun) + " unproved boxes in a row | 2 box budget";
+}
+
+namespace {
+/// best_lemma4_uniform for a q/a range, computed once per range and process (it is a pure function
+/// of the range, so the memo cannot change a result; two threads may compute the same range once each).
+certified::Lemma4UniformProof uniform_for(double kappa_lo, double kappa_hi) {
+  static std::mutex lock;
+  static std::map<std::pair<double, double>, certified::Lemma4UniformProof> memo;
+  const std::pair<double, double> key{kappa_lo, kappa_hi};
+  {
+    const std::lock_guard<std::mutex> g(lock);
+    if (auto it = memo.find(key); it != memo.end()) return it->second;
+  }
+  certified::Lemma4UniformProof proof = certified::best_lemma4_uniform(kappa_lo, kappa_hi);
+  const std::lock_guard<std::mutex> g(lock);
+  return memo.emplace(key, std::move(proof)).first->second;
+}
+}  // namespace
+
+PlaneRegion plane_region(const Spec& spec, long long index, long max_boxes) {
+  const auto [k_lo, k_hi] = spec.q_over_a.extent(index / spec.b_over_a.size());
+  const auto [e_lo, e_hi] = spec.b_over_a.extent(index % spec.b_over_a.size());
+  certified::RectangleOptions opt;
+  opt.max_boxes = max_boxes;
+  opt.max_failed_run = kRegionFailedRun;
+  // The uniform route is tried only where it can hold: q/a below 1 (docs/certified.md).
+  const certified::Lemma4UniformProof uniform = k_hi < 1 ? uniform_for(k_lo, k_hi) : certified::Lemma4UniformProof{};
+  const double a = spec.a;
+  const certified::RectangleProof r = certified::prove_rectangle(a, e_lo * a, e_hi * a, k_lo * a, k_hi * a, uniform, opt);
+  PlaneRegion out;
+  out.proved_fraction = r.proved_fraction();
+  out.uniform_bound = r.uniform_bound;
+  out.boxes = r.attempts;
+  out.stop = r.stop;
+  return out;
+}
+
 Lemma4Covering plane_covering(const Parameters& p, long long max_branches, CoveringSearchStats* stats) {
   CoveringSearch search = CoveringSearch::branchwise();
   search.max_branches = max_branches;
@@ -166,31 +209,39 @@ CellValues evaluate_cell(const Spec& spec, long long index) {
       v.certified = c.proved ? 1 : 0;
       v.certified_step = static_cast<double>(static_cast<int>(c.step));
     });
+  if (obs.has(Observable::Region))
+    guarded(v, "region", [&] {
+      const PlaneRegion r = plane_region(spec, index, spec.region_max_boxes);
+      v.region = r.proved_fraction;
+      v.region_uniform = r.uniform_bound;
+      v.region_boxes = static_cast<double>(r.boxes);
+      v.region_stop = static_cast<double>(static_cast<int>(r.stop));
+    });
   return v;
 }
 
 std::string error_field(const CellValues& v) { return one_field(v.error); }
 
-std::string format_row(const Spec& spec, const CellValues& v) {
-  std::string row = std::to_string(v.index) + '\t' + format_double(v.q_over_a) + '\t' + format_double(v.b_over_a) + '\t' + status_name(v.status);
-  auto add = [&row](double x) { row += '\t' + format_double(x); };
+std::vector<double> observable_values(const Spec& spec, const CellValues& v) {
+  std::vector<double> x;
   for (Observable o : kAllObservables) {
     if (!spec.observables.has(o)) continue;
     switch (o) {
-      case Observable::Covering: add(v.covering); break;
-      case Observable::Superstable:
-        add(v.superstable);
-        add(v.epsilon);
-        break;
-      case Observable::Lyapunov: add(v.lyapunov); break;
-      case Observable::Rate: add(v.rate); break;
-      case Observable::Period: add(v.period); break;
-      case Observable::Certified:
-        add(v.certified);
-        add(v.certified_step);
-        break;
+      case Observable::Covering: x.push_back(v.covering); break;
+      case Observable::Superstable: x.insert(x.end(), {v.superstable, v.epsilon}); break;
+      case Observable::Lyapunov: x.push_back(v.lyapunov); break;
+      case Observable::Rate: x.push_back(v.rate); break;
+      case Observable::Period: x.push_back(v.period); break;
+      case Observable::Certified: x.insert(x.end(), {v.certified, v.certified_step}); break;
+      case Observable::Region: x.insert(x.end(), {v.region, v.region_uniform, v.region_boxes, v.region_stop}); break;
     }
   }
+  return x;
+}
+
+std::string format_row(const Spec& spec, const CellValues& v) {
+  std::string row = std::to_string(v.index) + '\t' + format_double(v.q_over_a) + '\t' + format_double(v.b_over_a) + '\t' + status_name(v.status);
+  for (double x : observable_values(spec, v)) row += '\t' + format_double(x);
   row += '\t' + error_field(v) + '\n';
   return row;
 }

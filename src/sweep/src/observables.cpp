@@ -13,6 +13,7 @@ const char* observable_name(Observable o) {
     case Observable::Rate: return "rate";
     case Observable::Period: return "period";
     case Observable::Certified: return "certified";
+    case Observable::Region: return "region";
   }
   return "?";
 }
@@ -63,6 +64,8 @@ std::vector<std::string> ObservableSet::columns() const {
       c.emplace_back(observable_name(o));
       if (o == Observable::Superstable) c.emplace_back("epsilon");
       if (o == Observable::Certified) c.emplace_back("certified_step");
+      if (o == Observable::Region)
+        for (const char* name : {"region_uniform", "region_boxes", "region_stop"}) c.emplace_back(name);
     }
   return c;
 }

@@ -22,9 +22,9 @@ void SweepArguments::add_to(CLI::App* app) {
       ->required()
       ->type_name("LO:HI:N[:KIND]");
   app->add_option("--observables", observables,
-                  "comma-separated: covering,superstable,lyapunov,rate,period,certified\n"
+                  "comma-separated: covering,superstable,lyapunov,rate,period,certified,region\n"
                   "(default " +
-                      std::string(kDefaultObservables) + ": all but certified, a proof per cell of about 5-40 ms)")
+                      std::string(kDefaultObservables) + ": all but certified, a proof per cell of about 5-40 ms, and region)")
       ->type_name("LIST");
   app->add_option("--max-branches", max_branches,
                   "covering's work budget per cell: a cell whose [t2, 3pi/2] holds more branches of T1\n"
@@ -47,6 +47,10 @@ void SweepArguments::add_to(CLI::App* app) {
       ->type_name("N");
   app->add_option("--period-max", period_max, "largest period searched, 1.." + std::to_string(kMaxPeriod) + " (default 64)")->type_name("K");
   app->add_option("--period-tol", period_tol, "closing tolerance of a cycle on the circle, 1e-15..1e-3 (default 1e-9)")->type_name("TOL");
+  app->add_option("--region-max-boxes", region_max_boxes,
+                  "region: box proofs per cell above the uniform bound, 1.." + format_shortest(static_cast<double>(kMaxRegionBoxes)) + " (default " +
+                      std::to_string(kDefaultRegionBoxes) + ")")
+      ->type_name("N");
   app->add_option("--shard", shard, "compute only shard i of N: the cells with index mod N = i (0 <= i < N)")->type_name("i/N");
   auto* o = app->add_option("--out", out, "write to FILE (atomically) instead of stdout")->type_name("FILE");
   auto* r = app->add_option("--resume", resume, "write to FILE, keeping finished chunks in FILE.chunks/; rerun to continue an interrupted run")
@@ -75,6 +79,12 @@ void SweepArguments::add_to(CLI::App* app) {
       "               the code of the step not proved: " +
       certified_step_legend() +
       "\n"
+      "  region       Lemma 4 proved for every parameter of the cell's rectangle (from its point to the next one on each\n"
+      "               axis; mid: its part of the range): the proved fraction of its b/a length; then region_uniform (the\n"
+      "               b/a bound of Lemma 4 for every small b/a on its q/a range, 0 if none), region_boxes (parameter boxes\n"
+      "               tried above it) and region_stop: " +
+      region_stop_legend() +
+      "\n"
       "  error        'observable: message' for each observable that threw, '-' if none\n"
       "The last line is the seal '# end: N rows, sha256 HEX (of every byte above this line)': sweep-merge and --resume\n"
       "refuse a file without it (cut short) or whose bytes or rows do not match it (damaged). --out follows a symlink and\n"
@@ -100,6 +110,7 @@ RunOptions SweepArguments::resolve() const {
   s.orbit.steps = count("steps", steps, 1, kMaxSteps);
   s.period.max = count("period-max", period_max, 1, kMaxPeriod);
   s.period.tol = kit::parse_number("period-tol", period_tol, false);
+  s.region_max_boxes = count("region-max-boxes", region_max_boxes, 1, kMaxRegionBoxes);
   s.validate();
   if (!shard.empty()) r.shard = Shard::parse("shard", shard, s.cells());
   r.out = out;

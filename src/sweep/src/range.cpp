@@ -89,6 +89,18 @@ void Range::require_within(const std::string& option, double open_lo, double ope
 
 double Range::operator[](long long i) const { return axis_[static_cast<int>(i)]; }
 
+std::pair<double, double> Range::extent(long long i) const {
+  const double x = (*this)[i];
+  if (spacing_ == Spacing::Mid) {
+    const auto edge = [this](long long k) { return k == n_ ? hi_ : lo_ + (hi_ - lo_) * static_cast<double>(k) / static_cast<double>(n_); };
+    return {edge(i), edge(i + 1)};
+  }
+  if (n_ == 1) return {x, x};
+  if (i + 1 < n_) return {x, (*this)[i + 1]};
+  const double before = (*this)[n_ - 2];
+  return {x, spacing_ == Spacing::Log ? x * (x / before) : x + (x - before)};
+}
+
 std::string Range::canonical() const {
   return format_shortest(lo_) + ":" + format_shortest(hi_) + ":" + std::to_string(n_) + ":" + spacing_name(spacing_);
 }

@@ -62,6 +62,10 @@ void Spec::validate() const {
                            static_cast<double>(superstable_scan));
   if (covering_max_branches < 1 || covering_max_branches > kMaxCoveringBranches)
     throw InvalidParameter("max-branches", "1 <= max-branches <= " + count_text(kMaxCoveringBranches), static_cast<double>(covering_max_branches));
+  if (region_max_boxes < 1 || region_max_boxes > kMaxRegionBoxes)
+    throw InvalidParameter("region-max-boxes", "1 <= region-max-boxes <= " + count_text(kMaxRegionBoxes), static_cast<double>(region_max_boxes));
+  if (observables.has(Observable::Region) && b_over_a.size() < 2 && b_over_a.spacing() != Spacing::Mid)
+    throw InvalidParameter("b-range", "region proves over each cell's b/a interval, up to the next point: give two points or more, or lo:hi:n:mid");
   orbit.validate();
   period.validate();
   if (observables.needs_orbit()) {
@@ -99,6 +103,13 @@ std::vector<std::string> Spec::header_lines() const {
                 "  (certified: 1 when Lemma 4 is proved in ball arithmetic at the cell's double parameters, "
                 "prove_covering with its default options; else 0 and the code of the step not proved; "
                 "a proof at one point, not over the cell)");
+  if (observables.has(Observable::Region)) {
+    h.push_back("region_max_boxes = " + count_text(region_max_boxes) + "  (box proofs per cell above the uniform bound)");
+    h.push_back("region_stop = " + region_stop_legend() +
+                "  (region: the proved fraction of the b/a length of the cell's rectangle, from its point to the next one on each "
+                "axis (mid: its part of the range); proved for every parameter in it, below region_uniform by Lemma 4 for every "
+                "small b/a, above by parameter boxes)");
+  }
   h.push_back("cells = " + count_text(cells()) + "  (index = i * " + count_text(b_over_a.size()) +
               " + j, i over q_over_a, j over b_over_a; a = A, q = q_over_a A, b = b_over_a A)");
   h.emplace_back(

@@ -6,7 +6,9 @@
 #include <cmath>
 #include <optional>
 #include <string>
+#include <vector>
 
+#include "dfchaos/certified/rectangle.hpp"
 #include "dfchaos/covering.hpp"
 #include "dfchaos/parameters.hpp"
 #include "sweep/spec.hpp"
@@ -77,6 +79,22 @@ struct PlaneCertified {
 /// the cell is then an error cell, not a wrong code).
 PlaneCertified plane_certified(const Parameters& p, long long max_branches = kDefaultMaxCoveringBranches);
 
+/// The legend of the `region_stop` codes (certified::RectangleStop), "0 decided to the top | 1 ... | 2 ...",
+/// as written in the header.
+std::string region_stop_legend();
+/// Theorem 1 over the rectangle of a cell (the `region` columns).
+struct PlaneRegion {
+  double proved_fraction = 0;                                         ///< proved part of the rectangle's b-length
+  double uniform_bound = 0;                                           ///< b/a bound of the uniform proof for its q/a range, 0 when none
+  long boxes = 0;                                                     ///< box proofs attempted above that bound
+  certified::RectangleStop stop = certified::RectangleStop::Decided;  ///< why it was not decided to its top
+};
+/// The rule of the `region` columns: certified::prove_rectangle over the cell's rectangle
+/// (Range::extent of its q/a and b/a, times a), with the uniform proof of
+/// certified::best_lemma4_uniform for its q/a range (computed once per q/a range and process: a
+/// pure function of the range) and at most `max_boxes` box proofs.
+/// @throws std::invalid_argument for a rectangle of zero width in b (Spec::validate refuses those axes).
+PlaneRegion plane_region(const Spec& spec, long long index, long max_boxes);
 /// The orbit observables at one parameter set: `lyapunov`, `rate` and `period` of a sweep's cell,
 /// from the phase theta0 (a sweep's cell starts at orbit_start(p, OrbitSettings::theta0_fraction)).
 struct PlaneOrbit {
@@ -121,6 +139,10 @@ struct CellValues {
   double period = NAN;                 ///< the period of the cycle at the orbit's end, 0 if none (see Spec)
   double certified = NAN;              ///< plane_certified(p).proved as 0/1
   double certified_step = NAN;         ///< plane_certified(p).step as its code (0 when proved)
+  double region = NAN;                 ///< plane_region(spec, index).proved_fraction
+  double region_uniform = NAN;         ///< plane_region(spec, index).uniform_bound
+  double region_boxes = NAN;           ///< plane_region(spec, index).boxes
+  double region_stop = NAN;            ///< plane_region(spec, index).stop as its code
   /// With lyapunov or rate: the image of the orbit's last step with a stop (orbit_statistics'
   /// last_stop_image), NaN if none. Not a column of the output.
   double stop_image = NAN;
@@ -128,7 +150,7 @@ struct CellValues {
 };
 
 /// Computes the observables of cell `index` of `spec`. Never throws for a failure of the cell:
-/// each group (covering; superstable; the orbit behind lyapunov, rate and period; certified) that throws is
+/// each group (covering; superstable; the orbit behind lyapunov, rate and period; certified; region) that throws is
 /// recorded in `error` and its values stay NaN; the others are kept. Running out of memory is not
 /// a failure of the cell (another run, with more memory, would answer): std::bad_alloc passes.
 CellValues evaluate_cell(const Spec& spec, long long index);
@@ -137,6 +159,9 @@ CellValues evaluate_cell(const Spec& spec, long long index);
 /// when it has none.
 std::string error_field(const CellValues& v);
 
+/// The values of the observables' columns of a cell, in the order of Spec::columns() (between status
+/// and error): what a row holds and the Python module returns.
+std::vector<double> observable_values(const Spec& spec, const CellValues& v);
 /// The row of a cell: the spec's columns, tab-separated, numbers in %.17g, ending in '\n'.
 std::string format_row(const Spec& spec, const CellValues& v);
 

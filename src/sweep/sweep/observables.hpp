@@ -17,6 +17,13 @@
 ///    1), and `certified_step`, the code of the step that was not proved (CertifiedStep; 0 when
 ///    proved). Certified evidence at one point of the cell, not a proof over the cell's area. Not in
 ///    the default set: about 5 to 40 ms per cell.
+///  - `region`: Lemma 4 / Theorem 1 proved for *every* parameter of the cell's rectangle (the cell's
+///    extents on both axes, Range::extent) by certified::prove_rectangle: `region` is the proved
+///    fraction of its b-length (0 to 1), `region_uniform` the b/a bound of the uniform proof for the
+///    cell's q/a range (certified::best_lemma4_uniform, 0 when none), `region_boxes` the parameter
+///    boxes attempted above that bound, `region_stop` why the rectangle was not decided to its top
+///    (RegionStop). Not in the default set: from nothing (below the uniform bound) to some seconds
+///    per cell.
 /// Their columns always come in this order, whatever the order in which they were asked for.
 #pragma once
 
@@ -26,13 +33,13 @@
 namespace dfchaos::sweep {
 
 /// One observable.
-enum class Observable { Covering, Superstable, Lyapunov, Rate, Period, Certified };
+enum class Observable { Covering, Superstable, Lyapunov, Rate, Period, Certified, Region };
 
 /// All observables, in column order.
-inline constexpr Observable kAllObservables[] = {Observable::Covering, Observable::Superstable, Observable::Lyapunov,
-                                                 Observable::Rate,     Observable::Period,      Observable::Certified};
+inline constexpr Observable kAllObservables[] = {Observable::Covering, Observable::Superstable, Observable::Lyapunov, Observable::Rate,
+                                                 Observable::Period,   Observable::Certified,   Observable::Region};
 
-/// The observables computed when none are named (`--observables` omitted): all but `certified`.
+/// The observables computed when none are named (`--observables` omitted): all but `certified` and `region`.
 inline constexpr const char* kDefaultObservables = "covering,superstable,lyapunov,rate,period";
 
 /// The name as written on the command line and in the header ("covering", ...).
@@ -51,7 +58,8 @@ class ObservableSet {
   /// The canonical list, in column order, e.g. "covering,superstable".
   std::string canonical() const;
   /// The data columns of these observables, in order (superstable gives two: superstable, epsilon;
-  /// certified two: certified, certified_step).
+  /// certified two: certified, certified_step; region four: region, region_uniform, region_boxes,
+  /// region_stop).
   std::vector<std::string> columns() const;
 
  private:

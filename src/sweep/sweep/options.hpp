@@ -19,6 +19,7 @@ struct SweepArguments {
   std::string superstable_scan = "400", theta0 = "0.5", transient = "1000", steps = "1000";
   std::string old_theta0;  ///< --theta0, refused (the start is --theta0-fraction)
   std::string period_max = "64", period_tol = "1e-9";
+  std::string region_max_boxes = std::to_string(kDefaultRegionBoxes);
   std::string shard, out, resume, chunk = std::to_string(kDefaultChunk), max_chunks = "0";
   bool progress = false;
 

@@ -17,6 +17,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 
 #include "kit/grid.hpp"
 
@@ -47,6 +48,12 @@ class Range {
   Spacing spacing() const { return spacing_; }  ///< lin, log or mid
   /// The canonical text `lo:hi:n:kind` (numbers in %.17g).
   std::string canonical() const;
+  /// The interval point i stands for, as the `region` observable proves over it: for `lin` and
+  /// `log`, from the point to the next one ([x_i, x_(i+1)]; the last point reaches as far again:
+  /// x + (x - x_(n-2)), resp. x^2/x_(n-2)), so that the intervals tile [lo, beyond hi]; for `mid`,
+  /// the i-th of n equal parts of [lo, hi] (its ends lo + (hi - lo) i/n, the last ending at hi
+  /// exactly); for a single point, [x, x].
+  std::pair<double, double> extent(long long i) const;
 
  private:
   double lo_ = 0, hi_ = 0;

@@ -37,6 +37,9 @@ inline constexpr long long kMaxPeriod = 10'000;                   ///< largest p
 inline constexpr long long kMinSuperstableScan = 2;               ///< superstable_check's least scan
 inline constexpr long long kMaxSuperstableScan = 1'000'000;       ///< most scan points of superstable_check
 inline constexpr long long kMaxCoveringBranches = 1'000'000'000;  ///< largest covering work budget per cell
+inline constexpr long long kMaxRegionBoxes = 100'000'000;         ///< largest box budget per cell of `region`
+inline constexpr long long kDefaultRegionBoxes = 4000;            ///< default box budget per cell of `region`
+inline constexpr int kRegionFailedRun = 16;                       ///< `region` gives up a cell after this many unproved boxes in a row
 /// Most evaluations of T by the orbits of a whole sweep, cells·(transient + steps + period_max):
 /// 10^12, some 25 core-days at 2 µs per evaluation.
 inline constexpr double kMaxOrbitEvaluations = 1e12;
@@ -74,6 +77,8 @@ struct Spec {
   /// The covering search's work budget per cell (CoveringSearch::max_branches, 1..kMaxCoveringBranches):
   /// a cell with more branches of T1 in [t2, 3pi/2] is an error cell naming the budget.
   long long covering_max_branches = kDefaultMaxCoveringBranches;
+  /// Box proofs attempted per cell by `region` (1..kMaxRegionBoxes) above the uniform bound.
+  long long region_max_boxes = kDefaultRegionBoxes;
   OrbitSettings orbit;    ///< the orbit (lyapunov, rate, period)
   PeriodSettings period;  ///< the period search
 
@@ -81,7 +86,8 @@ struct Spec {
   /// a·(q/a), a·(b/a) normal numbers for every cell; every q/a in
   /// (0, inf) and every b/a in [kMinMapRatio, 1/2) (the joint condition q/a > 2 b/a is checked per cell, whose
   /// status is then `inadmissible`); the cell count, the orbit counts and the total orbit work
-  /// bounded (the k* constants). @throws InvalidParameter naming the option (as on the command line).
+  /// bounded (the k* constants); with `region`, a b/a axis whose cells have a width (two points or
+  /// more, or `mid`). @throws InvalidParameter naming the option (as on the command line).
   void validate() const;
 
   long long cells() const { return q_over_a.size() * b_over_a.size(); }             ///< n_q·n_b
