@@ -5,7 +5,7 @@
 /// certified covering segments J0, J1 exist (the same for the whole box). The band is tiled column by
 /// column in q/a, upwards in b/a, with boxes of width about c (b/a)^2 (certified_region in
 /// region.hpp). The work is bounded by a number of boxes, so the output is deterministic; the
-/// default band is small enough for `make reproduce`, `make certify-region` tiles a larger one.
+/// default band is small enough for `make reproduce`, `make certify-band` tiles a larger one.
 ///
 /// Outputs: data/certified_region.tsv (one row per box: proved or not, with the failed step; for a
 /// proved box the candidate ends of J0 and J1, with which `dfchaos certify covering --J0 --J1`

@@ -9,7 +9,9 @@ SWEEP.tsv is the output of `dfchaos sweep --observables covering,region` (or of 
 its seal ('# end: N rows, sha256 HEX') is checked first, and a file cut short, damaged or of another
 spec is refused (exit 2, nothing written). SECONDS is the run's wall time, WORKERS how it ran (e.g.
 "2 MPI ranks"). Writes OUTDIR/certify-region.tex (LaTeX macros \\dfcCertRegion...) and
-OUTDIR/certify-region-columns.tsv (one row per q/a column), each whole or not at all.
+OUTDIR/certify-region-columns.tsv (one row per q/a column), each whole or not at all. The coverage is
+given over the whole b/a axis and over its part b/a >= 1e-4, where the report's sampled plane
+(thm1_parameter_plane) has points.
 
 The measure: every cell of the sweep stands for its rectangle (docs/cluster.md): on a log b/a axis
 and a `mid` q/a axis the rectangles have equal area in (q/a, log b/a), so an area is a count of cells.
@@ -63,6 +65,18 @@ def read_sweep(path):
     return header, columns, rows
 
 
+def tex_number(text):
+    """A number of an axis, for math mode: 10^{-6} for 1e-6, 2\\cdot 10^{-3} for 2e-3, else as written."""
+    x = float(text)
+    if x != 0 and abs(math.log10(abs(x))) >= 3:
+        e = math.floor(math.log10(abs(x)))
+        m = x / 10**e
+        m_text = ("%.6g" % m)
+        if float(m_text) * 10**e == x or abs(float(m_text) * 10**e - x) <= 1e-15 * abs(x):
+            return ("10^{%d}" % e) if m_text == "1" else "%s\\cdot 10^{%d}" % (m_text, e)
+    return text
+
+
 def fmt_down(x, digits):
     """x >= 0 rounded down to `digits` decimals (a coverage printed never exceeds the computed one)."""
     s = math.floor(x * 10**digits) / 10**digits
@@ -94,6 +108,10 @@ def main():
     if not covering:
         refuse("no cell with a sampled covering: nothing to measure")
     covered = sum(float(r[col["region"]]) for r in covering)
+    # The same share where the report's sampled plane has points (b/a >= 1e-4, thm1_parameter_plane):
+    # below it the uniform route proves everything, which lifts the share over the whole axis.
+    upper = [r for r in covering if float(r[col["b_over_a"]]) >= 1e-4]
+    covered_upper = sum(float(r[col["region"]]) for r in upper) / len(upper) if upper else float("nan")
     proved_all = sum(float(r[col["region"]]) for r in ok)
     proved_outside = sum(float(r[col["region"]]) for r in ok if r[col["covering"]] != "1")
     boxes = sum(int(float(r[col["region_boxes"]])) for r in ok)
@@ -125,6 +143,7 @@ def main():
     qlo, qhi, qn, _ = q_axis.split(":")
     macros = {
         "Coverage": fmt_down(100 * covered / len(covering), 1),
+        "CoverageAbovePlaneLo": fmt_down(100 * covered_upper, 1) if upper else "nan",
         "ProvedArea": fmt_down(100 * proved_all / cells, 1),
         "ProvedOutside": fmt_down(100 * proved_outside / cells, 1),
         "Cells": number(cells),
@@ -134,7 +153,7 @@ def main():
         "Seconds": number(seconds),
         "Minutes": "%.0f" % (seconds / 60),
         "Workers": workers,
-        "QLo": qlo, "QHi": qhi, "QN": qn, "BLo": lo, "BHi": hi, "BN": n,
+        "QLo": tex_number(qlo), "QHi": tex_number(qhi), "QN": qn, "BLo": tex_number(lo), "BHi": tex_number(hi), "BN": n,
         "UniformMin": "%.3g" % min(uniform), "UniformMax": "%.3g" % max(uniform),
         "Commit": "unknown",
         "When": datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d"),
@@ -145,8 +164,11 @@ def main():
             macros["Commit"] = line.split("(", 1)[1].split(")", 1)[0]
     tex = ["% SPDX-License-Identifier: GPL-3.0-or-later",
            "% written by scripts/region_summary.py from " + os.path.basename(path) + "; do not edit"]
+    text_macros = ("Workers", "Commit", "When")  # free text: made safe for LaTeX; the others are numbers or math
     for k, v in macros.items():
-        v = str(v).replace("\\", "").replace("{", "").replace("}", "").replace("_", "\\_").replace("%", "\\%")
+        v = str(v)
+        if k in text_macros:
+            v = "".join(ch for ch in v if ch.isalnum() or ch in " .-+:/()")
         tex.append("\\def\\dfcCertRegion%s{%s}" % (k, v))
     for name, text in (("certify-region.tex", "\n".join(tex) + "\n"), ("certify-region-columns.tsv", "\n".join(table) + "\n")):
         fd, tmp = tempfile.mkstemp(dir=outdir, prefix="." + name)
