@@ -20,7 +20,7 @@ python3 "$root/scripts/claims_map.py" "$abs" "$root" > "$abs/claims-map.log" || 
 # Every figure script has its figure in the report.
 for g in "$root"/figures/fig_*.gp; do
   name=$(basename "$g" .gp)
-  if ! grep -qF -e "\\dfcfigure{$name}" -e "\\dfcfigurenodata{$name}" "$root/paper/report.tex"; then
+  if ! grep -qF -e "\\dfcfigure{$name}" -e "\\dfcfigureof{$name}" -e "\\dfcfigurenodata{$name}" "$root/paper/report.tex"; then
     echo "build-report: figure $name (figures/$name.gp) is not in paper/report.tex" >&2
     exit 1
   fi

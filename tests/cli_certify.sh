@@ -82,5 +82,15 @@ expect 2 "certify: '-b' before the statement covering" -b 0.3 covering --b 0.001
 expect 2 'not expected' discontinuities --b 0.01 --q 0.85
 expect 2 'not expected' vartheta0 --b 0.01
 expect 2 '--J0 requires --J1' covering --b 0.001 --q 0.85 --J0 3.3:3.4
+# The usage line names the statement (the hidden positional that catches a wrong word is not shown as
+# "[]"), and a statement's own usage is its own.
+checks=$((checks + 1))
+usage=$("$cli" certify --help | grep '^Usage:')
+if [[ "$usage" == *"certify STATEMENT [OPTIONS]" && "$usage" != *"[]"* ]] &&
+   "$cli" certify covering --help | grep -q '^Usage: .*certify covering \[OPTIONS\]$'; then
+  echo "ok:   certify --help: $usage"
+else
+  echo "FAIL: certify --help usage: $usage"; fails=$((fails + 1))
+fi
 echo "cli_certify: $checks checks, $fails failures"
 exit $((fails > 0))

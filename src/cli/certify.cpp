@@ -105,6 +105,15 @@ void add_parameter(CLI::App* s, std::string& v, const char* names, const char* w
       ->required();
 }
 
+/// The usage line of `certify`: the statement is a subcommand; the hidden positional that catches a
+/// word naming none would otherwise show as "[]" (CLI11 2.1 has no App::usage).
+class CertifyUsage : public CLI::Formatter {
+ public:
+  std::string make_usage(const CLI::App* /*app*/, std::string name) const override {
+    return get_label("Usage") + ": " + name + " STATEMENT [OPTIONS]\n";
+  }
+};
+
 }  // namespace
 
 CLI::App* add_certify(CLI::App& app, CertifyOptions& o) {
@@ -189,6 +198,7 @@ CLI::App* add_certify(CLI::App& app, CertifyOptions& o) {
       "One subcommand per statement: 'dfchaos certify STATEMENT --help' lists its options, defaults and ranges.\n"
       "A proof whose cost is not bounded by its input (a tiny b/a needs many branches of T1) gives up within the\n"
       "budget: one line on stderr naming the budget that ran out, nothing on stdout, exit status 1.");
+  c->formatter(std::make_shared<CertifyUsage>());  // after the statements, which would inherit it
   return c;
 }
 
