@@ -419,10 +419,16 @@ const Experiment experiment{
         const auto t0 = Clock::now();
         const ArcL1Proof p = prove_arc_l1(kappa_lo, kappa_hi);
         time_row("arc L1 of Lemma 4's proof", since(t0));
+        // A claim for every b/a up to a bound and q/a in a box, with its certificate when proved.
+        const auto claim_up_to_bound = [&](const char* id, const char* items, const std::string& statement, Json json,
+                                           const certified::Outcome& verdict, double k_lo, double k_hi, double bound, const auto& certificate) {
+          if (verdict.proved) run.certificate(id, certificate_text(certificate()));
+          certified_claim(out, id, items, statement, std::move(json), verdict.proved, &verdict)
+              .parameter_object(Json::object().set("q_over_a", Json::array().push(k_lo).push(k_hi)).set("b_over_a_max", bound));
+        };
         const std::string statement = statement_arc_l1(p);
-        if (p.verdict.proved) run.certificate("cert.lemma4.arc_l1", certificate_text(certificate_arc_l1(1.0, p, statement)));
-        auto& c = certified_claim(out, "cert.lemma4.arc_l1", "Lemma 4 (proof)", statement, to_json(1.0, p), p.verdict.proved, &p.verdict);
-        c.parameter_object(Json::object().set("q_over_a", Json::array().push(kappa_lo).push(kappa_hi)).set("b_over_a_max", p.eps_max));
+        claim_up_to_bound("cert.lemma4.arc_l1", "Lemma 4 (proof)", statement, to_json(1.0, p), p.verdict, kappa_lo, kappa_hi, p.eps_max,
+                          [&] { return certificate_arc_l1(1.0, p, statement); });
         out.macro("CertArcLOneEpsMax", lower_decimal(p.eps_max, 4));
         out.macro("CertArcLOneQLo", dfchaos::format_shortest(kappa_lo));
         out.macro("CertArcLOneW", fmt(p.W, 2));
@@ -440,9 +446,8 @@ const Experiment experiment{
         const Lemma4UniformProof u = prove_lemma4_uniform(u_lo, u_hi);
         time_row("Lemma 4 for every small b/a", since(tu));
         const std::string su = statement_lemma4_uniform(u);
-        if (u.verdict.proved) run.certificate("cert.lemma4.uniform_small_b", certificate_text(certificate_lemma4_uniform(1.0, u, su)));
-        auto& cu = certified_claim(out, "cert.lemma4.uniform_small_b", "Lemma 4, Theorem 1", su, to_json(1.0, u), u.verdict.proved, &u.verdict);
-        cu.parameter_object(Json::object().set("q_over_a", Json::array().push(u_lo).push(u_hi)).set("b_over_a_max", u.eps_star));
+        claim_up_to_bound("cert.lemma4.uniform_small_b", "Lemma 4, Theorem 1", su, to_json(1.0, u), u.verdict, u_lo, u_hi, u.eps_star,
+                          [&] { return certificate_lemma4_uniform(1.0, u, su); });
         out.macro("CertLemmaFourQLo", dfchaos::format_shortest(u_lo));
         out.macro("CertLemmaFourQHi", dfchaos::format_shortest(u_hi));
         out.macro("CertLemmaFourEpsStar", latex_number(lower_significant(u.eps_star, 3)));

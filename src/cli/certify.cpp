@@ -3,6 +3,7 @@
 
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cli.hpp"
@@ -173,19 +174,19 @@ CLI::App* add_certify(CLI::App& app, CertifyOptions& o) {
   sup->add_option("--window", o.window, "certify the window LO:HI in b (a floating estimate) and its edges, at this q")->type_name("LO:HI");
   add_common(sup, o, true);
 
-  auto* arc = c->add_subcommand("arc-l1",
-                                "proof of Lemma 4, arc L1 = [197pi/100, t3): from rest there the progression stops in (t3, t0 + 2pi), "
-                                "for every b/a up to an explicit bound and q/a in a box");
-  add_a(arc, o);
-  add_parameter(arc, o.q, kQ, "q, the largest dry friction (q/a is what the proof is about; 0 < q <= a)", true);
-  add_common(arc, o, true);
-
-  auto* uni = c->add_subcommand("lemma4-uniform",
-                                "Lemma 4 / Theorem 1 for every b/a up to an explicit bound and q/a in a box: the paper's construction "
-                                "on L2, its inequalities proved for all such b/a at once");
-  add_a(uni, o);
-  add_parameter(uni, o.q, kQ, "q, the largest dry friction (q/a is what the proof is about; 0 < q <= a)", true);
-  add_common(uni, o, true);
+  // The statements for every b/a up to a bound at once: a and a box of q only.
+  for (const auto& [name, text] :
+       {std::pair<const char*, const char*>{"arc-l1",
+                                            "proof of Lemma 4, arc L1 = [197pi/100, t3): from rest there the progression stops in (t3, t0 + "
+                                            "2pi), for every b/a up to an explicit bound and q/a in a box"},
+        {"lemma4-uniform",
+         "Lemma 4 / Theorem 1 for every b/a up to an explicit bound and q/a in a box: the paper's construction on L2, its inequalities "
+         "proved for all such b/a at once"}}) {
+    auto* s = c->add_subcommand(name, text);
+    add_a(s, o);
+    add_parameter(s, o.q, kQ, "q, the largest dry friction (q/a is what the proof is about; 0 < q <= a)", true);
+    add_common(s, o, true);
+  }
 
   // A word that names no statement, with the options after it, lands in `what` and is refused
   // first, by name (set after the statements, which would inherit it: they refuse extras).
