@@ -70,19 +70,17 @@ std::string statement_b0(double a, double q, double b_low) {
          " (u(t2) < 0 proved over b-balls covering [0, b_low]): b0(q) >= " + format_double(b_low) + ".";
 }
 std::string statement_arc_l1(const ArcL1Proof& p) {
-  const bool paper_arc = !p.stop_arc && p.delta_max >= 0.03 * M_PI;  // the default grid ends at 3pi/100 rounded up
-  const std::string arc = paper_arc ? "The arc L1 = [197pi/100, t3) of Lemma 4's proof"
-                                    : "The arc [2pi - Delta, t3), Delta = " + format_double(p.delta_max) + " (L1 widened)";
+  const std::string arc = p.paper_arc ? "The arc L1 = [197pi/100, t3) of Lemma 4's proof"
+                                      : "The arc [2pi - Delta, t3), Delta = " + format_double(p.delta_max) + " (L1 widened)";
   return arc + ", for every b/a <= " + format_double(p.eps_max) + " and q/a in [" + format_double(p.kappa_lo) + ", " + format_double(p.kappa_hi) +
          "] at once: from rest on it the first contact (Eq. 11) is simple and after t3, and the progression stops in " +
          (p.stop_arc ? std::string("(t3, 3pi), inside the stop arc (Eq. 17)") : std::string("(t3, t0 + 2pi) (Eq. 17)")) +
          ", so T = t2 there wherever Lemma 1 holds.";
 }
 std::string statement_lemma4_uniform(const Lemma4UniformProof& p) {
-  const bool paper_L2 = p.w_a <= 0.01 * M_PI && p.w_b >= 0.02 * M_PI && p.w_b < 0.0629;  // the default: L2 widened to doubles
   const std::string segment =
-      paper_L2 ? "L2 = [101pi/100, 51pi/50]"
-               : "[pi + w_lo, pi + w_hi], w_lo = " + format_double(p.w_a) + ", w_hi = " + format_double(p.w_b) + " (wider than L2)";
+      p.paper_L2 ? "L2 = [101pi/100, 51pi/50]"
+                 : "[pi + w_lo, pi + w_hi], w_lo = " + format_double(p.w_a) + ", w_hi = " + format_double(p.w_b) + " (wider than L2)";
   return "Lemma 4 (hence Theorem 1) for every b/a <= " + format_double(p.eps_star) + " and q/a in [" + format_double(p.kappa_lo) + ", " +
          format_double(p.kappa_hi) + "], by the paper's construction on " + segment +
          ": the inequalities (I1)-(I9) of docs/certified.md are proved in ball arithmetic for all these b/a at once; the argument "

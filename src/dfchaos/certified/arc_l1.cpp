@@ -41,6 +41,7 @@ ArcL1Proof prove_arc_l1(double kappa_lo, double kappa_hi, const ArcL1Options& op
   const Ball Delta = paper_arc ? Ball::pi() * 3.0 / 100.0 : Ball(opt.delta_max);
   const Ball sinD = sin(Delta);
   r.delta_max = paper_arc ? Delta.upper() : opt.delta_max;
+  r.paper_arc = paper_arc;
   r.eps_max = std::isnan(opt.eps_max) ? (sinD / 2.0).lower() : opt.eps_max;  // default: 2 eps_max <= sin(Delta)
   if (!(r.eps_max > 0 && r.eps_max < 0.25)) return fail("parameters", "0 < b/a max < 1/4");
   const double delta_end = r.delta_max, S = r.S;

@@ -70,14 +70,15 @@ struct ArcL1Piece {
 /// The statement of the file comment over \f$\varepsilon \in (0, \varepsilon_{\max}]\f$ and
 /// \f$q/a \in [\kappa_{lo}, \kappa_{hi}]\f$.
 struct ArcL1Proof {
-  Outcome verdict;        ///< proved: every start of L1 ends its first progression in (t3, t0 + 2 pi)
-  double kappa_lo = 0;    ///< the box of q/a: lower end
-  double kappa_hi = 0;    ///< upper end
-  double delta_max = 0;   ///< \f$\Delta\f$ as the double that ends the grid: the arc is \f$[2\pi - \Delta, t_3)\f$
-  bool stop_arc = false;  ///< the weaker conclusion (ArcL1Options::stop_arc) was proved
-  double eps_max = 0;     ///< \f$\varepsilon_{\max}\f$: the statement holds for every \f$0 < b/a \le\f$ this
-  double S = 0.3;         ///< the flights considered: \f$s \in [0, S]\f$
-  double W = 0;           ///< the progression stops within W of the impact (the paper\'s conclusion)
+  Outcome verdict;         ///< proved: every start of L1 ends its first progression in (t3, t0 + 2 pi)
+  double kappa_lo = 0;     ///< the box of q/a: lower end
+  double kappa_hi = 0;     ///< upper end
+  double delta_max = 0;    ///< \f$\Delta\f$ as the double that ends the grid: the arc is \f$[2\pi - \Delta, t_3)\f$
+  bool paper_arc = false;  ///< the arc is the paper's L1 (ArcL1Options::delta_max NaN): \f$\Delta = 3\pi/100\f$, enclosed
+  bool stop_arc = false;   ///< the weaker conclusion (ArcL1Options::stop_arc) was proved
+  double eps_max = 0;      ///< \f$\varepsilon_{\max}\f$: the statement holds for every \f$0 < b/a \le\f$ this
+  double S = 0.3;          ///< the flights considered: \f$s \in [0, S]\f$
+  double W = 0;            ///< the progression stops within W of the impact (the paper\'s conclusion)
   /// (stop_arc) per row of the grid, tau with the progression velocity u < 0 at 2pi + tau (the stop lies before)
   std::vector<double> tau;
   double g_lo = 0;                 ///< \f$\min g\f$ (a double below every enclosure)

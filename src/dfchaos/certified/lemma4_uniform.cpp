@@ -26,6 +26,7 @@ Lemma4UniformProof prove_lemma4_uniform(double kappa_lo, double kappa_hi, const 
   const Ball pi = Ball::pi(), w1 = paper_L2 ? pi / 100.0 : Ball(opt.w_a), w2 = paper_L2 ? pi / 50.0 : Ball(opt.w_b);
   r.w_a = w1.lower();
   r.w_b = w2.upper();
+  r.paper_L2 = paper_L2;
   // (I5) fixes the default bound: h(pi + w_a) - h(pi + w_b) = (cos w_a - cos w_b)/eps - 2(w_b - w_a) >= 6 pi.
   const Ball dcos = cos(Ball(r.w_a)) - cos(Ball(r.w_b)), two_width = 2.0 * (Ball(r.w_b) - Ball(r.w_a));
   r.eps_star = std::isnan(opt.eps_max) ? (dcos / (6.0 * pi + two_width)).lower() : opt.eps_max;

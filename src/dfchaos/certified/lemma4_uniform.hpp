@@ -66,6 +66,7 @@ struct Lemma4UniformProof {
   double kappa_hi = 0;         ///< upper end
   double w_a = 0;              ///< the segment is [pi + w_a, pi + w_b] (the doubles that end its grid)
   double w_b = 0;              ///< its upper end
+  bool paper_L2 = false;       ///< the segment is the paper's L2 (Lemma4UniformOptions::w_a, w_b NaN), its ends enclosed
   double eps_star = 0;         ///< the bound: the largest double with (I5), \f$(\cos(\pi/100) - \cos(\pi/50))/(6\pi + \pi/50)\f$ rounded down
   int w_pieces = 0;            ///< pieces of \f$[\pi/100, \pi/50]\f$ in (I2)-(I4)
   int u_pieces = 0;            ///< pieces of \f$[-1, 0]\f$ in (I4) (and of \f$[0, 1]\f$ in (I2))
