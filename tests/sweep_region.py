@@ -14,10 +14,12 @@ Checks, each able to fail:
   3. region_max_boxes bounds the work: with 1 box a cell above the bound tries exactly one and says
      so (region_stop 2, the box budget);
   4. the header states the budget and the legend of region_stop; region is not in the default set;
-  5. bad input (a b/a axis of one point, --region-max-boxes 0) is refused with exit 2, one line
-     naming the option, and no output file;
-  6. scripts/region_summary.py: its coverage equals the one computed here from the same file, and it
-     refuses a damaged file (exit 2, nothing written).
+  3b. only the ratios matter: with a = 3 the region columns equal those of a = 1;
+  5. bad input (a b/a axis of one point, --region-max-boxes 0, a mid axis from 0) is refused with
+     exit 2, one line naming the option, and no output file;
+  6. scripts/region_summary.py: its coverage equals the one computed here from the same file, a
+     covering cell in error counts as not proved, and it refuses a damaged file, a file cut short and
+     a shard (exit 2, nothing written).
 """
 import json
 import subprocess
@@ -127,6 +129,15 @@ _, _, one = parse(sweep("--q-range", "0.85:0.86:1:mid", "--b-range", "3e-3:3.1e-
 check(all(r["region_boxes"] == "1" and r["region_stop"] == "2" for r in one),
       f"--region-max-boxes 1: one box a cell, stop code 2: {[(r['region_boxes'], r['region_stop']) for r in one]}")
 
+# ---- 3b: only the ratios matter: with a = 3 (products rounded) the region columns are those of a = 1 ----
+# (q/a 0.785 and 0.795 times 3 round, so that a rectangle in q, b would fall outside the uniform proof's box.)
+A3 = ["--q-range", "0.78:0.8:2:mid", "--b-range", "1e-6:1e-5:2:log", "--observables", "region", "--region-max-boxes", "1"]
+_, _, one_a = parse(sweep(*A3))
+_, _, three = parse(sweep("-a", "3", *A3))
+same = all(x[k] == y[k] for x, y in zip(one_a, three) for k in ("region", "region_uniform", "region_boxes", "region_stop"))
+check(same and len(three) == len(one_a) == 4 and all(x["region"] == "1" for x in one_a),
+      f"a = 3: the region columns equal those of a = 1 (all proved by the uniform route): {[x['region'] for x in three]}")
+
 # ---- 4: header and default set --------------------------------------------------------------------------
 check(any(c.startswith("# region_max_boxes = 300") for c in comments), "the header states region_max_boxes")
 check(any(c.startswith("# region_stop = 0 decided to the top | 1 gave up after") for c in comments), "the header has the region_stop legend")
@@ -136,8 +147,11 @@ check("region" not in dcolumns, f"the default set has no region column: {dcolumn
 # ---- 5: bad input ------------------------------------------------------------------------------------------
 with tempfile.TemporaryDirectory() as tmp:
     out = Path(tmp) / "out.tsv"
-    for args, option in ((["--b-range", "0.002"], "b-range"), (["--b-range", "0.002:0.003:2", "--region-max-boxes", "0"], "region-max-boxes")):
-        r = subprocess.run([cli, "sweep", "--q-range", "0.85", "--observables", "region", "--out", str(out), *args], capture_output=True, text=True)
+    for args, option in ((["--q-range", "0.85", "--b-range", "0.002"], "b-range"),
+                         (["--q-range", "0.85", "--b-range", "0.002:0.003:2", "--region-max-boxes", "0"], "region-max-boxes"),
+                         (["--q-range", "0.85", "--b-range", "0:0.003:2:mid"], "b-range"),
+                         (["--q-range", "0:0.9:1:mid", "--b-range", "0.002:0.003:2"], "q-range")):
+        r = subprocess.run([cli, "sweep", "--observables", "region", "--out", str(out), *args], capture_output=True, text=True)
         check(r.returncode == 2 and r.stdout == "" and r.stderr.count("\n") == 1 and option in r.stderr and not out.exists(),
               f"{' '.join(args)}: exit {r.returncode}, {r.stderr.strip()!r}, file {'written' if out.exists() else 'absent'}")
 
@@ -158,6 +172,30 @@ with tempfile.TemporaryDirectory() as tmp:
     r = subprocess.run([sys.executable, str(summary), str(sweep_file), "12", "1 thread", tmp], capture_output=True, text=True)
     check(r.returncode == 2 and "damaged" in r.stderr and not (Path(tmp) / "certify-region.tex").exists(),
           f"region_summary refuses a damaged file: exit {r.returncode}, {r.stderr.strip()!r}")
+    # A cell in error counts as not proved: re-sealed with one covering cell made an error cell.
+    body = text[: text.rindex("# end: ")]
+    lines = body.split("\n")
+    k = next(i for i, line in enumerate(lines) if line.split("\t")[4:6] == ["1", "1"])
+    f = lines[k].split("\t")
+    f[3], f[5:9], f[9] = "error", ["nan"] * 4, "region: a test"
+    lines[k] = "\t".join(f)
+    body = "\n".join(lines)
+    import hashlib
+    n = sum(1 for line in body.splitlines()[1:] if not line.startswith("#"))
+    sweep_file.write_text(body + f"# end: {n} rows, sha256 {hashlib.sha256(body.encode()).hexdigest()} (of every byte above this line)\n")
+    r = subprocess.run([sys.executable, str(summary), str(sweep_file), "12", "1 thread", tmp], capture_output=True, text=True)
+    tex = (Path(tmp) / "certify-region.tex").read_text() if r.returncode == 0 else ""
+    expected_err = int(1000 * (sum(cov) - 1) / len(cov)) / 10
+    check(r.returncode == 0 and "\\def\\dfcCertRegionCoverage{%.1f}" % expected_err in tex and "\\def\\dfcCertRegionErrorCells{1}" in tex,
+          f"region_summary: a covering cell in error counts as not proved: coverage {expected_err} ({r.stderr.strip()[:200]})")
+    for name in ("certify-region.tex", "certify-region-columns.tsv"):
+        (Path(tmp) / name).unlink(missing_ok=True)
+    shard = Path(tmp) / "shard.tsv"
+    subprocess.run([cli, "sweep", "--q-range", Q, "--b-range", B, "--observables", "covering,region", "--region-max-boxes", "1",
+                    "--shard", "0/2", "--out", str(shard)], capture_output=True, text=True)
+    r = subprocess.run([sys.executable, str(summary), str(shard), "12", "1 thread", tmp], capture_output=True, text=True)
+    check(r.returncode == 2 and "shard" in r.stderr and not (Path(tmp) / "certify-region.tex").exists(),
+          f"region_summary refuses a shard: exit {r.returncode}, {r.stderr.strip()!r}")
     sweep_file.write_text(text[: len(text) // 2])
     r = subprocess.run([sys.executable, str(summary), str(sweep_file), "12", "1 thread", tmp], capture_output=True, text=True)
     check(r.returncode == 2 and "seal" in r.stderr and not (Path(tmp) / "certify-region.tex").exists(),

@@ -127,10 +127,11 @@ PlaneRegion plane_region(const Spec& spec, long long index, long max_boxes) {
   certified::RectangleOptions opt;
   opt.max_boxes = max_boxes;
   opt.max_failed_run = kRegionFailedRun;
-  // The uniform route is tried only where it can hold: q/a below 1 (docs/certified.md).
-  const certified::Lemma4UniformProof uniform = k_hi < 1 ? uniform_for(k_lo, k_hi) : certified::Lemma4UniformProof{};
-  const double a = spec.a;
-  const certified::RectangleProof r = certified::prove_rectangle(a, e_lo * a, e_hi * a, k_lo * a, k_hi * a, uniform, opt);
+  // The uniform route is tried only where it can hold: q/a at most 1 (its proof needs q/a <= 1).
+  const certified::Lemma4UniformProof uniform = k_hi <= 1 ? uniform_for(k_lo, k_hi) : certified::Lemma4UniformProof{};
+  // Only q/a and b/a matter: the rectangle of ratios is proved at a = 1, exactly (products with the
+  // spec's a would be rounded, and a rounded end can fall outside the uniform proof's box).
+  const certified::RectangleProof r = certified::prove_rectangle(1.0, e_lo, e_hi, k_lo, k_hi, uniform, opt);
   PlaneRegion out;
   out.proved_fraction = r.proved_fraction();
   out.uniform_bound = r.uniform_bound;

@@ -24,7 +24,7 @@ void SweepArguments::add_to(CLI::App* app) {
   app->add_option("--observables", observables,
                   "comma-separated: covering,superstable,lyapunov,rate,period,certified,region\n"
                   "(default " +
-                      std::string(kDefaultObservables) + ": all but certified, a proof per cell of about 5-40 ms, and region)")
+                      std::string(kDefaultObservables) + ": all but certified and region, proofs per cell)")
       ->type_name("LIST");
   app->add_option("--max-branches", max_branches,
                   "covering's work budget per cell: a cell whose [t2, 3pi/2] holds more branches of T1\n"

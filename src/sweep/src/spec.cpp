@@ -64,8 +64,13 @@ void Spec::validate() const {
     throw InvalidParameter("max-branches", "1 <= max-branches <= " + count_text(kMaxCoveringBranches), static_cast<double>(covering_max_branches));
   if (region_max_boxes < 1 || region_max_boxes > kMaxRegionBoxes)
     throw InvalidParameter("region-max-boxes", "1 <= region-max-boxes <= " + count_text(kMaxRegionBoxes), static_cast<double>(region_max_boxes));
-  if (observables.has(Observable::Region) && b_over_a.size() < 2 && b_over_a.spacing() != Spacing::Mid)
-    throw InvalidParameter("b-range", "region proves over each cell's b/a interval, up to the next point: give two points or more, or lo:hi:n:mid");
+  if (observables.has(Observable::Region)) {
+    if (b_over_a.size() < 2 && b_over_a.spacing() != Spacing::Mid)
+      throw InvalidParameter("b-range", "region proves over each cell's b/a interval, up to the next point: give two points or more, or lo:hi:n:mid");
+    // The rectangles, not only the points, must have positive sides (a mid axis may start at 0).
+    if (!(b_over_a.extent(0).first > 0)) throw InvalidParameter("b-range", "region needs every cell's b/a interval above 0 (a mid axis from lo > 0)");
+    if (!(q_over_a.extent(0).first > 0)) throw InvalidParameter("q-range", "region needs every cell's q/a interval above 0 (a mid axis from lo > 0)");
+  }
   orbit.validate();
   period.validate();
   if (observables.needs_orbit()) {

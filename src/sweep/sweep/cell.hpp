@@ -89,8 +89,8 @@ struct PlaneRegion {
   long boxes = 0;                                                     ///< box proofs attempted above that bound
   certified::RectangleStop stop = certified::RectangleStop::Decided;  ///< why it was not decided to its top
 };
-/// The rule of the `region` columns: certified::prove_rectangle over the cell's rectangle
-/// (Range::extent of its q/a and b/a, times a), with the uniform proof of
+/// The rule of the `region` columns: certified::prove_rectangle over the cell's rectangle of ratios
+/// (Range::extent of its q/a and b/a, at a = 1: only the ratios matter, and they are then exact), with the uniform proof of
 /// certified::best_lemma4_uniform for its q/a range (computed once per q/a range and process: a
 /// pure function of the range) and at most `max_boxes` box proofs.
 /// @throws std::invalid_argument for a rectangle of zero width in b (Spec::validate refuses those axes).
