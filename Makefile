@@ -44,7 +44,7 @@ help:
 	@echo "  make bench-snapshot  make bench, then copy its table with its date into paper/bench-snapshot.tex"
 	@echo "  make certify-region  Theorem 1 proved over area across the plane (b/a 1e-6..0.02), through the sweep"
 	@echo "                   engine (MPI, resumable): $(BUILD)/region/ (measured time: docs/cluster.md)"
-	@echo "  make certify-region-snapshot  make certify-region, then its summary into paper/certify-region-snapshot.tex"
+	@echo "  make certify-region-snapshot  copy the summary of make certify-region into paper/certify-region-snapshot.tex"
 	@echo "  make certify-band  Lemma 4 over parameter boxes with certificates on a band (CERT_BAND=...)"
 	@echo "  make plane-hires the (q/a, b/a) plane at $(PLANE_N) x $(PLANE_N), every observable, MPI on $(PLANE_RANKS) ranks"
 	@echo "                   when built: $(BUILD)/plane/ (hours: docs/cluster.md; rerun to resume)"
@@ -163,7 +163,8 @@ certify-region: deps configure
 	@$(CMAKE) --build $(BUILD) -j $(JOBS) --target dfchaos_cli $$(grep -q '^DFCHAOS_MPI:BOOL=ON' $(BUILD)/CMakeCache.txt && echo dfchaos_sweep_mpi)
 	@bash scripts/certify-region.sh $(BUILD) $(REGION_RANKS)
 
-certify-region-snapshot: certify-region
+certify-region-snapshot:
+	@test -f $(BUILD)/region/certify-region.tex || { echo "certify-region-snapshot: no $(BUILD)/region/certify-region.tex: run make certify-region first" >&2; exit 2; }
 	@{ echo "% SPDX-License-Identifier: GPL-3.0-or-later"; \
 	   echo "% written by make certify-region-snapshot from $(BUILD)/region; do not edit"; \
 	   grep -v '^%' $(BUILD)/region/certify-region.tex; } > paper/certify-region-snapshot.tex.tmp && \

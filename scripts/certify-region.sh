@@ -40,7 +40,12 @@ else
   "$cli" sweep "${spec[@]}" || rc=$?
 fi
 echo $(( $(date +%s) - start )) >> "$out.seconds"
-if [[ $rc -ne 0 ]]; then echo "certify-region: the sweep stopped (exit $rc); rerun to continue" >&2; exit "$rc"; fi
+if [[ $rc -eq 2 ]]; then
+  echo "certify-region: the sweep refused its request (above); a file of another build or spec is not resumed: remove $out and $out.chunks" >&2
+  exit 2
+elif [[ $rc -ne 0 ]]; then
+  echo "certify-region: the sweep stopped (exit $rc); rerun to continue" >&2; exit "$rc"
+fi
 seconds=$(awk '{ s += $1 } END { print s }' "$out.seconds")
 echo "certify-region: done in $seconds s (all invocations): $out"
 /usr/bin/python3 "$(dirname "$0")/region_summary.py" "$out" "$seconds" "$workers" "$build/region"
