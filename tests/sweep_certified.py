@@ -27,37 +27,11 @@ import tempfile
 from pathlib import Path
 
 cli, src = sys.argv[1], Path(sys.argv[2])
-fails = 0
-checks = 0
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from sweep_checks import Checks, parse  # noqa: E402
 
-
-def check(ok, what):
-    global fails, checks
-    checks += 1
-    print(("ok:   " if ok else "FAIL: ") + what)
-    if not ok:
-        fails += 1
-
-
-def sweep(*args):
-    r = subprocess.run([cli, "sweep", *args], capture_output=True, text=True)
-    if r.returncode != 0:
-        print(f"FAIL: dfchaos sweep {' '.join(args)}: exit {r.returncode}: {r.stderr[:300]}")
-        sys.exit(1)
-    return r.stdout
-
-
-def parse(text):
-    """(header comment lines, column names, rows as dicts) of a sweep output."""
-    comments, rows, columns = [], [], None
-    for line in text.splitlines():
-        if line.startswith("#"):
-            comments.append(line)
-        elif columns is None:
-            columns = line.split("\t")
-        else:
-            rows.append(dict(zip(columns, line.split("\t"))))
-    return comments, columns, rows
+tests = Checks(cli)
+check, sweep = tests.check, tests.sweep
 
 
 def legend_of(comments):
@@ -144,5 +118,4 @@ with tempfile.TemporaryDirectory() as tmp:
         check(r.returncode == 2 and r.stdout == "" and r.stderr.count("\n") == 1 and "observables" in r.stderr and not out.exists(),
               f"--observables {bad}: exit {r.returncode}, {r.stderr.strip()!r}, file {'written' if out.exists() else 'absent'}")
 
-print(f"{checks - fails} passed, {fails} failed")
-sys.exit(1 if fails else 0)
+tests.finish()

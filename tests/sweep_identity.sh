@@ -70,6 +70,22 @@ else
   echo "FAIL: the region grid lacks cells proved whole or in part"; fails=$((fails + 1))
 fi
 
+# grid_identity LABEL SERIAL-FILE PREFIX SWEEP-ARGS...: the grid's rows on 2 threads, in 3 shards
+# merged, and stopped by --max-chunks then resumed with another chunk size, against its serial run.
+grid_identity() {
+  local label=$1 serial=$2 p=$3
+  shift 3
+  OMP_NUM_THREADS=2 "$cli" sweep "$@" --chunk 3 > "$tmp/$p-threads.tsv"
+  same "$label: 2 threads, chunks of 3 = 1 thread" "$serial" "$tmp/$p-threads.tsv"
+  for i in 0 1 2; do "$cli" sweep "$@" --shard "$i/3" --out "$tmp/$p-shard$i.tsv"; done
+  "$cli" sweep-merge "$tmp/$p-shard1.tsv" "$tmp/$p-shard0.tsv" "$tmp/$p-shard2.tsv" > "$tmp/$p-merged.tsv"
+  same "$label: 3 shards merged" "$serial" "$tmp/$p-merged.tsv"
+  "$cli" sweep "$@" --resume "$tmp/$p-resumed.tsv" --chunk 2 --max-chunks 2 2> /dev/null
+  status "$label: stopped by --max-chunks 2" 3 $?
+  OMP_NUM_THREADS=2 "$cli" sweep "$@" --resume "$tmp/$p-resumed.tsv" --chunk 3 2> /dev/null
+  same "$label: stopped and resumed = one run" "$serial" "$tmp/$p-resumed.tsv"
+}
+
 case "$mode" in
 serial)
   OMP_NUM_THREADS=2 "$cli" sweep "${S[@]}" --chunk 7 > "$tmp/threads.tsv"
@@ -89,25 +105,8 @@ serial)
   "$cli" sweep-merge "$tmp/rshard0.tsv" "$tmp/rshard1.tsv" "$tmp/rshard2.tsv" > "$tmp/merged-resumable.tsv"
   same "3 resumable shards merged" "$tmp/serial.tsv" "$tmp/merged-resumable.tsv"
 
-  OMP_NUM_THREADS=2 "$cli" sweep "${C[@]}" --chunk 3 > "$tmp/cthreads.tsv"
-  same "certified: 2 threads, chunks of 3 = 1 thread" "$tmp/cserial.tsv" "$tmp/cthreads.tsv"
-  for i in 0 1 2; do "$cli" sweep "${C[@]}" --shard "$i/3" --out "$tmp/cshard$i.tsv"; done
-  "$cli" sweep-merge "$tmp/cshard1.tsv" "$tmp/cshard0.tsv" "$tmp/cshard2.tsv" > "$tmp/cmerged.tsv"
-  same "certified: 3 shards merged" "$tmp/cserial.tsv" "$tmp/cmerged.tsv"
-  "$cli" sweep "${C[@]}" --resume "$tmp/cresumed.tsv" --chunk 4 --max-chunks 2 2> /dev/null
-  status "certified: stopped by --max-chunks 2" 3 $?
-  OMP_NUM_THREADS=2 "$cli" sweep "${C[@]}" --resume "$tmp/cresumed.tsv" --chunk 7 2> /dev/null
-  same "certified: stopped and resumed = one run" "$tmp/cserial.tsv" "$tmp/cresumed.tsv"
-
-  OMP_NUM_THREADS=2 "$cli" sweep "${R[@]}" --chunk 3 > "$tmp/rthreads.tsv"
-  same "region: 2 threads, chunks of 3 = 1 thread" "$tmp/rserial.tsv" "$tmp/rthreads.tsv"
-  for i in 0 1 2; do "$cli" sweep "${R[@]}" --shard "$i/3" --out "$tmp/rshard-$i.tsv"; done
-  "$cli" sweep-merge "$tmp/rshard-2.tsv" "$tmp/rshard-0.tsv" "$tmp/rshard-1.tsv" > "$tmp/rmerged.tsv"
-  same "region: 3 shards merged" "$tmp/rserial.tsv" "$tmp/rmerged.tsv"
-  "$cli" sweep "${R[@]}" --resume "$tmp/rresumed.tsv" --chunk 2 --max-chunks 2 2> /dev/null
-  status "region: stopped by --max-chunks 2" 3 $?
-  OMP_NUM_THREADS=2 "$cli" sweep "${R[@]}" --resume "$tmp/rresumed.tsv" --chunk 3 2> /dev/null
-  same "region: stopped and resumed = one run" "$tmp/rserial.tsv" "$tmp/rresumed.tsv"
+  grid_identity certified "$tmp/cserial.tsv" c "${C[@]}"
+  grid_identity region "$tmp/rserial.tsv" r "${R[@]}"
 
   "$cli" sweep "${S[@]}" --resume "$tmp/resumed.tsv" --chunk 4 --max-chunks 3 2> /dev/null
   status "stopped by --max-chunks 3" 3 $?

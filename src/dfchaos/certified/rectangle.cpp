@@ -17,12 +17,7 @@ RectangleProof prove_rectangle(double a, double b_lo, double b_hi, double q_lo, 
   if (!(std::isfinite(q_lo) && std::isfinite(q_hi) && q_lo > 0 && q_lo <= q_hi))
     throw std::invalid_argument("prove_rectangle: 0 < q_lo <= q_hi, both finite");
   if (opt.max_boxes < 1 || opt.max_failed_run < 0) throw std::invalid_argument("prove_rectangle: max_boxes >= 1 and max_failed_run >= 0");
-  RectangleProof r;
-  r.a = a;
-  r.b_lo = b_lo;
-  r.b_hi = b_hi;
-  r.q_lo = q_lo;
-  r.q_hi = q_hi;
+  RectangleProof r{.a = a, .b_lo = b_lo, .b_hi = b_hi, .q_lo = q_lo, .q_hi = q_hi};
   // The uniform route: b/a in (0, eps*] for q/a in [kappa_lo, kappa_hi]. The comparisons of the
   // rectangle (in b and q) with the proof (in b/a and q/a) are exact: x <= y a holds exactly when
   // fma(y, a, -x) >= 0 (one rounding of the exact difference keeps its sign).
@@ -42,16 +37,10 @@ RectangleProof prove_rectangle(double a, double b_lo, double b_hi, double q_lo, 
   }
   r.b_reached = b;
   if (b >= b_hi) return r;
-  RegionOptions ro;
-  ro.a = a;
-  ro.b_lo = b;
-  ro.b_hi = b_hi;
-  ro.q_lo = q_lo;
-  ro.q_hi = q_hi;
-  ro.q_columns = 1;
+  // The rest as one column of boxes; 64 bits suffice for b/a >= 1e-5 (region.hpp), below more.
+  RegionOptions ro{.a = a, .b_lo = b, .b_hi = b_hi, .q_lo = q_lo, .q_hi = q_hi, .q_columns = 1};
   ro.max_boxes = opt.max_boxes;
   ro.max_failed_run = opt.max_failed_run;
-  // 64 bits suffice for b/a >= 1e-5 (region.hpp); below, more.
   ro.precision = b / a >= 1e-5 ? 64 : 128;
   const RegionResult g = certify_region(ro);
   const RegionColumn& col = g.columns.front();
