@@ -31,6 +31,9 @@ import sys
 import tempfile
 from pathlib import Path
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from paper_items import fmt as tex_number  # noqa: E402  (a number for math mode, powers of ten typeset)
+
 
 def refuse(msg):
     print(f"region_summary: {msg}", file=sys.stderr)
@@ -70,18 +73,6 @@ def read_sweep(path):
     if "shard" in header:
         refuse(f"{path}: a shard ({header['shard']}); merge the shards first (dfchaos sweep-merge)")
     return header, columns, rows
-
-
-def tex_number(text):
-    """A number of an axis, for math mode: 10^{-6} for 1e-6, 2\\cdot 10^{-3} for 2e-3, else as written."""
-    x = float(text)
-    if x != 0 and abs(math.log10(abs(x))) >= 3:
-        e = math.floor(math.log10(abs(x)))
-        m = x / 10**e
-        m_text = ("%.6g" % m)
-        if float(m_text) * 10**e == x or abs(float(m_text) * 10**e - x) <= 1e-15 * abs(x):
-            return ("10^{%d}" % e) if m_text == "1" else "%s\\cdot 10^{%d}" % (m_text, e)
-    return text
 
 
 def fmt_down(x, digits):
@@ -169,7 +160,8 @@ def main():
         "Seconds": number(seconds),
         "Minutes": "%.0f" % (seconds / 60),
         "Workers": workers,
-        "QLo": tex_number(qlo), "QHi": tex_number(qhi), "QN": qn, "BLo": tex_number(lo), "BHi": tex_number(hi), "BN": n,
+        "QLo": tex_number(float(qlo)), "QHi": tex_number(float(qhi)), "QN": qn, "BLo": tex_number(float(lo)), "BHi": tex_number(float(hi)),
+        "BN": n,
         "UniformMin": "%.3g" % min(uniform), "UniformMax": "%.3g" % max(uniform),
         "Commit": "unknown",
         "When": datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d"),

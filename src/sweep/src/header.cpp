@@ -118,8 +118,8 @@ std::string row_problem(std::string_view row, long long index, const std::vector
     if (c == "certified_step" && !std::isnan(x) && !(x >= 0 && x == std::floor(x) && x <= static_cast<int>(std::size(kAllCertifiedSteps)) - 1))
       return "certified_step is not a step code";
     if (c == "region" && !std::isnan(x) && !(x >= 0 && x <= 1)) return "region is not a fraction in [0, 1]";
-    if ((c == "region_uniform") && !std::isnan(x) && !(x >= 0 && x < 0.5)) return "region_uniform is not a b/a bound";
-    if ((c == "region_boxes") && !std::isnan(x) && !(x >= 0 && x == std::floor(x) && x <= 1e18)) return "region_boxes is not a count";
+    if (c == "region_uniform" && !std::isnan(x) && !(x >= 0 && x < 0.5)) return "region_uniform is not a b/a bound";
+    if (c == "region_boxes" && !std::isnan(x) && !(x >= 0 && x == std::floor(x) && x <= 1e18)) return "region_boxes is not a count";
     if (c == "region_stop" && !std::isnan(x) && !(x == 0 || x == 1 || x == 2)) return "region_stop is not a stop code";
     if (c == "period" && !std::isnan(x) && !(x >= 0 && x == std::floor(x) && x <= 1e18)) return "period is not a count";
     if (status == "inadmissible" && !std::isnan(x)) return c + " is not nan in an inadmissible cell";
