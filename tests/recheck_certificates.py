@@ -173,6 +173,10 @@ def rejects_arc_l1(cli, checker, what, d, bad):
         "q_lower": (lambda c: c["parameters"]["q_over_a"]["lo"].update(hex=float.hex(0.6)), 1, "stops within W"),
         "b_larger": (lambda c: set_hex(c, "parameters", "b_over_a_max", 0.2), 1, "stops within W"),
         "grid_short": (lambda c: c["witnesses"]["delta_cuts"].pop(), 1, "grid covers"),
+        # the amplitude is a field of the format even where only ratios matter (issue 47)
+        "a_missing": (lambda c: c["parameters"].pop("a"), 2, "parameters.a"),
+        "a_nan": (lambda c: c["parameters"]["a"].update(hex="nan"), 2, "parameters.a"),
+        "a_negative": (lambda c: c["parameters"]["a"].update(hex=float.hex(-1.0)), 2, "parameters.a"),
     }
     rejected(checker, path, bad, cases, what, "arc-l1")
 
@@ -186,6 +190,13 @@ def rejects_lemma4_uniform(cli, checker, what, d, bad):
         "arc_tau": (lambda c: c["witnesses"]["arc_l1"]["witnesses"]["tau"].__setitem__(0, float.hex(3.2)), 1, "landing precedes"),
         "arc_missing": (lambda c: c["witnesses"].pop("arc_l1"), 2, "arc_l1"),
         "lemma1_gap": (lambda c: c["witnesses"]["lemma1"]["sub_boxes"].pop(), 1, "Lemma 1"),
+        # the embedded arc-l1 certificate must be one of this format and version (issue 47)
+        "arc_format_missing": (lambda c: c["witnesses"]["arc_l1"].pop("format"), 2, "witnesses.arc_l1.format"),
+        "arc_format_garbled": (lambda c: c["witnesses"]["arc_l1"].update(format="dfchaos-certificat"), 2, "witnesses.arc_l1.format"),
+        "arc_version_missing": (lambda c: c["witnesses"]["arc_l1"].pop("version"), 2, "witnesses.arc_l1.version"),
+        "arc_version_garbled": (lambda c: c["witnesses"]["arc_l1"].update(version="1"), 2, "witnesses.arc_l1.version"),
+        "a_missing": (lambda c: c["parameters"].pop("a"), 2, "parameters.a"),
+        "a_nan": (lambda c: c["parameters"]["a"].update(hex="nan"), 2, "parameters.a"),
     }
     rejected(checker, path, bad, cases, what, "lemma4-uniform")
 
@@ -393,6 +404,23 @@ def main():
             def decimal(c):
                 c["parameters"]["q"]["lo"]["hex"] = "0.85"
             recheck(checker, mutate(path, bad, decimal), 2, "a number that is not an exact hex float")
+        elif case == "rejects_duplicate_key":
+            # a key twice in one object (JSON leaves which value counts undefined): refused, at the top
+            # and deep inside, whichever value comes last
+            path, _ = write_certificate(cli, "lemma1_point", d)
+            with open(path) as f:
+                text = f.read()
+            top = text.replace('"statement":', '"statement": "lemma1", "statement":', 1)
+            deep = text.replace('"hi":', '"hi": {"hex": "0x1p+0", "decimal": "1"}, "hi":', 1)
+            for what, changed in (("at the top level", top), ("inside parameters", deep)):
+                if changed == text:
+                    sys.exit(f"FAIL: duplicate key {what}: the certificate has no such key to repeat")
+                with open(bad, "w") as f:
+                    f.write(changed)
+                proc = subprocess.run([checker, bad], capture_output=True, text=True)
+                if proc.returncode != 2 or "appears twice" not in proc.stdout:
+                    sys.exit(f"FAIL: duplicate key {what}: exit {proc.returncode}: {proc.stdout.strip()}")
+                print(f"ok:   duplicate key {what}: exit 2: {proc.stdout.strip()}")
         elif case == "rejects_wrong_version":
             path, _ = write_certificate(cli, "vartheta0", d)
             recheck(checker, mutate(path, bad, lambda c: c.update(version=2)), 2, "a wrong format version")

@@ -31,4 +31,21 @@ cat "$tmp/out"
 "$checker" "$tmp/fewer.json" >"$tmp/out" 2>&1; rc=$?
 check "one discontinuity deleted: rejected (exit $rc)" '((rc == 1))'
 cat "$tmp/out"
+# The embedded certificates must be of this format and version, as files of their own (issue 47).
+"$py" - "$f" "$tmp" <<'PY'
+import json, os, sys
+c = json.load(open(sys.argv[1]))
+for name, part, change in [("cov-format-missing", "covering", lambda e: e.pop("format")),
+                           ("dis-format-garbled", "discontinuities", lambda e: e.update(format="dfchaos-certificate-2")),
+                           ("dis-version-missing", "discontinuities", lambda e: e.pop("version")),
+                           ("cov-version-garbled", "covering", lambda e: e.update(version=1.5))]:
+    m = json.loads(json.dumps(c))
+    change(m["witnesses"][part])
+    json.dump(m, open(os.path.join(sys.argv[2], name + ".json"), "w"), indent=1)
+PY
+for m in cov-format-missing dis-format-garbled dis-version-missing cov-version-garbled; do
+  "$checker" "$tmp/$m.json" >"$tmp/out" 2>&1; rc=$?
+  check "embedded certificate $m: refused as malformed (exit $rc)" '((rc == 2)) && grep -q "witnesses\.\(covering\|discontinuities\)\.\(format\|version\)" "$tmp/out"'
+  cat "$tmp/out"
+done
 ((fails == 0))

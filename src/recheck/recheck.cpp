@@ -5,21 +5,28 @@
 // C++ standard library. It only checks, it never searches. What it trusts and what it checks:
 // README.md beside this file; the format: docs/certificates.md.
 //
-//   dfchaos-recheck FILE...
+//   dfchaos-recheck [--] FILE...      dfchaos-recheck --help | --version
 //
 // Exit status: 0 every step of every file re-verified (one line per file: OK, the statement, the
-// number of steps); 1 a step failed (named); 2 a malformed certificate (unreadable, not JSON, a
-// missing field, another format or version, a number that is not an exact hexadecimal float).
+// number of steps); 1 a step failed (named); 2 a malformed certificate (not a regular file,
+// unreadable, larger than kMaxBytes, not JSON, a duplicate key, a missing field, another format or
+// version, embedded or not, a number that is not an exact hexadecimal float). Each file gets its
+// line, written out as soon as it is decided; the status is the worst of them.
+#include <fcntl.h>
 #include <mpfi.h>
 #include <mpfr.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
+#include <cstring>
 #include <functional>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <tuple>
@@ -35,6 +42,11 @@ using json = nlohmann::json;
 constexpr mpfr_prec_t kPrecision = 256;  // every number and interval of the checker
 constexpr const char* kFormat = "dfchaos-certificate";
 constexpr int kVersion = 1;
+/// Largest certificate read (bytes): the largest that `make reproduce` writes is a few megabytes.
+constexpr long long kMaxBytes = 256LL << 20;
+#ifndef DFCHAOS_VERSION
+#define DFCHAOS_VERSION "unknown"
+#endif
 
 /// The certificate cannot be read as one of the format (exit 2).
 struct Malformed : std::runtime_error {
@@ -213,6 +225,26 @@ double exact_double(const json& j, const std::string& where) {
 /// A parameter {"hex": ..., "decimal": ...}: the hex string is the number (the decimal is for humans).
 double parameter(const json& j, const std::string& key, const std::string& where) {
   return exact_double(field(field(j, key, where), "hex", where + key + "."), where + key + ".hex");
+}
+
+/// A certificate held inside another (`where` names it, e.g. "witnesses.arc_l1"): an object of this
+/// format and version whose statement is `statement`, as a file of its own must be.
+void require_embedded(const json& j, const std::string& statement, const std::string& where) {
+  if (!j.is_object()) throw Malformed("'" + where + "' is not an embedded certificate (an object)");
+  const json& f = field(j, "format", where + ".");
+  if (!f.is_string() || f.get<std::string>() != kFormat) throw Malformed("'" + where + ".format' is not \"" + std::string(kFormat) + "\"");
+  const json& v = field(j, "version", where + ".");
+  if (!v.is_number_integer() || v.get<long long>() != kVersion)
+    throw Malformed("'" + where + ".version' is " + v.dump() + " (this checker reads version " + std::to_string(kVersion) + ")");
+  const json& st = field(j, "statement", where + ".");
+  if (!st.is_string() || st.get<std::string>() != statement) throw Malformed("'" + where + "' is not a " + statement + " certificate");
+}
+
+/// The amplitude a of a certificate whose statement is about the ratios b/a and q/a only: still a
+/// field of the format (docs/certificates.md), an exact double > 0.
+void require_amplitude(const json& c) {
+  const json& p = field(c, "parameters", "");
+  if (!(parameter(p, "a", "parameters.") > 0)) throw Malformed("'parameters.a' is not a positive number");
 }
 
 /// An array of `n` exact doubles.
@@ -1174,9 +1206,7 @@ long check_coverings(const json& c) {
   if (!boxes.is_array() || boxes.empty()) throw Malformed("'witnesses.boxes' is not a non-empty array");
   for (std::size_t i = 0; i < boxes.size(); ++i) {
     const std::string who = "witnesses.boxes[" + std::to_string(i) + "]";
-    if (!boxes[i].is_object() || field(boxes[i], "format", who + ".") != kFormat || field(boxes[i], "version", who + ".") != kVersion ||
-        field(boxes[i], "statement", who + ".") != "covering")
-      throw Malformed("'" + who + "' is not a covering certificate of this format and version");
+    require_embedded(boxes[i], "covering", who);
     const auto [ai, x] = read_box(boxes[i]);
     st.require(ai == a && box.b_lo <= x.b_lo && x.b_hi <= box.b_hi && box.q_lo <= x.q_lo && x.q_hi <= box.q_hi,
                who + ": its box lies in the parameters");
@@ -1202,8 +1232,8 @@ long check_paper_construction(const json& c, std::string& what) {
   const auto [a, b, q] = read_point(c);
   const json& w = field(c, "witnesses", "");
   const json &cov = field(w, "covering", "witnesses."), &dis = field(w, "discontinuities", "witnesses.");
-  if (field(cov, "statement", "witnesses.covering.") != "covering" || field(dis, "statement", "witnesses.discontinuities.") != "discontinuities")
-    throw Malformed("'witnesses' does not hold a covering and a discontinuities certificate");
+  require_embedded(cov, "covering", "witnesses.covering");
+  require_embedded(dis, "discontinuities", "witnesses.discontinuities");
   const auto [ac, box] = read_box(cov);
   const json& dp = field(dis, "parameters", "witnesses.discontinuities.");
   st.require(ac == a && box.b_lo == b && box.b_hi == b && box.q_lo == q && box.q_hi == q, "the covering is at the point (a, b, q)");
@@ -1315,6 +1345,7 @@ std::vector<double> cuts(const json& j, const std::string& where, bool grid = tr
 /// deceleration gamma, its stop within W, before t0 + 2pi.
 long check_arc_l1(const json& c) {
   Steps st;
+  require_amplitude(c);
   const json& p = field(c, "parameters", "");
   const json& k = field(p, "q_over_a", "parameters.");
   const double k_lo = parameter(k, "lo", "parameters.q_over_a."), k_hi = parameter(k, "hi", "parameters.q_over_a.");
@@ -1404,8 +1435,8 @@ long check_lemma4_uniform(const json& c) {
     throw Malformed("'witnesses.pieces' is not an integer in 1..4096");
   const int n = static_cast<int>(np.get<long long>());
   const json& arc = field(w, "arc_l1", "witnesses.");
-  const json& arc_st = field(arc, "statement", "witnesses.arc_l1.");
-  if (!arc_st.is_string() || arc_st.get<std::string>() != "arc-l1") throw Malformed("'witnesses.arc_l1' is not an arc-l1 certificate");
+  require_amplitude(c);
+  require_embedded(arc, "arc-l1", "witnesses.arc_l1");
   st.n += check_arc_l1(arc);
   const json& ap = field(arc, "parameters", "witnesses.arc_l1.");
   const json& ak = field(ap, "q_over_a", "witnesses.arc_l1.parameters.");
@@ -1540,18 +1571,120 @@ long check_entropy(const json& c, std::string& what) {
   return st.n;
 }
 
-/// Checks one file; returns its exit status after printing its line.
+/// A file name as the verdict line shows it: as it is when every byte is printable ASCII other than
+/// space, '"' and '\\'; otherwise in double quotes with C escapes (\\n, \\t, \\", \\\\, \\xHH), so
+/// that every verdict stays on one line and a name can be told from the text after it.
+std::string shown(const std::string& path) {
+  bool plain = !path.empty();
+  for (unsigned char ch : path) plain = plain && ch > 0x20 && ch < 0x7f && ch != '"' && ch != '\\';
+  if (plain) return path;
+  std::string q = "\"";
+  for (unsigned char ch : path) {
+    if (ch == '"' || ch == '\\') {
+      q += '\\';
+      q += static_cast<char>(ch);
+    } else if (ch == '\n') {
+      q += "\\n";
+    } else if (ch == '\t') {
+      q += "\\t";
+    } else if (ch < 0x20 || ch >= 0x7f) {
+      char buf[5];
+      std::snprintf(buf, sizeof buf, "\\x%02x", ch);
+      q += buf;
+    } else {
+      q += static_cast<char>(ch);
+    }
+  }
+  return q + "\"";
+}
+
+/// A message on one line: control bytes (a line break in a file's text) as C escapes.
+std::string one_line(const std::string& text) {
+  std::string r;
+  for (unsigned char ch : text) {
+    if (ch < 0x20 || ch == 0x7f) {
+      char buf[5];
+      std::snprintf(buf, sizeof buf, "\\x%02x", ch);
+      r += buf;
+    } else {
+      r += static_cast<char>(ch);
+    }
+  }
+  return r;
+}
+
+/// What a file that is not a regular file is, for the refusal.
+const char* kind_of(mode_t m) {
+  if (S_ISDIR(m)) return "a directory";
+  if (S_ISFIFO(m)) return "a FIFO or pipe";
+  if (S_ISSOCK(m)) return "a socket";
+  if (S_ISCHR(m) || S_ISBLK(m)) return "a device";
+  return "not a regular file";
+}
+
+/// The whole text of a certificate file. Anything but a regular file (a directory, a FIFO, a
+/// device) is refused before it is read, so that nothing blocks; so is a file over kMaxBytes.
+std::string read_certificate(const std::string& path) {
+  struct stat sb {};
+  if (::stat(path.c_str(), &sb) != 0) throw Malformed(std::string("cannot be opened: ") + std::strerror(errno));
+  if (!S_ISREG(sb.st_mode)) throw Malformed(std::string("is ") + kind_of(sb.st_mode) + ", not a regular file: not read");
+  // O_NONBLOCK: should the name be replaced by a FIFO after stat, open does not wait for a writer
+  // (fstat below then refuses it).
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) throw Malformed(std::string("cannot be opened: ") + std::strerror(errno));
+  std::string text;
+  try {
+    if (::fstat(fd, &sb) != 0 || !S_ISREG(sb.st_mode)) throw Malformed(std::string("is ") + kind_of(sb.st_mode) + ", not a regular file: not read");
+    char buf[1 << 16];
+    for (;;) {
+      const ssize_t n = ::read(fd, buf, sizeof buf);
+      if (n < 0 && errno == EINTR) continue;
+      if (n < 0) throw Malformed(std::string("cannot be read: ") + std::strerror(errno));
+      if (n == 0) break;
+      if (static_cast<long long>(text.size()) + n > kMaxBytes)
+        throw Malformed("is larger than " + std::to_string(kMaxBytes >> 20) + " MiB (the checker's limit): not read");
+      text.append(buf, static_cast<std::size_t>(n));
+    }
+  } catch (...) {
+    ::close(fd);
+    throw;
+  }
+  ::close(fd);
+  return text;
+}
+
+/// The JSON of a certificate; a key twice in one object is refused (which one a reader keeps is
+/// not defined by JSON: a certificate must not depend on it).
+json parse_certificate(const std::string& text) {
+  std::vector<std::set<std::string>> keys;  // the keys seen in each open object
+  std::string duplicate;
+  const json::parser_callback_t cb = [&](int /*depth*/, json::parse_event_t event, json& parsed) {
+    if (event == json::parse_event_t::object_start) {
+      keys.emplace_back();
+    } else if (event == json::parse_event_t::object_end) {
+      if (!keys.empty()) keys.pop_back();
+    } else if (event == json::parse_event_t::key && !keys.empty() && duplicate.empty()) {
+      const std::string k = parsed.get<std::string>();
+      if (!keys.back().insert(k).second) duplicate = k;
+    }
+    return true;
+  };
+  json c;
+  try {
+    c = json::parse(text, cb);
+  } catch (const json::exception& e) {
+    throw Malformed(std::string("not JSON: ") + e.what());
+  }
+  if (!duplicate.empty()) throw Malformed("the key '" + duplicate + "' appears twice in one object (JSON leaves its value undefined)");
+  return c;
+}
+
+/// Checks one file; returns its exit status after printing its line (flushed at once).
 int check_file(const std::string& path) {
   std::string statement = "?", what;
+  const std::string name = shown(path);
   try {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw Malformed("cannot be opened");
-    json c;
-    try {
-      c = json::parse(in);
-    } catch (const json::exception& e) {
-      throw Malformed(std::string("not JSON: ") + e.what());
-    }
+    const json c = parse_certificate(read_certificate(path));
     const json& format = field(c, "format", "");
     if (format != kFormat) throw Malformed("format is not \"" + std::string(kFormat) + "\"");
     const json& version = field(c, "version", "");
@@ -1595,27 +1728,71 @@ int check_file(const std::string& path) {
       throw Malformed("unknown statement '" + statement +
                       "' (this checker reads vartheta0, lemma1, b0, covering, coverings, periodic, superstable, not_superstable, window, "
                       "theorem2_counterexample, discontinuities, paper_construction, entropy, arc-l1, lemma4-uniform)");
-    std::printf("OK %s: %s, %ld steps re-verified%s\n", path.c_str(), statement.c_str(), steps, what.empty() ? "" : ("; " + what).c_str());
+    std::printf("OK %s: %s, %ld steps re-verified%s\n", name.c_str(), statement.c_str(), steps, what.empty() ? "" : one_line("; " + what).c_str());
+    std::fflush(stdout);
     return 0;
   } catch (const Failed& e) {
-    std::printf("FAIL %s: %s: step not verified: %s\n", path.c_str(), statement.c_str(), e.what());
-    return 1;
+    std::printf("FAIL %s: %s: step not verified: %s\n", name.c_str(), shown(statement).c_str(), one_line(e.what()).c_str());
   } catch (const Malformed& e) {
-    std::printf("MALFORMED %s: %s\n", path.c_str(), e.what());
+    std::printf("MALFORMED %s: %s\n", name.c_str(), one_line(e.what()).c_str());
+    std::fflush(stdout);
+    return 2;
+  } catch (const std::bad_alloc&) {
+    std::printf("MALFORMED %s: the checker ran out of memory reading it\n", name.c_str());
+    std::fflush(stdout);
+    return 2;
+  } catch (const std::exception& e) {  // a defect of the checker: never taken for a verdict of OK
+    std::printf("MALFORMED %s: could not be checked: %s\n", name.c_str(), one_line(e.what()).c_str());
+    std::fflush(stdout);
     return 2;
   }
+  std::fflush(stdout);
+  return 1;
 }
+
+constexpr const char* kUsage =
+    "usage: dfchaos-recheck [--] FILE...\n"
+    "       dfchaos-recheck --help | --version\n"
+    "Re-verifies certificates written by `dfchaos certify ... --certificate FILE`, in MPFI interval\n"
+    "arithmetic, with its own formulas from the paper (docs/certificates.md, src/recheck/README.md).\n"
+    "One line per file, printed as soon as it is decided:\n"
+    "  OK NAME: STATEMENT, N steps re-verified[; what was proved]\n"
+    "  FAIL NAME: STATEMENT: step not verified: STEP\n"
+    "  MALFORMED NAME: WHY   (not a regular file, unreadable, over 256 MiB, not JSON, a duplicate key,\n"
+    "                        a missing field, another format or version, an inexact number)\n"
+    "NAME is the file name as given, in double quotes with C escapes if it holds a space, a quote, a\n"
+    "backslash or a byte that is not printable ASCII. A file whose name starts with '-' follows '--'.\n"
+    "Exit status: 0 every file verified; 1 a step failed in some file; 2 some file malformed, or bad\n"
+    "usage. Every file is checked whatever the others give.\n";
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc < 2) {
-    std::fprintf(stderr,
-                 "usage: dfchaos-recheck FILE...  (re-verifies dfchaos certificates in MPFI; exit 0 all verified, 1 a step failed, 2 malformed)\n");
+  std::vector<std::string> files;
+  bool options = true;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (options && arg == "--") {
+      options = false;
+    } else if (options && (arg == "--help" || arg == "-h")) {
+      std::fputs(kUsage, stdout);
+      return std::fflush(stdout) == 0 ? 0 : 2;
+    } else if (options && arg == "--version") {
+      std::printf("dfchaos-recheck %s (MPFI %s, MPFR %s)\n", DFCHAOS_VERSION, mpfi_get_version(), mpfr_get_version());
+      return std::fflush(stdout) == 0 ? 0 : 2;
+    } else if (options && arg.size() > 1 && arg[0] == '-') {
+      std::fprintf(stderr, "dfchaos-recheck: unknown option %s (a file named so follows --; see --help)\n", shown(arg).c_str());
+      return 2;
+    } else {
+      files.push_back(arg);
+    }
+  }
+  if (files.empty()) {
+    std::fputs("dfchaos-recheck: no FILE given (usage: dfchaos-recheck [--] FILE...; see --help)\n", stderr);
     return 2;
   }
   int status = 0;
-  for (int i = 1; i < argc; ++i) status = std::max(status, check_file(argv[i]));
+  for (const std::string& f : files) status = std::max(status, check_file(f));
   mpfr_free_cache();
   return std::fflush(stdout) == 0 ? status : 2;
 }
