@@ -15,6 +15,7 @@
 #include "certify/certify.hpp"
 #include "convert.hpp"
 #include "dfchaos/errors.hpp"
+#include "kit/budget.hpp"
 #include "kit/output.hpp"
 
 namespace dfchaos::python {
@@ -58,7 +59,8 @@ py::object to_python(const kit::Json::Value& v) {
 }
 
 py::object certify_py(const std::string& what, double a, std::optional<NumberOrBox> b, std::optional<NumberOrBox> q, int period,
-                      const std::string& segment, std::optional<std::pair<double, double>> window, std::optional<std::string> certificate) {
+                      const std::string& segment, std::optional<std::pair<double, double>> window, std::optional<std::string> certificate,
+                      double max_seconds, double max_memory) {
   certify::check_statement(what);
   if (certificate && certificate->empty()) throw InvalidParameter("certificate", "a file name (got '')");
   if (certificate && !certify::has_certificate(what))
@@ -81,11 +83,8 @@ py::object certify_py(const std::string& what, double a, std::optional<NumberOrB
       throw py::error_already_set();
     }
   }
-  certify::Result c;
-  {
-    py::gil_scoped_release nogil;
-    c = certify::certify(r);
-  }
+  const CallBudget budget = call_budget(max_seconds, max_memory);
+  certify::Result c = interruptible([&] { return certify::certify(r); }, budget);
   if (certificate) {
     if (c.certificate.value().is_null()) {
       c.record.set("certificate",
@@ -116,12 +115,50 @@ import fractions as _fractions
 import math as _math
 
 
+def _end(name, x):
+    """An end of an Interval: a real number, not NaN (an infinite end is allowed)."""
+    try:
+        v = float(x)
+    except (TypeError, ValueError):
+        raise ValueError(f"{name}: must be a real number (got {x!r})") from None
+    if _math.isnan(v):
+        raise ValueError(f"{name}: must be a number, not NaN")
+    return v
+
+
+def _ball_part(ball, name):
+    """ball[name] (mid or rad of a certified record's ball) as an exact fraction: a finite decimal."""
+    try:
+        text = ball[name]
+    except (KeyError, TypeError):
+        raise ValueError(f"{name}: missing from the ball {ball!r} (a dict with 'mid' and 'rad')") from None
+    try:
+        d = _decimal.Decimal(text)
+    except (_decimal.InvalidOperation, TypeError, ValueError):
+        raise ValueError(f"{name}: must be a decimal number (got {text!r})") from None
+    if not d.is_finite():
+        raise ValueError(f"{name}: must be a finite decimal number (got {text!r})")
+    return _fractions.Fraction(d)
+
+
 class Interval(_collections.namedtuple("Interval", "lo hi")):
-    """Interval(lo, hi): the closed interval [lo, hi] of doubles (exact binary numbers), lo <= hi.
+    """Interval(lo, hi): the closed interval [lo, hi] of doubles (exact binary numbers), lo <= hi
+    (ValueError naming lo, hi or both otherwise, or for a NaN end; infinite ends are allowed).
     x in I tests lo <= x <= hi. Interval.from_ball({'mid': '...', 'rad': '...'}) is the smallest
     interval of doubles that contains the decimal ball mid +- rad of a certified record (rounded
-    outward: it contains everything the ball contains)."""
+    outward: it contains everything the ball contains); ValueError naming mid or rad unless both are
+    finite decimals and rad >= 0."""
     __slots__ = ()
+
+    def __new__(cls, lo, hi):
+        lo, hi = _end("lo", lo), _end("hi", hi)
+        if not lo <= hi:
+            raise ValueError(f"lo, hi: must satisfy lo <= hi (got lo={lo!r}, hi={hi!r})")
+        return super().__new__(cls, lo, hi)
+
+    @classmethod
+    def _make(cls, iterable):
+        return cls(*iterable)
 
     def __contains__(self, x):
         return self.lo <= x <= self.hi
@@ -133,7 +170,9 @@ class Interval(_collections.namedtuple("Interval", "lo hi")):
 
     @classmethod
     def from_ball(cls, ball):
-        mid, rad = (_fractions.Fraction(_decimal.Decimal(ball[k])) for k in ("mid", "rad"))
+        mid, rad = (_ball_part(ball, k) for k in ("mid", "rad"))
+        if rad < 0:
+            raise ValueError(f"rad: must be >= 0 (got {ball['rad']!r})")
         lo, hi = mid - rad, mid + rad
         down, up = float(lo), float(hi)
         if _fractions.Fraction(down) > lo:
@@ -194,7 +233,9 @@ void bind_certify(py::module_& m) {
   m.attr("Certified") = scope["Certified"];
   m.def("certify", &certify_py, py::arg("what"), py::arg("a") = 1.0, py::arg("b") = py::none(), py::arg("q") = py::none(), py::arg("period") = 0,
         py::arg("segment") = "L0", py::arg("window") = py::none(), py::arg("certificate") = py::none(),
-        R"doc(certify(what, a=1.0, b=None, q=None, period=0, segment='L0', window=None, certificate=None) -> Certified
+        py::arg("max_seconds") = kit::kDefaultBudgetSeconds, py::arg("max_memory") = kit::kDefaultBudgetGiB,
+        R"doc(certify(what, a=1.0, b=None, q=None, period=0, segment='L0', window=None, certificate=None,
+        max_seconds=60, max_memory=2) -> Certified
 
 A proof in ball arithmetic (Arb), as `dfchaos certify WHAT` gives it: `what` is one of vartheta0 (Eq. 1),
 lemma1 (Lemma 1), b0 (a certified lower bound of b0(q)), discontinuities (Lemma 2, on segment L0 or L2),
@@ -214,7 +255,14 @@ With `certificate="path"` (vartheta0, lemma1, b0, covering, periodic, superstabl
 statement's certificate (the witnesses, for the independent checker dfchaos-recheck;
 docs/certificates.md) is written to path whole or not at all,
 and the dict gets "certificate": {"path", "bytes", "sha256"} ({"written": False} when not proved).
-A path that cannot be written raises OSError and leaves no file.)doc");
+A path that cannot be written raises OSError and leaves no file.
+
+The budget is the tool's (--max-seconds, --max-memory): at most max_seconds seconds of wall-clock time
+(0 < max_seconds <= 1e6) and max_memory GiB of resident memory added by the call (0.25 <= max_memory
+<= 1e4; the tool limits the address space of its process instead). When either runs out the proof is
+abandoned and dfchaos.GaveUp is raised ("gave up: the time budget of 60 s ran out (max_seconds raises
+it)"); Ctrl-C raises KeyboardInterrupt within a fraction of a second. Either way no certificate is
+written. The proof runs on a thread of its own, without the GIL.)doc");
 }
 
 }  // namespace dfchaos::python

@@ -34,8 +34,8 @@ sweep::PlaneOrbit orbit_observables(const Parameters& p, std::optional<double> t
   } else {
     start = sweep::orbit_start(p, o.theta0_fraction);  // the sweep's default start, t2 + (t3 - t2)/2
   }
-  py::gil_scoped_release nogil;
-  return sweep::plane_orbit(p, start, o, period ? *period : sweep::PeriodSettings{}, statistics, period != nullptr);
+  const sweep::PeriodSettings settings = period ? *period : sweep::PeriodSettings{};
+  return interruptible([&] { return sweep::plane_orbit(p, start, o, settings, statistics, period != nullptr); });
 }
 
 }  // namespace
@@ -65,7 +65,8 @@ default, t2 + (t3 - t2)/2. (The tool's `sweep --theta0-fraction` is a fraction f
 theta0 = p.t2 + f * (p.t3 - p.t2) here gives its start to the last bit.)
 Raises ValueError (dfchaos.InvalidParameter, the tool's messages) unless the map is defined (as T),
 theta0 is in [t2, t3), 1 <= steps <= 1e8 and 0 <= transient <= 1e8; dfchaos.GaveUp if the motion
-never flies again. Runs without the GIL (about 2 us per step; not interruptible).)doc");
+never flies again. Runs without the GIL (about 2 us per step); Ctrl-C raises KeyboardInterrupt within a
+fraction of a second.)doc");
 
   m.def(
       "rate",

@@ -70,7 +70,7 @@ py::dict provenance(const sweep::Spec& spec) {
 
 py::tuple sweep_py(const AxisArg& q_range, const AxisArg& b_range, double a, const ObservablesArg& observables, long long max_branches,
                    long long superstable_scan, double theta0_fraction, long long transient, long long steps, long long period_max, double period_tol,
-                   long long region_max_boxes) {
+                   long long region_max_boxes, long long max_proofs) {
   // The checks of SweepArguments::resolve, in its order and with its option names.
   sweep::Spec s;
   s.a = finite("a", a);
@@ -85,6 +85,7 @@ py::tuple sweep_py(const AxisArg& q_range, const AxisArg& b_range, double a, con
   s.period.max = period_max;
   s.period.tol = finite("period-tol", period_tol);
   s.region_max_boxes = region_max_boxes;
+  s.max_proofs = max_proofs;
   s.validate();
 
   const long long cells = s.cells();
@@ -99,10 +100,9 @@ py::tuple sweep_py(const AxisArg& q_range, const AxisArg& b_range, double a, con
   long long* idx = index.mutable_data();
   std::vector<double*> out;
   for (auto& v : values) out.push_back(v.mutable_data());
-  for (long long first = 0; first < cells; first += sweep::kDefaultChunk) {
-    const long long n = std::min(sweep::kDefaultChunk, cells - first);
-    {
-      py::gil_scoped_release nogil;
+  run_interruptible([&] {  // the whole grid on one thread of its own, chunk by chunk
+    for (long long first = 0; first < cells; first += sweep::kDefaultChunk) {
+      const long long n = std::min(sweep::kDefaultChunk, cells - first);
       std::vector<long long> chunk(static_cast<std::size_t>(n));
       for (long long k = 0; k < n; ++k) chunk[static_cast<std::size_t>(k)] = first + k;
       const std::vector<sweep::CellValues> cv = sweep::compute_cells(s, chunk, nullptr);
@@ -119,8 +119,7 @@ py::tuple sweep_py(const AxisArg& q_range, const AxisArg& b_range, double a, con
         errors[static_cast<std::size_t>(i)] = sweep::error_field(v);
       }
     }
-    if (PyErr_CheckSignals() != 0) throw py::error_already_set();  // Ctrl-C between chunks
-  }
+  });
 
   py::dict columns;
   columns["index"] = index;
@@ -140,9 +139,10 @@ void bind_sweep(py::module_& m) {
         py::arg("max_branches") = d.covering_max_branches, py::arg("superstable_scan") = d.superstable_scan,
         py::arg("theta0_fraction") = d.orbit.theta0_fraction, py::arg("transient") = d.orbit.transient, py::arg("steps") = d.orbit.steps,
         py::arg("period_max") = d.period.max, py::arg("period_tol") = d.period.tol, py::arg("region_max_boxes") = d.region_max_boxes,
+        py::arg("max_proofs") = d.max_proofs,
         R"doc(sweep(q_range, b_range, a=1.0, observables='covering,superstable,lyapunov,rate,period', max_branches=1000000,
       superstable_scan=400, theta0_fraction=0.5, transient=1000, steps=1000, period_max=64, period_tol=1e-9,
-      region_max_boxes=4000)
+      region_max_boxes=4000, max_proofs=20000000)
     -> (columns, provenance)
 
 The observables over a grid of the (q/a, b/a) plane, as `dfchaos sweep` computes them: the same checks
@@ -170,8 +170,8 @@ Returns a tuple:
               its text as written there, columns (the list of column names) and header (the tool's
               whole header text, byte for byte, '#' lines and the column line).
 Raises ValueError (dfchaos.InvalidParameter) with the tool's message, naming the tool's option, before
-any work. The GIL is released while cells are computed; Ctrl-C stops the sweep between chunks of 256
-cells.)doc");
+any work. The cells are computed without the GIL; Ctrl-C raises KeyboardInterrupt within a fraction of
+a second (each cell's computation polls for it) and returns nothing.)doc");
 }
 
 }  // namespace dfchaos::python

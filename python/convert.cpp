@@ -3,10 +3,21 @@
 /// @brief Array-likes to contiguous float64 with the checks of convert.hpp, and string columns.
 #include "convert.hpp"
 
-#include <cmath>
-#include <cstring>
+#include <unistd.h>
 
+#include <chrono>
+#include <cmath>
+#include <condition_variable>
+#include <cstdio>
+#include <cstring>
+#include <exception>
+#include <mutex>
+#include <thread>
+
+#include "dfchaos/certified/ball.hpp"
 #include "dfchaos/errors.hpp"
+#include "dfchaos/stop.hpp"
+#include "kit/budget.hpp"
 
 namespace dfchaos::python {
 
@@ -51,6 +62,88 @@ void require_constructed(py::handle obj) {
     throw py::type_error(
         "dfchaos.Parameters: this object was never initialised (made by Parameters.__new__ without __init__); "
         "build it as dfchaos.Parameters(a, b, q)");
+}
+
+CallBudget call_budget(double max_seconds, double max_memory) {
+  const kit::ProcessBudget b = kit::parse_budget(format_double(finite("max-seconds", max_seconds)), format_double(finite("max-memory", max_memory)));
+  return CallBudget{b.seconds, b.gib};
+}
+
+namespace {
+
+/// Resident memory of the process in bytes (/proc/self/statm), or -1 when it cannot be read.
+double resident_bytes() {
+  std::FILE* f = std::fopen("/proc/self/statm", "r");
+  if (f == nullptr) return -1;
+  long pages = 0, resident = 0;
+  const int got = std::fscanf(f, "%ld %ld", &pages, &resident);
+  std::fclose(f);
+  return got == 2 ? static_cast<double>(resident) * static_cast<double>(::sysconf(_SC_PAGESIZE)) : -1;
+}
+
+}  // namespace
+
+void run_interruptible(const std::function<void()>& body, const CallBudget& budget) {
+  using Clock = std::chrono::steady_clock;
+  enum class Why { None, Signal, Time, Memory };
+  StopToken token;
+  std::exception_ptr error;
+  std::mutex m;
+  std::condition_variable cv;
+  bool done = false;
+  Why why = Why::None;
+  {
+    py::gil_scoped_release nogil;
+    const double base = budget.gib > 0 ? resident_bytes() : -1;
+    const double allowed = budget.gib * 1073741824.0;
+    const Clock::time_point start = Clock::now();
+    std::thread worker([&] {
+      {
+        const StopScope scope(&token);
+        try {
+          body();
+        } catch (...) {
+          error = std::current_exception();
+        }
+        certified::release_thread_caches();
+      }
+      const std::lock_guard<std::mutex> g(m);
+      done = true;
+      cv.notify_one();
+    });
+    Clock::time_point next_signals = start + std::chrono::milliseconds(100);
+    std::unique_lock<std::mutex> lock(m);
+    while (!done) {
+      cv.wait_for(lock, std::chrono::milliseconds(10));
+      if (done || why != Why::None) continue;  // once asked to stop, only wait for the worker
+      const Clock::time_point now = Clock::now();
+      if (budget.seconds > 0 && std::chrono::duration<double>(now - start).count() >= budget.seconds) {
+        why = Why::Time;
+      } else if (base >= 0 && resident_bytes() - base > allowed) {
+        why = Why::Memory;
+      } else if (now >= next_signals) {
+        next_signals = now + std::chrono::milliseconds(100);
+        lock.unlock();
+        bool interrupted = false;
+        {
+          py::gil_scoped_acquire gil;
+          interrupted = PyErr_CheckSignals() != 0;  // the Python error (KeyboardInterrupt) stays set
+        }
+        lock.lock();
+        if (interrupted) why = Why::Signal;
+      }
+      if (why != Why::None) token.request();
+    }
+    lock.unlock();
+    worker.join();
+  }
+  switch (why) {
+    case Why::Signal: throw py::error_already_set();
+    case Why::Time: throw GaveUp("gave up: the time budget of " + format_shortest(budget.seconds) + " s ran out (max_seconds raises it)");
+    case Why::Memory: throw GaveUp("gave up: the memory budget of " + format_shortest(budget.gib) + " GiB ran out (max_memory raises it)");
+    case Why::None: break;
+  }
+  if (error) std::rethrow_exception(error);
 }
 
 StrColumn::StrColumn(const std::vector<py::ssize_t>& shape, py::ssize_t width)

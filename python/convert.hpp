@@ -16,7 +16,11 @@
 #include <pybind11/pybind11.h>
 
 #include <cstdint>
+#include <functional>
+#include <optional>
 #include <string>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "dfchaos/parameters.hpp"
@@ -70,6 +74,35 @@ void loop_without_gil(py::ssize_t n, Body&& body) {
       if (PyErr_CheckSignals() != 0) throw py::error_already_set();
     }
   }
+}
+
+/// The budget of one long call, as the tool's --max-seconds and --max-memory (kit/budget.hpp):
+/// `seconds` of wall-clock time, `gib` GiB of resident memory added by the call; 0 means none.
+struct CallBudget {
+  double seconds = 0;  ///< wall-clock seconds; 0: no limit
+  double gib = 0;      ///< GiB of resident memory the call may add; 0: no limit
+};
+
+/// Parses certify's max_seconds and max_memory with the tool's checks and messages
+/// (kit::parse_budget: 0 < max-seconds <= 1e6, 0.25 <= max-memory <= 1e4).
+/// @throws InvalidParameter naming max-seconds or max-memory.
+CallBudget call_budget(double max_seconds, double max_memory);
+
+/// Runs body() on a thread of its own, with the GIL released and a stop token installed
+/// (dfchaos/stop.hpp), while the calling thread watches: every 10 ms the budget, every 100 ms
+/// Python's signal handlers (PyErr_CheckSignals). On Ctrl-C, or when the budget runs out, the token
+/// is set, the worker ends at its next poll, whatever it computed is discarded, and the call raises
+/// (KeyboardInterrupt, or dfchaos.GaveUp "gave up: the time budget of S s ran out (max_seconds
+/// raises it)" / "... memory budget of G GiB ..."). Otherwise body's own exception, if any, is
+/// rethrown. body must not touch Python objects.
+void run_interruptible(const std::function<void()>& body, const CallBudget& budget = {});
+
+/// f() through run_interruptible(), returning its value.
+template <class F>
+auto interruptible(F&& f, const CallBudget& budget = {}) {
+  std::optional<std::invoke_result_t<F&>> out;
+  run_interruptible([&] { out.emplace(f()); }, budget);
+  return std::move(*out);
 }
 
 /// y = f(x) elementwise over an array-like: a float for a scalar, else an array of the input's

@@ -8,6 +8,7 @@
 #include "dfchaos/bisect.hpp"
 #include "dfchaos/errors.hpp"
 #include "dfchaos/next_hit.hpp"
+#include "dfchaos/stop.hpp"
 
 namespace dfchaos {
 
@@ -144,6 +145,7 @@ std::vector<CoveringSegment> dense_segments(const Parameters& p, double lo, doub
     const double width = cuts[c + 1] - cuts[c];
     const int m = std::max(search.scan, static_cast<int>(std::ceil(width / (hi - lo) * search.uniform)));
     for (int j = 0; j < m; ++j) {
+      poll_stop();  // stop.hpp: every sample of the search is a poll
       const double th = cuts[c] + (cuts[c + 1] - cuts[c]) * j / m;
       const LabelledStep l = continuity_label(p, th);
       if (!have_run || !(l.label == run_label)) {
@@ -235,6 +237,7 @@ std::optional<std::vector<CoveringSegment>> branchwise_segments(const Parameters
   std::vector<CoveringSegment> out;
   long long previous_branch = 0;
   for (std::size_t c = 0; c + 1 < cuts.size(); ++c) {
+    poll_stop();  // stop.hpp: every branch is a poll
     // The branch [L, R): its ends (just inside: at a cut T1 is the tangency itself) and two inner points.
     const double L = cuts[c], R = cuts[c + 1], w = R - L;
     constexpr double kInside = 1e-9;  // relative distance of the end samples from a cut

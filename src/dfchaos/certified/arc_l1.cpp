@@ -6,6 +6,7 @@
 #include <string>
 
 #include "dfchaos/certified/next_hit.hpp"
+#include "dfchaos/stop.hpp"
 
 namespace dfchaos::certified {
 
@@ -50,6 +51,7 @@ ArcL1Proof prove_arc_l1(double kappa_lo, double kappa_hi, const ArcL1Options& op
   Ball g_all, dH_all;
   bool first = true;
   for (int i = 0; i < delta_pieces; ++i) {
+    poll_stop();  // stop.hpp: a caller may end the proof here
     const double d1 = delta_end * i / delta_pieces, d2 = i + 1 == delta_pieces ? delta_end : delta_end * (i + 1) / delta_pieces;
     Ball sd, cd;
     sin_cos(Ball::interval(d1, d2), sd, cd);
@@ -88,6 +90,7 @@ ArcL1Proof prove_arc_l1(double kappa_lo, double kappa_hi, const ArcL1Options& op
     // u = x1 + (2 eps - q/a)(tau - l) - cos(tau) + cos(l) < 0 puts the first stop in (theta1, 2pi + tau),
     // inside the stop arc (t3, t2 + 2pi). tau is searched on a grid of (l_hi, pi) (bounded).
     for (int i = 0; i < delta_pieces; ++i) {
+      poll_stop();  // stop.hpp: a caller may end the proof here
       const ArcL1Piece& row = r.pieces[static_cast<std::size_t>(i) * static_cast<std::size_t>(s_pieces)];
       const Ball s_row = sin(Ball(row.delta_hi)) / 2.0 / Ball(r.g_lo);
       // s* >= A/g_hi with A = (sin(delta) - 2 b/a)/2 >= (sin(d1) - 2 eps_max)/2 (when positive)

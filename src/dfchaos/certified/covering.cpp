@@ -14,6 +14,7 @@
 #include "dfchaos/covering.hpp"
 #include "dfchaos/errors.hpp"
 #include "dfchaos/phase.hpp"
+#include "dfchaos/stop.hpp"
 
 namespace dfchaos::certified {
 
@@ -184,6 +185,8 @@ std::vector<Candidate> track_candidates(double a, double b, double q, const std:
       if (n.lo() < *p.t2() || n.hi() > kThreeHalvesPi) continue;
       out.push_back(n);
     }
+  } catch (const Stopped&) {
+    throw;  // a stop request (stop.hpp): not an answer of the search
   } catch (const std::bad_alloc&) {
     throw;  // memory ran out: not an answer of the search
   } catch (const std::exception&) {
@@ -214,6 +217,8 @@ std::string for_each_candidate(double a, double b, double q, const CoveringOptio
     try {
       f();
       return true;
+    } catch (const Stopped&) {
+      throw;  // a stop request (stop.hpp): not an answer of the search
     } catch (const std::bad_alloc&) {
       throw;  // memory ran out: not an answer of the search
     } catch (const std::exception&) {
@@ -231,6 +236,7 @@ std::string for_each_candidate(double a, double b, double q, const CoveringOptio
     search.recheck = 32;
     const long long cap = std::max(1LL, opt.max_branches);
     for (long long branches = std::clamp(opt.first_branches, 1LL, cap);; branches = std::min(4 * branches, cap)) {
+      poll_stop();  // stop.hpp: a caller may end the proof here
       const double w = branch_window(*p, lo, hi, branches);
       search.max_branches = branches + 1;
       segs = covering_segments(*p, lo, w, kThreeHalvesPi, search);
@@ -294,6 +300,7 @@ Outcome cover_2d(const ParameterBox& box, double th_lo, double th_hi, const Cove
   };
   std::vector<Item> stack{{th_lo, th_hi, box, 0}};
   while (!stack.empty()) {
+    poll_stop();  // stop.hpp: a caller may end the proof here
     const Item it = stack.back();
     stack.pop_back();
     const ParameterBalls m(it.box);

@@ -8,6 +8,7 @@
 #include "dfchaos/certified/oracle.hpp"
 #include "dfchaos/errors.hpp"
 #include "dfchaos/model.hpp"
+#include "dfchaos/stop.hpp"
 
 namespace dfchaos::certified {
 
@@ -27,6 +28,7 @@ Outcome cover_simple(const ParameterBalls& m, double x, double y, Budget& budget
   };
   std::vector<Item> stack{{x, y, 0}};
   while (!stack.empty()) {
+    poll_stop();  // stop.hpp: a caller may end the proof here
     const Item it = stack.back();
     stack.pop_back();
     FirstHitOptions opt;
@@ -70,6 +72,7 @@ DiscontinuityProof prove_discontinuities(double a, double b, const Ball& lo, con
   const long long k_last = static_cast<long long>(std::ceil((h_hi.upper() / M_PI - 1) / 2));
   std::vector<long long> ks;
   for (long long k = k_first; k <= k_last; ++k) {
+    poll_stop();  // stop.hpp: a caller may end the proof here
     const Ball target = Ball(static_cast<double>(2 * k + 1)) * pi;
     if (lt(target, h_lo) || lt(h_hi, target)) continue;  // outside h(L)
     if (!(lt(h_lo, target) && lt(target, h_hi)))
@@ -96,6 +99,7 @@ DiscontinuityProof prove_discontinuities(double a, double b, const Ball& lo, con
   budget.max_tests = 200'000'000;
   double cursor = r.lo;  // everything left of it is covered
   for (std::size_t i = 0; i < r.z.size(); ++i) {
+    poll_stop();  // stop.hpp: a caller may end the proof here
     Tangency& t = r.z[i];
     const double z_lo = t.z.lower(), z_hi = t.z.upper();
     const double next = i + 1 < r.z.size() ? r.z[i + 1].z.lower() : r.hi;

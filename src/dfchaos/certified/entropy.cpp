@@ -8,6 +8,7 @@
 
 #include "dfchaos/covering.hpp"
 #include "dfchaos/errors.hpp"
+#include "dfchaos/stop.hpp"
 
 namespace dfchaos::certified {
 
@@ -50,6 +51,7 @@ Part best_part(const std::vector<Proposal>& all, const std::vector<int>& vertice
     stack.push_back(s);
     on[s] = true;
     while (!call.empty()) {
+      poll_stop();  // stop.hpp: a caller may end the proof here
       auto& [u, e] = call.back();
       if (e < succ[u].size()) {
         const int w = succ[u][e++];
@@ -125,6 +127,7 @@ bool continuous_on(const ParameterBalls& m, double lo, double hi, const EntropyO
   std::vector<std::pair<double, double>> todo{{lo, hi}};
   int balls = 0;
   while (!todo.empty()) {
+    poll_stop();  // stop.hpp: a caller may end the proof here
     const auto [x, y] = todo.back();
     todo.pop_back();
     Budget budget;
@@ -164,6 +167,7 @@ EntropyProof prove_entropy_bound(double a, double b, double q, const EntropyOpti
     std::vector<LabelledStep> s;
     std::vector<double> x;
     for (int i = 0; i < opt.grid; ++i) {
+      poll_stop();  // stop.hpp: a caller may end the proof here
       x.push_back(t2 + (t3 - t2) * (i + 0.5) / opt.grid);
       s.push_back(continuity_label(p, x.back()));
     }

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "dfchaos/certified/next_hit.hpp"
+#include "dfchaos/stop.hpp"
 
 namespace dfchaos::certified {
 
@@ -40,6 +41,7 @@ Lemma4UniformProof prove_lemma4_uniform(double kappa_lo, double kappa_hi, const 
   const double wa = r.w_a, wb = r.w_b;
   bool first = true;
   for (int i = 0; i < pieces; ++i) {
+    poll_stop();  // stop.hpp: a caller may end the proof here
     const double a = wa + (wb - wa) * i / pieces, b = i + 1 == pieces ? wb : wa + (wb - wa) * (i + 1) / pieces;
     Ball sw, cw;
     sin_cos(Ball::interval(a, b), sw, cw);
@@ -80,6 +82,7 @@ Lemma4UniformProof prove_lemma4_uniform(double kappa_lo, double kappa_hi, const 
     };
     std::vector<Cell> todo{{0.0, r.eps_star, kappa_lo, kappa_hi, 0}};
     while (!todo.empty()) {
+      poll_stop();  // stop.hpp: a caller may end the proof here
       const Cell c = todo.back();
       todo.pop_back();
       const Ball u = lemma1_velocity_at_t2(Ball(1.0), Ball::interval(c.b1, c.b2), Ball::interval(c.q1, c.q2));

@@ -6,6 +6,7 @@
 
 #include "dfchaos/certified/oracle.hpp"
 #include "dfchaos/model.hpp"
+#include "dfchaos/stop.hpp"
 
 namespace dfchaos::certified {
 
@@ -182,6 +183,7 @@ Outcome certify_no_contact(const ParameterBalls& m, const StartSet& set, const B
 }
 
 FirstHitProof certify_T1(const ParameterBalls& m, const StartSet& set, Budget& budget, const FirstHitOptions& opt) {
+  poll_stop();  // stop.hpp: every first contact isolated is a poll
   FirstHitProof r;
   if (Outcome v = set.valid(m); !v) {
     r.verdict = v;

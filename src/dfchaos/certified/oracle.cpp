@@ -6,6 +6,7 @@
 #include <new>
 
 #include "dfchaos/next_hit.hpp"
+#include "dfchaos/stop.hpp"
 
 namespace dfchaos::certified::oracle {
 
@@ -23,6 +24,8 @@ double T1(double a, double b, double theta) {
     const Parameters p(a, b, a);  // q plays no role in T1
     if (!p.t2()) return NAN;
     return next_hit(p, clamp_theta(p, theta)).t1.value();
+  } catch (const Stopped&) {
+    throw;  // a stop request (stop.hpp): not an answer of the search
   } catch (const std::bad_alloc&) {
     throw;  // memory ran out: not an answer of the search
   } catch (const std::exception&) {
@@ -35,6 +38,8 @@ std::optional<MapStep> step(double a, double b, double q, double theta) {
     const Parameters p(a, b, q);
     if (!p.t2() || !(q > 2 * b)) return std::nullopt;
     return return_map_step(p, clamp_theta(p, theta));
+  } catch (const Stopped&) {
+    throw;  // a stop request (stop.hpp): not an answer of the search
   } catch (const std::bad_alloc&) {
     throw;  // memory ran out: not an answer of the search
   } catch (const std::exception&) {

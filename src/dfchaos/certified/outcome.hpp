@@ -15,6 +15,8 @@
 
 #include <string>
 
+#include "dfchaos/stop.hpp"
+
 namespace dfchaos::certified {
 
 /// The answer of a certified routine: proved, or not proved naming the step (refuted when the step
@@ -48,8 +50,10 @@ struct Outcome {
 struct Budget {
   long max_tests = 2'000'000;  ///< interval tests allowed in total
   long used = 0;               ///< interval tests done so far
-  /// Consumes n tests; false when the budget is exceeded.
+  /// Consumes n tests; false when the budget is exceeded. @throws Stopped when a stop was requested
+  /// (stop.hpp): every test spent is a poll.
   bool spend(long n = 1) {
+    poll_stop();
     used += n;
     return used <= max_tests;
   }

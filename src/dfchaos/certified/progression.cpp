@@ -8,6 +8,7 @@
 #include "dfchaos/certified/oracle.hpp"
 #include "dfchaos/errors.hpp"
 #include "dfchaos/model.hpp"
+#include "dfchaos/stop.hpp"
 
 namespace dfchaos::certified {
 
@@ -216,6 +217,7 @@ Lemma1Proof certify_lemma1(const ParameterBalls& m, int max_pieces) {
   std::vector<Piece> stack{{m.box().b_lo, m.box().b_hi, m.box().q_lo, m.box().q_hi}};
   bool first = true;
   while (!stack.empty()) {
+    poll_stop();  // stop.hpp: a caller may end the proof here
     const Piece p = stack.back();
     stack.pop_back();
     if (++r.pieces > max_pieces) {
@@ -293,6 +295,7 @@ Lemma1Bound lemma1_b0_lower_bound(double a, double q, double resolution, int max
     bool ok = true;
     r.b_pieces.clear();
     while (!stack.empty() && ok) {
+      poll_stop();  // stop.hpp: a caller may end the proof here
       const auto [x, y] = stack.back();
       stack.pop_back();
       if (++pieces > max_pieces) {

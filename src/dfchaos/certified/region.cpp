@@ -7,6 +7,8 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "dfchaos/stop.hpp"
+
 namespace dfchaos::certified {
 
 CoveringProof prove_covering_split(const ParameterBox& box, const std::vector<Candidate>& c, int depth, int& sub_boxes, const CoveringOptions& opt) {
@@ -66,6 +68,7 @@ void tile_column(const RegionOptions& opt, const ProvedBoxSink& sink, ColumnStat
   std::vector<Candidate>& cand = st.cand;
   long used = 0;
   while (b < opt.b_hi && used < budget && !col.gave_up) {
+    poll_stop();  // stop.hpp: a caller may end the proof here
     const double w = std::min(c * b * b / opt.a, opt.b_hi - b);
     ParameterBox box{opt.a, b, b + w, q_lo, q_hi};
     if (box.b_hi == box.b_lo) break;
@@ -134,6 +137,7 @@ RegionResult certify_region(const RegionOptions& opt, const ProvedBoxSink& sink)
   // finishes early leaves its share to the others. Each pass's shares are fixed before it starts,
   // so the result does not depend on the number of threads.
   long left = opt.max_boxes;
+  const StopToken* token = current_stop_token();  // installed in each thread; Stopped cannot leave a parallel region
   for (int pass = 0; pass < 64 && left > 0; ++pass) {
     std::vector<int> open;
     for (int i = 0; i < n; ++i)
@@ -145,13 +149,19 @@ RegionResult certify_region(const RegionOptions& opt, const ProvedBoxSink& sink)
 #pragma omp parallel for schedule(dynamic, 1)
     for (int j = 0; j < m; ++j) {
       ColumnState& s = st[static_cast<std::size_t>(open[static_cast<std::size_t>(j)])];
-      tile_column(opt, sink, s, share);
+      const StopScope scope(token);
+      try {
+        tile_column(opt, sink, s, share);
+      } catch (const Stopped&) {
+        continue;  // thrown again after the region
+      }
       if (opt.progress) {
 #pragma omp critical
         std::fprintf(stderr, "\rcertified_region: pass %d, column %d/%d done (q/a in [%.4f, %.4f] reached b/a = %.6g)   ", pass + 1, ++finished, m,
                      s.col.q_lo, s.col.q_hi, s.col.b_reached);
       }
     }
+    poll_stop();
     long used = 0;
     for (int i : open) used += st[static_cast<std::size_t>(i)].col.attempts;
     left = opt.max_boxes;

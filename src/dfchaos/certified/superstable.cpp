@@ -10,6 +10,7 @@
 #include "dfchaos/certified/vartheta0.hpp"
 #include "dfchaos/errors.hpp"
 #include "dfchaos/model.hpp"
+#include "dfchaos/stop.hpp"
 #include "dfchaos/superstable.hpp"
 
 namespace dfchaos::certified {
@@ -73,6 +74,8 @@ SuperstableProof prove_superstable(double a, double b, double q, double eps_try,
   if (std::isnan(eps)) {
     try {
       eps = 0.9 * dfchaos::superstable_check(dfchaos::Parameters(a, b, q), 20000).epsilon;
+    } catch (const Stopped&) {
+      throw;  // a stop request (stop.hpp): not an answer of the search
     } catch (const std::bad_alloc&) {
       throw;  // memory ran out: not an answer of the search
     } catch (const std::exception&) {
@@ -93,6 +96,7 @@ SuperstableProof prove_superstable(double a, double b, double q, double eps_try,
     bool used_l1 = false, ok = true;
     r.cover.clear();
     while (!stack.empty() && ok) {
+      poll_stop();  // stop.hpp: a caller may end the proof here
       const Item it = stack.back();
       stack.pop_back();
       const StartSet set = std::isnan(it.lo) ? StartSet::from_t2(m, it.hi) : StartSet::interval(it.lo, it.hi);
@@ -176,6 +180,7 @@ WindowProof prove_window(double a, double q, double b_lo, double b_hi, double re
     Budget budget;
     budget.max_tests = 20'000'000;
     while (!stack.empty()) {
+      poll_stop();  // stop.hpp: a caller may end the proof here
       const Item it = stack.back();
       stack.pop_back();
       // T = t2 on [t2(b), t2(b_hi) + e] for every b of the box, with the largest e tried that is

@@ -124,9 +124,26 @@ void TemporaryFileGuard::release() {
   slot_ = -1;
 }
 
+namespace {
+/// Refuses an output path that exists and is not a regular file, saying what it is.
+[[noreturn]] void refuse_kind(const fs::path& path, const fs::file_status& st, const std::string& option) {
+  const char* kind = fs::is_directory(st)                                 ? "a directory"
+                     : fs::is_character_file(st) || fs::is_block_file(st) ? "a device"
+                     : fs::is_fifo(st)                                    ? "a pipe or FIFO"
+                     : fs::is_socket(st)                                  ? "a socket"
+                                                                          : "not a regular file";
+  throw OutputError(option + ": " + path.string() + " is " + kind + ", not a file; an output is a regular file (give a file name" +
+                        (option == "out" ? ", or use stdout)" : ")"),
+                    true);
+}
+}  // namespace
+
 fs::path output_target(const fs::path& path, const std::string& option) {
   fs::path p = path;
   std::error_code ec;
+  // The path as the kernel resolves it first: /dev/stdout on a pipe is a link to "pipe:[N]", which
+  // is no path, so the links are followed by hand only once this says it is a file or nothing yet.
+  if (const fs::file_status st = fs::status(path, ec); fs::exists(st) && !fs::is_regular_file(st)) refuse_kind(path, st, option);
   for (int links = 0; fs::is_symlink(fs::symlink_status(p, ec)); ++links) {
     if (links == 40) throw OutputError(option + ": " + path.string() + ": more than 40 symbolic links in a chain", true);
     const fs::path to = fs::read_symlink(p, ec);
@@ -136,14 +153,7 @@ fs::path output_target(const fs::path& path, const std::string& option) {
   if (p.filename().string().size() > 255)  // NAME_MAX: the file could never be created
     throw OutputError(option + ": " + path.string().substr(0, 60) + "...: a file name longer than 255 bytes", true);
   const fs::file_status st = fs::status(p, ec);
-  if (fs::exists(st) && !fs::is_regular_file(st)) {
-    const char* kind = fs::is_directory(st)                                 ? "a directory"
-                       : fs::is_character_file(st) || fs::is_block_file(st) ? "a device"
-                       : fs::is_fifo(st)                                    ? "a FIFO"
-                       : fs::is_socket(st)                                  ? "a socket"
-                                                                            : "not a regular file";
-    throw OutputError(option + ": " + path.string() + " is " + kind + "; an output is a regular file (give a file name, or use stdout)", true);
-  }
+  if (fs::exists(st) && !fs::is_regular_file(st)) refuse_kind(path, st, option);
   return p;
 }
 
@@ -154,7 +164,7 @@ void write_file(const fs::path& tmp, const std::string& content) {
   const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
   if (fd < 0) {
     const int err = errno;
-    throw OutputError("cannot create " + tmp.parent_path().string() + "/" + tmp.filename().string() + ": " + std::strerror(err),
+    throw OutputError("cannot create " + tmp.string() + (tmp.has_parent_path() ? "" : " in the current directory") + ": " + std::strerror(err),
                       is_bad_path_errno(err));
   }
   std::size_t done = 0;

@@ -19,6 +19,7 @@
 #include "dfchaos/orbit.hpp"
 #include "dfchaos/parameters.hpp"
 #include "dfchaos/phase.hpp"
+#include "dfchaos/stop.hpp"
 #include "dfchaos/superstable.hpp"
 
 namespace dfchaos::sweep {
@@ -116,6 +117,7 @@ certified::Lemma4UniformProof uniform_for(double kappa_lo, double kappa_hi) {
     if (auto it = memo.find(key); it != memo.end()) return it->second;
   }
   certified::Lemma4UniformProof proof = certified::best_lemma4_uniform(kappa_lo, kappa_hi);
+  poll_stop();  // a proof cut short by a stop request (dfchaos/stop.hpp) is never remembered
   const std::lock_guard<std::mutex> g(lock);
   return memo.emplace(key, std::move(proof)).first->second;
 }

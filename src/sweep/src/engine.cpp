@@ -4,6 +4,7 @@
 #include <atomic>
 #include <new>
 
+#include "dfchaos/stop.hpp"
 #include "sweep/cell.hpp"
 
 namespace dfchaos::sweep {
@@ -12,9 +13,13 @@ std::vector<CellValues> compute_cells(const Spec& spec, const std::vector<long l
   std::vector<CellValues> values(cells.size());
   const long long n = static_cast<long long>(cells.size());
   std::atomic<bool> out_of_memory{false};  // an exception cannot leave a parallel region
+  // The caller's stop token (dfchaos/stop.hpp), installed in every thread: once a stop is requested
+  // the remaining cells are skipped and the chunk is not delivered.
+  const StopToken* token = current_stop_token();
 #pragma omp parallel for schedule(dynamic, 1)
   for (long long k = 0; k < n; ++k) {
-    if (out_of_memory.load()) continue;
+    if (out_of_memory.load() || (token != nullptr && token->requested())) continue;
+    const StopScope scope(token);
     const auto i = static_cast<std::size_t>(k);
     try {
       values[i] = evaluate_cell(spec, cells[i]);  // never throws for a cell's failure
@@ -24,6 +29,7 @@ std::vector<CellValues> compute_cells(const Spec& spec, const std::vector<long l
     if (progress) progress->step();
   }
   if (out_of_memory.load()) throw std::bad_alloc();  // the chunk is not delivered: the run gives up (exit 1)
+  poll_stop();                                       // a cell may have recorded Stopped as its error: not delivered either
   return values;
 }
 

@@ -15,7 +15,8 @@ long long count(const std::string& name, const std::string& text, long long lo, 
 
 void SweepArguments::add_to(CLI::App* app) {
   app->add_option("-a,--a", a,
-                  "forcing amplitude, " + format_shortest(kMinA) + " <= a <= " + format_shortest(kMaxA) + " (default 1; only q/a and b/a matter)")
+                  "forcing amplitude, " + format_shortest(kMinA) + " <= a <= " + format_shortest(kMaxA) +
+                      ", and a*(q/a), a*(b/a) in the same range at every cell (default 1; only q/a and b/a matter)")
       ->type_name("FLOAT");
   app->add_option("--q-range", q_range, "q/a axis lo:hi:n[:lin|log|mid] (every q/a > 0)")->required()->type_name("LO:HI:N[:KIND]");
   app->add_option("--b-range", b_range, "b/a axis lo:hi:n[:lin|log|mid] (every b/a in [" + format_shortest(kMinMapRatio) + ", 1/2))")
@@ -50,6 +51,12 @@ void SweepArguments::add_to(CLI::App* app) {
   app->add_option("--region-max-boxes", region_max_boxes,
                   "region: box proofs per cell above the uniform bound, 1.." + format_shortest(static_cast<double>(kMaxRegionBoxes)) + " (default " +
                       std::to_string(kDefaultRegionBoxes) + ")")
+      ->type_name("N");
+  app->add_option("--max-proofs", max_proofs,
+                  "certified and region: most proofs of the whole sweep, cells * (1 for certified + region-max-boxes for region),\n"
+                  "refused above it before any work, 1.." +
+                      format_shortest(static_cast<double>(kMaxMaxProofs)) + " (default " + format_shortest(static_cast<double>(kDefaultMaxProofs)) +
+                      ")")
       ->type_name("N");
   app->add_option("--shard", shard, "compute only shard i of N: the cells with index mod N = i (0 <= i < N)")->type_name("i/N");
   auto* o = app->add_option("--out", out, "write to FILE (atomically) instead of stdout")->type_name("FILE");
@@ -111,6 +118,7 @@ RunOptions SweepArguments::resolve() const {
   s.period.max = count("period-max", period_max, 1, kMaxPeriod);
   s.period.tol = kit::parse_number("period-tol", period_tol, false);
   s.region_max_boxes = count("region-max-boxes", region_max_boxes, 1, kMaxRegionBoxes);
+  s.max_proofs = count("max-proofs", max_proofs, 1, kMaxMaxProofs);
   s.validate();
   if (!shard.empty()) r.shard = Shard::parse("shard", shard, s.cells());
   r.out = out;

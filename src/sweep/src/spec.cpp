@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 #include "dfchaos/errors.hpp"
 #include "dfchaos/parameters.hpp"
@@ -47,12 +48,14 @@ void Spec::validate() const {
       throw InvalidParameter("a", "a * (q/a) and a * (b/a) must be finite, positive and normal for every cell", a);
   // ... and inside the model's range, so that an axis no cell of which could be computed is refused
   // here, not answered by a file of error rows.
-  for (double r : {q_over_a[0], q_over_a[q_over_a.size() - 1]})
-    if (!(a * r >= kMinParameter && a * r <= kMaxParameter))
-      throw InvalidParameter("q-range",
-                             "a * (q/a) within [" + format_shortest(kMinParameter) + ", " + format_shortest(kMaxParameter) +
-                                 "] for every cell (the model's range: only b/a and q/a matter, rescale a)",
-                             r);
+  // The axes are monotone and the products a * r are monotone in r, so the ends decide.
+  for (const auto& [axis, name, ratio] : {std::tuple{&q_over_a, "q-range", "q/a"}, std::tuple{&b_over_a, "b-range", "b/a"}})
+    for (double r : {(*axis)[0], (*axis)[axis->size() - 1]})
+      if (!(a * r >= kMinParameter && a * r <= kMaxParameter))
+        throw InvalidParameter(name,
+                               std::string("a * (") + ratio + ") within [" + format_shortest(kMinParameter) + ", " + format_shortest(kMaxParameter) +
+                                   "] for every cell (the model's range: only b/a and q/a matter, rescale a)",
+                               r);
   // The product is checked in floating point first: n_q and n_b are each at most 10^8.
   if (static_cast<double>(q_over_a.size()) * static_cast<double>(b_over_a.size()) > static_cast<double>(kMaxCells))
     throw InvalidParameter("q-range", "n_q * n_b <= " + count_text(kMaxCells) + " cells (got " + count_text(q_over_a.size()) + " * " +
@@ -71,6 +74,14 @@ void Spec::validate() const {
     if (!(b_over_a.extent(0).first > 0)) throw InvalidParameter("b-range", "region needs every cell's b/a interval above 0 (a mid axis from lo > 0)");
     if (!(q_over_a.extent(0).first > 0)) throw InvalidParameter("q-range", "region needs every cell's q/a interval above 0 (a mid axis from lo > 0)");
   }
+  if (max_proofs < 1 || max_proofs > kMaxMaxProofs)
+    throw InvalidParameter("max-proofs", "1 <= max-proofs <= " + count_text(kMaxMaxProofs), static_cast<double>(max_proofs));
+  const double per_cell =
+      (observables.has(Observable::Certified) ? 1.0 : 0.0) + (observables.has(Observable::Region) ? static_cast<double>(region_max_boxes) : 0.0);
+  if (const double proofs = static_cast<double>(cells()) * per_cell; proofs > static_cast<double>(max_proofs))
+    throw InvalidParameter("max-proofs",
+                           "cells * proofs per cell (certified: 1, region: region-max-boxes) <= max-proofs = " + count_text(max_proofs) + " (got " +
+                               format_shortest(proofs) + "): a smaller grid, or --max-proofs to raise the cap");
   orbit.validate();
   period.validate();
   if (observables.needs_orbit()) {

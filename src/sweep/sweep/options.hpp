@@ -20,6 +20,7 @@ struct SweepArguments {
   std::string old_theta0;  ///< --theta0, refused (the start is --theta0-fraction)
   std::string period_max = "64", period_tol = "1e-9";
   std::string region_max_boxes = std::to_string(kDefaultRegionBoxes);
+  std::string max_proofs = std::to_string(kDefaultMaxProofs);
   std::string shard, out, resume, chunk = std::to_string(kDefaultChunk), max_chunks = "0";
   bool progress = false;
 

@@ -39,7 +39,12 @@ inline constexpr long long kMaxSuperstableScan = 1'000'000;       ///< most scan
 inline constexpr long long kMaxCoveringBranches = 1'000'000'000;  ///< largest covering work budget per cell
 inline constexpr long long kMaxRegionBoxes = 100'000'000;         ///< largest box budget per cell of `region`
 inline constexpr long long kDefaultRegionBoxes = 4000;            ///< default box budget per cell of `region`
-inline constexpr int kRegionFailedRun = 16;                       ///< `region` gives up a cell after this many unproved boxes in a row
+/// Default and largest caps on the proofs a whole sweep may attempt, cells·(proofs per cell), where
+/// a cell of `certified` is one proof and a cell of `region` up to region_max_boxes box proofs (at
+/// some 10 to 50 ms each on one core, 2·10^7 proofs are some 2 to 12 core-days).
+inline constexpr long long kDefaultMaxProofs = 20'000'000;
+inline constexpr long long kMaxMaxProofs = 1'000'000'000'000;  ///< see kDefaultMaxProofs
+inline constexpr int kRegionFailedRun = 16;                    ///< `region` gives up a cell after this many unproved boxes in a row
 /// Most evaluations of T by the orbits of a whole sweep, cells·(transient + steps + period_max):
 /// 10^12, some 25 core-days at 2 µs per evaluation.
 inline constexpr double kMaxOrbitEvaluations = 1e12;
@@ -79,6 +84,10 @@ struct Spec {
   long long covering_max_branches = kDefaultMaxCoveringBranches;
   /// Box proofs attempted per cell by `region` (1..kMaxRegionBoxes) above the uniform bound.
   long long region_max_boxes = kDefaultRegionBoxes;
+  /// Most proofs the whole sweep may attempt (1..kMaxMaxProofs): cells·(1 for certified +
+  /// region_max_boxes for region) above it is refused by validate(). Bounds the work only: not in the
+  /// header, no row depends on it.
+  long long max_proofs = kDefaultMaxProofs;
   OrbitSettings orbit;    ///< the orbit (lyapunov, rate, period)
   PeriodSettings period;  ///< the period search
 
