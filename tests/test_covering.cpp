@@ -147,3 +147,17 @@ TEST(Covering, PaperConstructionOfLemma4) {
   EXPECT_TRUE(lemma4_construction(Parameters(1.0, 5e-5, 0.85)).all());
   EXPECT_FALSE(lemma4_construction(Parameters(1.0, 0.02, 0.85)).all());
 }
+
+// Regression (issue 50, item 1): step (iv) scanned each branch of L2 at 200 points and missed the arc
+// T = t2 when it was narrower than the spacing (at q/a = 0.759, b/a = 5.56e-5 it is about the last
+// 0.3 % of each interior branch), so the construction was reported to fail at q/a = 0.7361 and 0.759
+// inside the region where `certify lemma4-uniform` proves it for every b/a <= 7.82e-5 and q/a in
+// [0.73, 0.999]. At points of that region every step must go through.
+TEST(Covering, RegressionPaperConstructionInsideTheProvedRegion) {
+  for (double q : {0.7361, 0.759, 0.8, 0.9, 0.99})
+    for (double b : {1e-5, 3e-5, 5.56e-5, 7.5e-5}) {
+      const Lemma4Construction c = lemma4_construction(Parameters(1.0, b, q));
+      EXPECT_TRUE(c.branches_cover) << "q/a = " << q << ", b/a = " << b;
+      EXPECT_TRUE(c.all()) << "q/a = " << q << ", b/a = " << b;
+    }
+}

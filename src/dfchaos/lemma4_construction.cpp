@@ -29,7 +29,15 @@ Lemma4Construction lemma4_construction(const Parameters& p, int l1_points) {
   r.three_discontinuities = z.size() >= 3;
   if (!r.three_discontinuities) return r;
   r.images_in_L1 = r.branches_cover = r.left_of_z_to_t2 = true;
-  CoveringSearch s;
+  // Step (iv) on a branch [z_i, z_(i+1)) of T1 uses its structure in closed form (the Branchwise
+  // search, covering.hpp): theta2 is continuous and monotone there, so the covering segment is
+  // located by bisection on theta2 from the branch's ends. A sampled scan of the branch (200 points,
+  // as this check did before) misses the arc where T = t2 when it is narrower than the spacing: near
+  // z_(i+1) it can be a fraction of a percent of the branch, and the construction was then reported
+  // to fail inside the region that lemma4-uniform proves (issue 50). A branch that does not show the
+  // monotone structure sends the search back to the dense scan (200 points per branch, as before),
+  // which remains sampled.
+  CoveringSearch s = CoveringSearch::branchwise();
   s.scan = 200;
   s.uniform = 0;
   s.recheck = 100;
@@ -43,8 +51,10 @@ Lemma4Construction lemma4_construction(const Parameters& p, int l1_points) {
     const double right_of_z = T(p, z[i].z * (1 + 1e-12));
     if (!(tangency >= L1lo && tangency < t3 && right_of_z >= L1lo && right_of_z < t3)) r.images_in_L1 = false;
     if (i + 1 < z.size() && i >= 1) {  // interior i: T([z_i, z_{i+1})) covers [t2, 3pi/2]
-      const double right = z[i + 1].z;
-      if (covering_segments(p, z[i].z, right - 1e-12 * right, 1.5 * pi, s).empty()) r.branches_cover = false;
+      // The search starts just inside the branch: at z_i itself T1 is the tangency, which belongs to
+      // the branch on its left, and the Branchwise search would fall back to the dense scan.
+      const double left = z[i].z + 1e-9 * (z[i + 1].z - z[i].z), right = z[i + 1].z;
+      if (covering_segments(p, left, right - 1e-12 * right, 1.5 * pi, s).empty()) r.branches_cover = false;
       if (T(p, right - 1e-9) != t2) r.left_of_z_to_t2 = false;
     }
   }

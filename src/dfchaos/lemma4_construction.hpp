@@ -7,8 +7,9 @@
 /// (ii) \f$T_1\f$ has at least three discontinuities \f$z_1 < z_2 < \dots\f$ inside \f$L_2\f$;
 /// (iii) the tangential hits \f$T_1(z_i)\f$ land in \f$L_1\f$; (iv) on each interior branch
 /// \f$[z_i, z_{i+1})\f$ the image of \f$T\f$ covers \f$[t_2, 3\pi/2]\f$, because (v) just left of
-/// \f$z_{i+1}\f$ the map sends everything to \f$t_2\f$. Each step is checked here by sampling, so a
-/// "yes" is a sampled verdict, not a proof (see the certified layer for proofs).
+/// \f$z_{i+1}\f$ the map sends everything to \f$t_2\f$. Each step is checked here in floating point
+/// (steps (i) and (v) by sampling, (iv) from the branch structure), so a "yes" is a sampled verdict,
+/// not a proof (see the certified layer for proofs).
 #pragma once
 
 #include "dfchaos/parameters.hpp"
@@ -22,8 +23,10 @@ struct Lemma4Construction {
   long long discontinuities = 0;       ///< number of discontinuities of \f$T_1\f$ in \f$L_2\f$ (closed form, next_hit.hpp)
   bool three_discontinuities = false;  ///< step (ii): at least three
   bool images_in_L1 = false;           ///< step (iii): \f$T(z_i)\f$ and \f$T\f$ just right of \f$z_i\f$ lie in \f$L_1\f$
-  bool branches_cover = false;         ///< step (iv): a covering segment on every interior branch \f$[z_i, z_{i+1})\f$
-  bool left_of_z_to_t2 = false;        ///< step (v): \f$T = t_2\f$ just left of every interior \f$z_{i+1}\f$
+  /// Step (iv): a covering segment on every interior branch \f$[z_i, z_{i+1})\f$, located from
+  /// \f$\theta_2\f$ at the branch's ends (CoveringMethod::Branchwise), not by a scan of the branch.
+  bool branches_cover = false;
+  bool left_of_z_to_t2 = false;  ///< step (v): \f$T = t_2\f$ just left of every interior \f$z_{i+1}\f$
   /// Every step went through.
   bool all() const { return arcs_defined && L1_to_t2 && three_discontinuities && images_in_L1 && branches_cover && left_of_z_to_t2; }
 };
