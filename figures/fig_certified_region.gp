@@ -65,7 +65,7 @@ set xrange [0:1]; set yrange [0:1]
 k1 = 0.165; k2 = 0.1; k3 = 0.035
 key_box(n, x, y, colour) = sprintf("set object %d rect center screen %g, screen %g size screen 0.016, screen 0.03 fc rgb '%s' fs solid border lc rgb '#808080' front", n, x, y, colour)
 eval key_box(11, 0.03, k1, "#56B4E9")
-set label 11 '\small covering found (sampled)' at screen 0.045, screen k1 left front
+set label 11 '\small covering only (sampled)' at screen 0.045, screen k1 left front
 eval key_box(12, 0.03, k2, "#0072B2")
 set label 12 '\small covering and $t_2$ superstable' at screen 0.045, screen k2 left front
 eval key_box(13, 0.36, k1, "#E69F00")

@@ -37,7 +37,7 @@ plot f using "q_over_a":(log10(column("b_over_a"))):(red(column("class"))):(gree
      f using "q_over_a":(column("class") == 2 || column("class") == 3 ? log10(column("b_over_a")) : NaN):(dq/2):(big*db/2):(rgbof(column("class"))) \
        w boxxyerror fs solid 1.0 noborder lc rgb variable notitle, \
      f using "q_over_a":(column("class") == -1 ? log10(column("b_over_a")) : NaN):(big*dq/2):(big*db/2) w boxxyerror fs solid 1.0 noborder lc rgb "black" notitle, \
-     NaN w boxes lc rgb sprintf("#%06x", col1) title sprintf('covering of Lemma~4 (%d)', n2), \
+     NaN w boxes lc rgb sprintf("#%06x", col1) title sprintf('covering only (%d)', n2), \
      NaN w boxes lc rgb sprintf("#%06x", col2) title sprintf('$t_2$ superstable only (%d)', n3), \
      NaN w boxes lc rgb sprintf("#%06x", col3) title sprintf('both (%d)', n4), \
      NaN w boxes lc rgb sprintf("#%06x", col0) title sprintf('neither (%d)', n1), \

@@ -158,6 +158,8 @@ def scope(claims):
                 regions.append((b, q, frac))
         elif number(b):
             points.add((b, q if number(q) else None))
+            if number(p.get("b_proof")):  # a second b/a of the same claim (dynamics_gallery: the proof's)
+                points.add((p["b_proof"], q if number(q) else None))
         elif b is None and number(q):
             lines.add(q)
         else:
