@@ -113,16 +113,22 @@ import collections as _collections
 import decimal as _decimal
 import fractions as _fractions
 import math as _math
+import numbers as _numbers
 
 
 def _end(name, x):
-    """An end of an Interval: a real number, not NaN (an infinite end is allowed)."""
+    """An end of an Interval: a real number that is exactly a double, not NaN (infinite ends are
+    allowed). Rounding an end to a double could move it inward, so an inexact one is refused."""
+    if isinstance(x, bool) or not isinstance(x, _numbers.Real):
+        raise ValueError(f"{name}: must be a real number (got {x!r})")
     try:
         v = float(x)
-    except (TypeError, ValueError):
-        raise ValueError(f"{name}: must be a real number (got {x!r})") from None
+    except OverflowError:
+        raise ValueError(f"{name}: lies beyond the doubles (got {x!r})") from None
     if _math.isnan(v):
         raise ValueError(f"{name}: must be a number, not NaN")
+    if not _math.isinf(v) and v != x:
+        raise ValueError(f"{name}: must be exactly a double (got {x!r}); Interval.from_ball rounds a decimal ball outward")
     return v
 
 
@@ -143,7 +149,8 @@ def _ball_part(ball, name):
 
 class Interval(_collections.namedtuple("Interval", "lo hi")):
     """Interval(lo, hi): the closed interval [lo, hi] of doubles (exact binary numbers), lo <= hi
-    (ValueError naming lo, hi or both otherwise, or for a NaN end; infinite ends are allowed).
+    (ValueError naming lo, hi or both otherwise, or for an end that is NaN, not a real number, or not
+    exactly a double; infinite ends are allowed).
     x in I tests lo <= x <= hi. Interval.from_ball({'mid': '...', 'rad': '...'}) is the smallest
     interval of doubles that contains the decimal ball mid +- rad of a certified record (rounded
     outward: it contains everything the ball contains); ValueError naming mid or rad unless both are
@@ -174,7 +181,10 @@ class Interval(_collections.namedtuple("Interval", "lo hi")):
         if rad < 0:
             raise ValueError(f"rad: must be >= 0 (got {ball['rad']!r})")
         lo, hi = mid - rad, mid + rad
-        down, up = float(lo), float(hi)
+        try:
+            down, up = float(lo), float(hi)
+        except OverflowError:
+            raise ValueError(f"mid, rad: the ball {ball['mid']!r} +- {ball['rad']!r} reaches beyond the doubles") from None
         if _fractions.Fraction(down) > lo:
             down = _math.nextafter(down, -_math.inf)
         if _fractions.Fraction(up) < hi:
@@ -262,7 +272,7 @@ The budget is the tool's (--max-seconds, --max-memory): at most max_seconds seco
 <= 1e4; the tool limits the address space of its process instead). When either runs out the proof is
 abandoned and dfchaos.GaveUp is raised ("gave up: the time budget of 60 s ran out (max_seconds raises
 it)"); Ctrl-C raises KeyboardInterrupt within a fraction of a second. Either way no certificate is
-written. The proof runs on a thread of its own, without the GIL.)doc");
+written. The proof runs on a worker thread of the module, without the GIL.)doc");
 }
 
 }  // namespace dfchaos::python

@@ -87,11 +87,7 @@ py::list covering_segments_py(const Parameters& p, std::optional<double> lo, std
   if (!(t > t2 && t < t3))  // T lies in [t2, t3): any other top gives no segment, or empty ones
     throw InvalidParameter("top", "t2 < top < t3 = (" + format_shortest(t2) + ", " + format_shortest(t3) + ")", t);
   const CoveringSearch s = search_options(method, scan, uniform, recheck, refine, descend, max_segments, max_branches);
-  std::vector<CoveringSegment> segs;
-  {
-    py::gil_scoped_release nogil;
-    segs = covering_segments(p, l, h, t, s);
-  }
+  const std::vector<CoveringSegment> segs = interruptible([&] { return covering_segments(p, l, h, t, s); });
   py::list out;
   for (const auto& seg : segs) out.append(segment_dict(seg));
   return out;
@@ -100,11 +96,7 @@ py::list covering_segments_py(const Parameters& p, std::optional<double> lo, std
 py::dict lemma4_covering_py(const Parameters& p, const std::string& method, int scan, int uniform, std::optional<int> recheck, int refine,
                             bool descend, int max_segments, long long max_branches) {
   const CoveringSearch s = search_options(method, scan, uniform, recheck, refine, descend, max_segments, max_branches);
-  Lemma4Covering r;
-  {
-    py::gil_scoped_release nogil;
-    r = lemma4_covering(p, s);
-  }
+  const Lemma4Covering r = interruptible([&] { return lemma4_covering(p, s); });
   py::dict d;
   d["holds"] = r.holds;
   d["J0"] = r.holds ? py::object(segment_dict(r.J0)) : py::object(py::none());

@@ -14,7 +14,6 @@
 #include <mutex>
 #include <thread>
 
-#include "dfchaos/certified/ball.hpp"
 #include "dfchaos/errors.hpp"
 #include "dfchaos/stop.hpp"
 #include "kit/budget.hpp"
@@ -83,6 +82,61 @@ double resident_bytes() {
 
 }  // namespace
 
+namespace {
+
+/// A thread that runs one job at a time and then waits for the next. Workers are kept for the life
+/// of the process and reused: the thread-local state a call builds (the OpenMP thread pool of a
+/// sweep, the caches of Arb and FLINT in that pool's threads) is built once per worker, not once
+/// per call, and is never left behind by a thread that ends.
+class Worker {
+ public:
+  Worker() : thread_([this] { loop(); }) { thread_.detach(); }
+  /// Starts `job` on this worker (which must be idle).
+  void start(std::function<void()> job) {
+    const std::lock_guard<std::mutex> g(m_);
+    job_ = std::move(job);
+    cv_.notify_one();
+  }
+
+ private:
+  void loop() {
+    for (;;) {
+      std::function<void()> job;
+      {
+        std::unique_lock<std::mutex> lock(m_);
+        cv_.wait(lock, [&] { return static_cast<bool>(job_); });
+        job = std::move(job_);
+        job_ = nullptr;
+      }
+      job();  // never throws: run_interruptible's job catches everything
+    }
+  }
+  std::mutex m_;
+  std::condition_variable cv_;
+  std::function<void()> job_;
+  std::thread thread_;
+};
+
+/// The idle workers. One is taken per call and given back when the call is over; as many exist as
+/// calls have run at once (one, unless several Python threads call the module together).
+std::mutex g_idle_lock;
+std::vector<Worker*> g_idle;
+
+Worker* take_worker() {
+  const std::lock_guard<std::mutex> g(g_idle_lock);
+  if (g_idle.empty()) return new Worker();  // kept for the life of the process
+  Worker* w = g_idle.back();
+  g_idle.pop_back();
+  return w;
+}
+
+void give_back(Worker* w) {
+  const std::lock_guard<std::mutex> g(g_idle_lock);
+  g_idle.push_back(w);
+}
+
+}  // namespace
+
 void run_interruptible(const std::function<void()>& body, const CallBudget& budget) {
   using Clock = std::chrono::steady_clock;
   enum class Why { None, Signal, Time, Memory };
@@ -97,7 +151,8 @@ void run_interruptible(const std::function<void()>& body, const CallBudget& budg
     const double base = budget.gib > 0 ? resident_bytes() : -1;
     const double allowed = budget.gib * 1073741824.0;
     const Clock::time_point start = Clock::now();
-    std::thread worker([&] {
+    Worker* worker = take_worker();
+    worker->start([&] {
       {
         const StopScope scope(&token);
         try {
@@ -105,7 +160,6 @@ void run_interruptible(const std::function<void()>& body, const CallBudget& budg
         } catch (...) {
           error = std::current_exception();
         }
-        certified::release_thread_caches();
       }
       const std::lock_guard<std::mutex> g(m);
       done = true;
@@ -135,7 +189,8 @@ void run_interruptible(const std::function<void()>& body, const CallBudget& budg
       if (why != Why::None) token.request();
     }
     lock.unlock();
-    worker.join();
+    // The job has set `done` under the lock as its last use of this frame: the worker is free.
+    give_back(worker);
   }
   switch (why) {
     case Why::Signal: throw py::error_already_set();

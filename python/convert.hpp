@@ -88,13 +88,16 @@ struct CallBudget {
 /// @throws InvalidParameter naming max-seconds or max-memory.
 CallBudget call_budget(double max_seconds, double max_memory);
 
-/// Runs body() on a thread of its own, with the GIL released and a stop token installed
+/// Runs body() on a worker thread (kept and reused from call to call), with the GIL released and a
+/// stop token installed
 /// (dfchaos/stop.hpp), while the calling thread watches: every 10 ms the budget, every 100 ms
 /// Python's signal handlers (PyErr_CheckSignals). On Ctrl-C, or when the budget runs out, the token
 /// is set, the worker ends at its next poll, whatever it computed is discarded, and the call raises
 /// (KeyboardInterrupt, or dfchaos.GaveUp "gave up: the time budget of S s ran out (max_seconds
 /// raises it)" / "... memory budget of G GiB ..."). Otherwise body's own exception, if any, is
-/// rethrown. body must not touch Python objects.
+/// rethrown. body must not touch Python objects. The memory budget counts the resident memory of
+/// the whole process (/proc/self/statm) above its level at the start of the call: what other threads
+/// allocate meanwhile counts too, and it is not applied where that file cannot be read.
 void run_interruptible(const std::function<void()>& body, const CallBudget& budget = {});
 
 /// f() through run_interruptible(), returning its value.

@@ -90,6 +90,9 @@ check(r.returncode == 0 and r.stdout.startswith("usage: dfchaos-recheck") and "E
       "recheck --help: usage on stdout, exit 0", r.stdout[:200])
 r = run([checker, "--version"])
 check(r.returncode == 0 and r.stdout.startswith("dfchaos-recheck ") and "MPFI" in r.stdout, "recheck --version", r.stdout)
+for flag in ("--help", "-h", "--version"):  # exit 0 means "every file verified": never with files beside it
+    r = run([checker, "good.json", "missing.json", flag])
+    check(one_line_refusal(r, flag), f"recheck FILES {flag}: exit 2, nothing checked, one line", r.stderr + r.stdout)
 r = run([checker, "--frobnicate", "good.json"])
 check(one_line_refusal(r, "--frobnicate"), "recheck an unknown option: exit 2, one line naming it", r.stderr)
 r = run([checker])

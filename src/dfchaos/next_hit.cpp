@@ -9,6 +9,7 @@
 #include "dfchaos/errors.hpp"
 #include "dfchaos/model.hpp"
 #include "dfchaos/motion.hpp"
+#include "dfchaos/stop.hpp"
 
 namespace dfchaos {
 
@@ -73,6 +74,7 @@ std::vector<GrazingPoint> grazing_points(const Parameters& p, double lo, double 
     for (int it = 0; it < 200 && h - l > 2 * DBL_EPSILON * std::fabs(h); ++it) {
       const double m = 0.5 * (l + h);
       if (m <= l || m >= h) break;
+      poll_stop();  // stop.hpp: each evaluation of T1 is a poll
       const long long lm = label(m);
       if (lm != ll && lm != lh) {  // two or more changes inside: split
         self(self, l, m, ll, lm);
@@ -90,6 +92,7 @@ std::vector<GrazingPoint> grazing_points(const Parameters& p, double lo, double 
   double prev = lo;
   long long lprev = label(lo);
   for (int i = 1; i < scan; ++i) {
+    poll_stop();  // stop.hpp
     const double th = (i == scan - 1) ? hi : lo + (hi - lo) * i / (scan - 1);
     const long long l = label(th);
     isolate(isolate, prev, th, lprev, l);
@@ -99,6 +102,7 @@ std::vector<GrazingPoint> grazing_points(const Parameters& p, double lo, double 
 
   std::vector<GrazingPoint> out;
   for (const auto& [bl, bh] : brackets) {
+    poll_stop();  // stop.hpp
     GrazingPoint g;
     g.bracket_lo = bl;
     g.bracket_hi = bh;
@@ -172,6 +176,7 @@ std::vector<SymmetricTangency> symmetric_tangencies(const Parameters& p, double 
   const TangencyRange t = tangency_range(p, lo, hi);
   std::vector<SymmetricTangency> out;
   for (long long k = t.k_hi; k >= t.k_lo; --k) {
+    poll_stop();  // stop.hpp: up to max_branches bisections
     const double target = (2 * k + 1) * pi;
     // h(lo) >= target > h(hi)
     const auto [a, b] = bisect([&](double m) { return t.h(m) >= target; }, t.lo, t.hi, {.max_iterations = 200, .rel_tol = 2 * DBL_EPSILON});

@@ -14,6 +14,7 @@
 #include "dfchaos/errors.hpp"
 #include "dfchaos/map_derivative.hpp"
 #include "dfchaos/orbit.hpp"
+#include "dfchaos/stop.hpp"
 
 namespace dfchaos {
 
@@ -38,6 +39,7 @@ SuperstableCheck superstable_check(const Parameters& p, int scan) {
   const double h = (t3 - t2) / scan;
   double lo = t2, hi = NAN;
   for (int i = 1; i < scan; ++i) {
+    poll_stop();  // stop.hpp: up to 10^6 evaluations of T
     const double th = t2 + h * i;
     if (T(p, th) != t2) {
       hi = th;

@@ -240,6 +240,19 @@ void require_embedded(const json& j, const std::string& statement, const std::st
   if (!st.is_string() || st.get<std::string>() != statement) throw Malformed("'" + where + "' is not a " + statement + " certificate");
 }
 
+/// Checks an embedded certificate with `check`; a malformed field or a failed step inside it is named
+/// with the place of the embedded certificate ("witnesses.arc_l1: 'parameters.a' ...").
+template <class Check>
+long embedded(const std::string& where, Check&& check) {
+  try {
+    return check();
+  } catch (const Failed& e) {
+    throw Failed(where + ": " + e.what());
+  } catch (const Malformed& e) {
+    throw Malformed(where + ": " + e.what());
+  }
+}
+
 /// The amplitude a of a certificate whose statement is about the ratios b/a and q/a only: still a
 /// field of the format (docs/certificates.md), an exact double > 0.
 void require_amplitude(const json& c) {
@@ -1240,7 +1253,8 @@ long check_paper_construction(const json& c, std::string& what) {
   st.require(parameter(dp, "a", "witnesses.discontinuities.parameters.") == a && parameter(dp, "b", "witnesses.discontinuities.parameters.") == b &&
                  field(dp, "segment", "witnesses.discontinuities.parameters.") == "L2",
              "the discontinuities are at (a, b), on L2");
-  st.n += check_covering(cov) + check_discontinuities(dis, what);
+  st.n += embedded("witnesses.covering", [&] { return check_covering(cov); });
+  st.n += embedded("witnesses.discontinuities", [&] { return check_discontinuities(dis, what); });
   const json& ts = field(field(dis, "witnesses", ""), "tangencies", "witnesses.discontinuities.witnesses.");
   st.require(ts.size() >= 3, "at least three discontinuities on L2");
   std::vector<Num> zl, zh;
@@ -1437,7 +1451,7 @@ long check_lemma4_uniform(const json& c) {
   const json& arc = field(w, "arc_l1", "witnesses.");
   require_amplitude(c);
   require_embedded(arc, "arc-l1", "witnesses.arc_l1");
-  st.n += check_arc_l1(arc);
+  st.n += embedded("witnesses.arc_l1", [&] { return check_arc_l1(arc); });
   const json& ap = field(arc, "parameters", "witnesses.arc_l1.");
   const json& ak = field(ap, "q_over_a", "witnesses.arc_l1.parameters.");
   const double w_lo = parameter(p, "w_lo", "parameters."), w_hi = parameter(p, "w_hi", "parameters.");
@@ -1635,6 +1649,7 @@ std::string read_certificate(const std::string& path) {
   std::string text;
   try {
     if (::fstat(fd, &sb) != 0 || !S_ISREG(sb.st_mode)) throw Malformed(std::string("is ") + kind_of(sb.st_mode) + ", not a regular file: not read");
+    if (sb.st_size > kMaxBytes) throw Malformed("is larger than " + std::to_string(kMaxBytes >> 20) + " MiB (the checker's limit): not read");
     char buf[1 << 16];
     for (;;) {
       const ssize_t n = ::read(fd, buf, sizeof buf);
@@ -1774,11 +1789,17 @@ int main(int argc, char** argv) {
     const std::string arg = argv[i];
     if (options && arg == "--") {
       options = false;
-    } else if (options && (arg == "--help" || arg == "-h")) {
-      std::fputs(kUsage, stdout);
-      return std::fflush(stdout) == 0 ? 0 : 2;
-    } else if (options && arg == "--version") {
-      std::printf("dfchaos-recheck %s (MPFI %s, MPFR %s)\n", DFCHAOS_VERSION, mpfi_get_version(), mpfr_get_version());
+    } else if (options && (arg == "--help" || arg == "-h" || arg == "--version")) {
+      // Only alone: exit 0 is the verdict "every file verified", which a file named --help that a
+      // glob picked up among bad certificates must not earn.
+      if (argc != 2) {
+        std::fprintf(stderr, "dfchaos-recheck: %s takes no other argument (a file named so follows --)\n", arg.c_str());
+        return 2;
+      }
+      if (arg == "--version")
+        std::printf("dfchaos-recheck %s (MPFI %s, MPFR %s)\n", DFCHAOS_VERSION, mpfi_get_version(), mpfr_get_version());
+      else
+        std::fputs(kUsage, stdout);
       return std::fflush(stdout) == 0 ? 0 : 2;
     } else if (options && arg.size() > 1 && arg[0] == '-') {
       std::fprintf(stderr, "dfchaos-recheck: unknown option %s (a file named so follows --; see --help)\n", shown(arg).c_str());

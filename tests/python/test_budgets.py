@@ -17,6 +17,7 @@ import subprocess
 import sys
 import textwrap
 import time
+from fractions import Fraction
 
 import pytest
 
@@ -24,16 +25,23 @@ import dfchaos
 
 pytestmark = pytest.mark.failure
 
-# Seconds allowed between SIGINT and the end of the child process (it then prints its traceback and
-# exits). The module's watcher polls the signal every 0.1 s and the library polls its stop token at
-# every step, box or cell; what this bound leaves is for a loaded machine and the sanitizers.
-INTERRUPT_BOUND = 8.0
+# Seconds allowed between SIGINT and the end of the child process (the issue asks for 1 s; measured
+# here 25-60 ms). The module's watcher checks for the signal every 0.1 s and the library polls its
+# stop token at every step, box, branch or cell; the rest of this bound is for a loaded machine and
+# the sanitizers. A check of behaviour, not a timing test: the calls below ran for 20 s or more after
+# the signal before the stop token.
+INTERRUPT_BOUND = 3.0
 # Seconds the child runs before the signal: well inside each call below (each would run for minutes).
 RUN_BEFORE_SIGNAL = 1.5
 
 
-def test_certify_budgets_have_the_tools_defaults():
-    assert "max_seconds=60, max_memory=2) -> Certified" in dfchaos.certify.__doc__, dfchaos.certify.__doc__[:300]
+def test_certify_budgets_have_the_tools_defaults(cli):
+    # pybind11's signature line shows the defaults the binding was given (kit/budget.hpp's constants);
+    # the tool's help shows its own.
+    signature = dfchaos.certify.__doc__.splitlines()[0]
+    assert "max_seconds: float = 60.0" in signature and "max_memory: float = 2.0" in signature, signature
+    _, out, _ = cli.run("certify", "covering", "--help")
+    assert "--max-seconds S=60 " in out and "--max-memory G=2 " in out, out
 
 
 @pytest.mark.parametrize("kw, name", [({"max_seconds": 0}, "max-seconds"), ({"max_seconds": -1}, "max-seconds"),
@@ -63,16 +71,20 @@ def test_certify_memory_budget_gives_up_with_the_tools_wording():
     # at 2.1 GB); with a quarter of a GiB allowed it gives up long before.
     t = time.monotonic()
     with pytest.raises(dfchaos.GaveUp) as e:
-        dfchaos.certify("discontinuities", b=1e-12, max_memory=0.25, max_seconds=600)
+        dfchaos.certify("discontinuities", b=1e-12, max_memory=0.25, max_seconds=300)
     print(f"memory budget of 0.25 GiB: gave up after {time.monotonic() - t:.2f} s")
     assert str(e.value) == "gave up: the memory budget of 0.25 GiB ran out (max_memory raises it)"
 
 
-def test_certify_within_its_budget_answers_as_before():
+def test_certify_within_its_budget_answers_as_the_tool_does(cli):
+    # The proof on the module's worker thread, watched, against the tool's own process.
+    import json
     r = dfchaos.certify("covering", b=0.001, q=0.85, max_seconds=120, max_memory=4)
+    rc, out, err = cli.run("certify", "covering", "--b", "0.001", "--q", "0.85")
+    assert rc == 0, err
+    tool = json.loads(out)
     assert r.proved is True
-    again = dfchaos.certify("covering", b=0.001, q=0.85)
-    assert {k: v for k, v in r.items() if k != "seconds"} == {k: v for k, v in again.items() if k != "seconds"}
+    assert {k: v for k, v in r.items() if k != "seconds"} == {k: v for k, v in tool.items() if k != "seconds"}
 
 
 def test_certificate_not_written_when_the_budget_runs_out(tmp_path):
@@ -85,6 +97,10 @@ def test_certificate_not_written_when_the_budget_runs_out(tmp_path):
 CALLS = {
     "certify": "dfchaos.certify('discontinuities', b=1e-9, max_seconds=600)",
     "sweep": "dfchaos.sweep('0.75:0.95:40', '1e-6:1e-3:40:log', observables='certified')",
+    # one cell that runs for tens of seconds (10^8 tangencies to bisect): a stop between cells is not enough
+    "sweep_one_cell": "dfchaos.sweep('0.85', '1e-8', observables='covering', max_branches=10**9)",
+    "lemma4_covering": "dfchaos.lemma4_covering(dfchaos.Parameters(1, 1e-8, 0.85), max_branches=10**9)",
+    "covering_segments": "dfchaos.covering_segments(dfchaos.Parameters(1, 1e-8, 0.85), max_branches=10**9)",
     "lyapunov": "dfchaos.lyapunov(dfchaos.Parameters(1, 0.01, 0.85), steps=100_000_000)",
     "rate": "dfchaos.rate(dfchaos.Parameters(1, 0.01, 0.85), steps=100_000_000)",
     "period": "dfchaos.period(dfchaos.Parameters(1, 0.01, 0.85), transient=100_000_000)",
@@ -122,7 +138,9 @@ def test_ctrl_c_raises_keyboard_interrupt_promptly(name, tmp_path):
     assert latency < INTERRUPT_BOUND, f"{name}: {latency:.1f} s from SIGINT to the end"
 
 
-@pytest.mark.parametrize("lo, hi, names", [(2.0, 1.0, "lo, hi"), (math.nan, 1.0, "lo"), (0.0, math.nan, "hi"), ("x", 1.0, "lo"), (0.0, None, "hi")])
+@pytest.mark.parametrize("lo, hi, names", [(2.0, 1.0, "lo, hi"), (math.nan, 1.0, "lo"), (0.0, math.nan, "hi"), ("x", 1.0, "lo"), (0.0, None, "hi"),
+                                            ("0.1", 1.0, "lo"), (True, 2.0, "lo"), (Fraction(1, 10), 1.0, "lo"), (0.0, 2**53 + 1, "hi"),
+                                            (0.0, 2**1024, "hi")])
 def test_interval_refuses_bad_ends(lo, hi, names):
     with pytest.raises(ValueError) as e:
         dfchaos.Interval(lo, hi)
@@ -139,7 +157,7 @@ def test_interval_accepts_good_ends():
 
 @pytest.mark.parametrize("ball, name", [({"mid": "1", "rad": "-1"}, "rad"), ({"mid": "nan", "rad": "1e-9"}, "mid"),
                                         ({"mid": "1", "rad": "inf"}, "rad"), ({"mid": "one", "rad": "0"}, "mid"),
-                                        ({"mid": "1"}, "rad"), ({"mid": "1", "rad": "NaN"}, "rad")])
+                                        ({"mid": "1"}, "rad"), ({"mid": "1", "rad": "NaN"}, "rad"), ({"mid": "1e400", "rad": "0"}, "mid, rad")])
 def test_from_ball_refuses_bad_balls(ball, name):
     with pytest.raises(ValueError) as e:
         dfchaos.Interval.from_ball(ball)

@@ -47,8 +47,6 @@ std::string take(char* s) {
 
 long precision() { return g_prec; }
 
-void release_thread_caches() { flint_cleanup(); }
-
 PrecisionScope::PrecisionScope(long bits) : saved_(g_prec) {
   if (bits < 32) throw std::invalid_argument("PrecisionScope: at least 32 bits");
   g_prec = bits;

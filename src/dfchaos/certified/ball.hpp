@@ -31,11 +31,6 @@ void on_allocation_failure(void (*on_failure)());
 /// Working precision in bits of the Ball arithmetic of this thread (default 128).
 long precision();
 
-/// Frees the calling thread's caches of Arb and FLINT (constants such as pi kept at the precisions
-/// used; flint_cleanup()). For a thread that ends after its proofs (the Python module runs each
-/// long call on a thread of its own): without it each such thread leaves its caches behind.
-void release_thread_caches();
-
 /// Sets the working precision of this thread for the lifetime of the object.
 class PrecisionScope {
  public:

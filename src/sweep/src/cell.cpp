@@ -42,6 +42,8 @@ void guarded(CellValues& v, const char* name, F&& f) {
     f();
   } catch (const std::bad_alloc&) {
     throw;  // memory ran out: not a property of the cell (compute_rows ends the run)
+  } catch (const Stopped&) {
+    throw;  // a stop request (dfchaos/stop.hpp): not a property of the cell either
   } catch (const std::exception& e) {
     v.status = CellStatus::Error;
     v.error += (v.error.empty() ? "" : "; ") + std::string(name) + ": " + e.what();

@@ -25,11 +25,12 @@ std::vector<CellValues> compute_cells(const Spec& spec, const std::vector<long l
       values[i] = evaluate_cell(spec, cells[i]);  // never throws for a cell's failure
     } catch (const std::bad_alloc&) {
       out_of_memory.store(true);
+    } catch (const Stopped&) {  // only with a token, which is then set: poll_stop() below throws again
     }
     if (progress) progress->step();
   }
   if (out_of_memory.load()) throw std::bad_alloc();  // the chunk is not delivered: the run gives up (exit 1)
-  poll_stop();                                       // a cell may have recorded Stopped as its error: not delivered either
+  poll_stop();                                       // a stopped chunk is not delivered either
   return values;
 }
 
