@@ -90,7 +90,7 @@ const Experiment experiment{
           "For every proved column [q_lo, q_hi] of data/thm1_uniform_band.tsv and every b/a <= its b_over_a_max, Lemma 4 holds, hence "
           "the covering of Theorem 1: the inequalities (I1)-(I9) of docs/certified.md are proved for all these b/a at once; the "
           "argument from them is a proof on paper.";
-      auto& c = out.claim("cert.thm1.uniform_band", "Theorem 1, Lemma 4", EvidenceKind::Certified, statement).ours();
+      auto& c = out.claim("cert.thm1.uniform_band", "Theorem 1, Lemma 4", EvidenceKind::CertifiedArgument, statement).ours();
       c.parameter_object(Json::object().set("q_over_a", Json::array().push(q_lo).push(q_hi)).set("columns", n));
       c.evidence_object(Json::object()
                             .set("columns_proved", proved)

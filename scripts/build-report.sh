@@ -63,8 +63,9 @@ import glob, json, re, subprocess, sys
 build, out = sys.argv[1], sys.argv[2]
 # The report's length. A referee asked for a main text of at most 24 pages and 32 in all; the main
 # text is within it, the whole report one page over with the four views the same referee asked for
-# (docs/architecture.md says what was cut and what is left): the second limit stops it growing.
-MAX_MAIN, MAX_TOTAL = 24, 33
+# (docs/architecture.md says what was cut and what is left), and one more for the written argument
+# behind Lemma 4 for every small b/a (Appendix, issue 50): the second limit stops it growing.
+MAX_MAIN, MAX_TOTAL = 24, 34
 text = open(out + "/report.txt", encoding="utf-8", errors="replace").read()
 flat = re.sub(r"\s+", "", text)
 ids = [c["id"] for f in sorted(glob.glob(build + "/claims/*.json")) for c in json.load(open(f))["claims"]]

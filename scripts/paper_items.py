@@ -29,7 +29,7 @@ import re
 VERDICTS = ["confirmed", "corrected", "threshold", "refuted", "inconclusive", "not checked"]
 
 # Evidence, strongest first (kit/claim.hpp).
-STRENGTH = ["certified", "analytic", "sampled", "precision-limited"]
+STRENGTH = ["certified", "certified+argument", "analytic", "sampled", "precision-limited"]
 
 # One row per item of the paper, in reading order. `home`: the label of the report's section that
 # treats it; `match`: a regular expression on a claim's reference; `says`: the item in a few of our

@@ -297,7 +297,7 @@ def main():
         with open(path) as f:
             doc = json.load(f)
         for c in doc["claims"]:
-            if c["evidence_kind"] == "certified":
+            if c["evidence_kind"] in ("certified", "certified+argument"):
                 claims.append(c["id"])
                 record[c["id"]] = c
     by_claim = {cid: [] for cid in claims}

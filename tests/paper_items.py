@@ -76,6 +76,11 @@ class Verdicts(unittest.TestCase):
         self.assertEqual(P.items_of(claim("x", "Lemma 4, Remark")), ["lemma4remark"])
         self.assertEqual(P.items_of(claim("x", "Section 8, Remark (23)")), ["sec8remark"])
 
+    def test_a_written_argument_is_not_counted_as_certified(self):
+        cs = [claim("u", "Lemma 4, Theorem 1", kind="certified+argument", params={"b_over_a_max": 7.8e-5, "q_over_a": [0.73, 0.999]}),
+              claim("s", "Lemma 4")]
+        self.assertEqual(row(cs, "lemma4")[2], "certified+argument 1, sampled 1")
+
     def test_a_claim_at_two_b_counts_two_points(self):
         # dynamics_gallery's Section 5 claims are checked at b/a and at b_proof (issue 50, item 5)
         cs = [claim("g", "Section 5 (theta in [t2, 5pi/4])", params={"b_over_a": 0.01, "b_proof": 5e-5, "q_over_a": 0.85})]

@@ -129,6 +129,17 @@ TEST(Claims, PrecisionLimitedIsInconclusiveNeverFails) {
   EXPECT_NE(c.to_json().dump().find("\"evidence_kind\": \"precision-limited\""), std::string::npos);
 }
 
+// Issue 50, item 7: a statement that follows from certified inequalities by a written argument has
+// its own kind, written as such, never as "certified".
+TEST(Claims, CertifiedInequalitiesWithAWrittenArgumentHaveTheirOwnKind) {
+  Claim c("x.u", "Lemma 4", EvidenceKind::CertifiedArgument, "for every small b/a");
+  c.holds(true);
+  const std::string j = c.to_json().dump();
+  EXPECT_NE(j.find("\"evidence_kind\": \"certified+argument\""), std::string::npos) << j;
+  EXPECT_STREQ(evidence_kind_name(EvidenceKind::CertifiedArgument), "certified+argument");
+  EXPECT_STRNE(evidence_kind_name(EvidenceKind::CertifiedArgument), evidence_kind_name(EvidenceKind::Certified));
+}
+
 TEST(Claims, CasesLostToPrecisionMakeAClaimInconclusiveNeverFailing) {
   Claim lost("x.lost", "Section 6", EvidenceKind::Sampled, "every case");
   lost.cases(20, 0, 11).holds(false);  // a later holds(false) cannot turn it into a failure

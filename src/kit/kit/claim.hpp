@@ -5,6 +5,9 @@
 ///
 /// Kinds of evidence (docs/architecture.md), in decreasing strength:
 ///  - **certified**: proved in interval or ball arithmetic for the stated parameters;
+///  - **certified+argument**: inequalities proved in ball arithmetic (and re-checked), from which the
+///    statement follows by an argument written on paper (docs/certified.md, the report), which no
+///    program checks;
 ///  - **analytic**: an identity or closed form, checked to rounding;
 ///  - **sampled**: a grid or scan in floating point — it can miss what lies between samples;
 ///  - **precision-limited**: double precision cannot decide; the verdict is *inconclusive*, never
@@ -18,8 +21,8 @@
 namespace dfchaos::kit {
 
 /// The kind of evidence behind a verdict.
-enum class EvidenceKind { Analytic, Sampled, Certified, PrecisionLimited };
-/// "analytic", "sampled", "certified" or "precision-limited".
+enum class EvidenceKind { Analytic, Sampled, Certified, CertifiedArgument, PrecisionLimited };
+/// "analytic", "sampled", "certified", "certified+argument" or "precision-limited".
 const char* evidence_kind_name(EvidenceKind k);
 
 /// Who makes the claim: the paper asserts it, or it is ours (a hypothesis, a finding, or a

@@ -16,6 +16,7 @@ const char* evidence_kind_name(EvidenceKind k) {
     case EvidenceKind::Analytic: return "analytic";
     case EvidenceKind::Sampled: return "sampled";
     case EvidenceKind::Certified: return "certified";
+    case EvidenceKind::CertifiedArgument: return "certified+argument";
     case EvidenceKind::PrecisionLimited: return "precision-limited";
   }
   return "?";
