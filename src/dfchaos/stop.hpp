@@ -51,6 +51,7 @@ inline thread_local const StopToken* t_stop_token = nullptr;
 /// previous one comes back at the end.
 class StopScope {
  public:
+  /// Installs `token` (nullptr: none) in the calling thread until the scope ends.
   explicit StopScope(const StopToken* token) noexcept : previous_(detail::t_stop_token) { detail::t_stop_token = token; }
   ~StopScope() { detail::t_stop_token = previous_; }
   StopScope(const StopScope&) = delete;
