@@ -42,7 +42,7 @@ const Experiment experiment{
 
       run.out
           .claim("eq1.unique", "Eq. (1)", EvidenceKind::Sampled,
-                 "Eq. (1) has exactly one solution on (0, pi/2]: the residual increases strictly and changes sign once.")
+                 "pi - x = cot(x/2) has exactly one solution on (0, pi/2]: the residual increases strictly and changes sign once.")
           .evidence("samples", samples)
           .evidence("sign_changes", sign_changes)
           .evidence("non_increasing_steps", non_increasing)

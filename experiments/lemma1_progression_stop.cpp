@@ -105,7 +105,7 @@ const Experiment experiment{
           .holds(mismatch_eq8 == 0);
       run.out
           .claim("lemma1.proof_bound_sufficient", "Lemma 1, proof", EvidenceKind::Sampled,
-                 "Wherever the proof's bound a + a cos t0 - (q-2b)(pi - t0) < 0 holds, the progression does stop in [t1, t2].")
+                 "Wherever the proof's bound a + a cos t0 - (q - 2b)(pi - t0) < 0 holds, the progression does stop in [t1, t2].")
           .evidence("checked_where_bound_holds", bound_cases)
           .evidence("violations", bound_without_lemma)
           .holds(bound_without_lemma == 0);

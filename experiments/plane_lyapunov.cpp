@@ -210,12 +210,13 @@ const Experiment experiment{
       run.out.macro("LyapNoReturn", std::to_string(n_no_return));
       run.out.macro("LyapNoReturnLost", std::to_string(n_no_return_lost));
       run.out.macro("LyapStopCounterexamples", std::to_string(n_no_return - n_no_return_lost + n_cycle_failed));
-      {  // where they are: the first few cells against the claim, as (q/a, b/a); the report words them
+      {  // where they are: the first few cells against the claim, as (q/a, b/a) to 4 significant digits
+         // (enough to find the cell on this grid and on make plane-hires's); the report words them
         std::string cells;
         const std::size_t shown = std::min<std::size_t>(against_at.size(), 4);
         for (std::size_t i = 0; i < shown; ++i)
-          cells += std::string(i ? ", " : "") + "$(" + dfchaos::format_shortest(against_at[i].first) + ", " +
-                   latex_number(dfchaos::format_shortest(against_at[i].second)) + ")$";
+          cells += std::string(i ? ", " : "") + "$(" + format_significant(against_at[i].first, 4) + ", " +
+                   latex_number(format_significant(against_at[i].second, 4)) + ")$";
         run.out.macro("LyapStopCounterexampleCells", cells);
         run.out.macro("LyapStopCounterexampleShown", std::to_string(shown));
         run.out.macro("LyapStopCounterexampleAll", std::to_string(against_at.size()));

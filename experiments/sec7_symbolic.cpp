@@ -130,8 +130,9 @@ const Experiment experiment{
 
       const std::string why = std::to_string(undecided) + " words have one-step residuals above " + format_double(kStepTol) +
                               " but below what double precision resolves along their orbits (up to " + format_double(worst_floor) + ")";
-      auto& all = run.out.claim("sec7.all_words", "Section 7", EvidenceKind::Sampled,
-                                "Every binary word of length n <= n-max is the itinerary of an orbit through K0, K1 (2^n words).");
+      auto& all =
+          run.out.claim("sec7.all_words", "Section 7", EvidenceKind::Sampled,
+                        "Every binary word of length n, up to the largest length tried, is the itinerary of an orbit through K0, K1 (2^n words).");
       all.parameter("b_over_a", b)
           .parameter("q_over_a", q)
           .parameter("n_max", n_max)

@@ -87,7 +87,7 @@ const Experiment experiment{
       out.macro("UniformBandQHi", dfchaos::format_shortest(kBandQHi));
       out.macro("UniformQLo", dfchaos::format_shortest(q_lo));
       const std::string statement =
-          "For every proved column [q_lo, q_hi] of data/thm1_uniform_band.tsv and every b/a <= its b_over_a_max, Lemma 4 holds, hence "
+          "For every column of q/a proved in data/thm1_uniform_band.tsv and every b/a up to that column's proved bound, Lemma 4 holds, hence "
           "the covering of Theorem 1: the inequalities (I1)-(I9) of docs/certified.md are proved for all these b/a at once; the "
           "argument from them is a proof on paper.";
       auto& c = out.claim("cert.thm1.uniform_band", "Theorem 1, Lemma 4", EvidenceKind::CertifiedArgument, statement).ours();

@@ -224,9 +224,9 @@ const Experiment experiment{
           .holds(remark23_windows == 0 && wide_21 == 0);
       run.out
           .claim("thm2.nondegenerate", "Section 8", EvidenceKind::Sampled,
-                 "The nondegeneracy conditions of Section 8 (read as: the impact velocity dG1/dt at T1(t2) and dG2/dtheta2 = F(theta2) - q "
-                 "at theta2(t2) are non-zero) hold at the middle of every (21) and (22) piece, so each piece is robust under small "
-                 "changes of the parameters (implicit function theorem).")
+                 "The nondegeneracy conditions of Section 8 (read as: the derivative of G1 in t, the impact velocity, at T1(t2) and the "
+                 "derivative of G2 in theta2, F(theta2) - q, at theta2(t2) are non-zero) hold at the middle of every (21) and (22) piece, so "
+                 "each piece is robust under small changes of the parameters (implicit function theorem).")
           .evidence("pieces_nondegenerate", nondegenerate)
           .evidence("pieces_degenerate", degenerate)
           .holds(degenerate == 0 && nondegenerate > 0);

@@ -51,7 +51,8 @@ set xtics ('$\frac{101\pi}{100}$' L2lo, '$\frac{51\pi}{50}$' L2hi)
 set object 2 rect from L2lo, graph 0 to L2hi, graph 1 fc rgb c_alt fs transparent solid 0.2 noborder back
 set object 4 rect from graph 0, first L1lo to graph 1, first t3b fc rgb c_stop fs transparent solid 0.5 noborder back
 set label 3 '\footnotesize $T_1(z_i)\in L_1$' at (L2lo + L2hi)/2, first 1.86*pi center front
-set label 2 '\footnotesize $L_2$' at (L2lo + L2hi)/2, graph 0.04 center front
+# below the axis, between the tick labels of its ends: inside the panel it would sit on a branch
+set label 2 '\footnotesize $L_2$' at (L2lo + L2hi)/2, graph -0.07 center front
 plot f using (abs(column("b_over_a") - b2) < 1e-15*b2 ? column("theta") : NaN):"T1_phase" w p pt 7 ps 0.08 lc rgb c_free notitle, \
      g using "z":(0):(0):(2*pi) w vectors nohead dt 3 lw 1 lc rgb "black" notitle, \
      g using "z":"T1_phase" w p pt 6 ps 0.8 lw 1.5 lc rgb "black" notitle

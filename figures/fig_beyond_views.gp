@@ -84,8 +84,10 @@ unset ylabel
 set label 7 '$10^4\,b/a$' at screen 0.016, screen row_b + ph/2 center rotate by 90 front
 set format y '$%.1f$'
 set ytics 0.1
-# class -> colour (lightness: sky 0.62, blue 0.34, yellow 0.84, black 0)
-clsrgb(c) = (c == 0 ? 0x56B4E9 : (c == 1 ? 0x0072B2 : (c == 2 ? 0xF0E442 : (c == 3 ? 0x000000 : 0x7f7f7f))))
+# class -> colour, apart in lightness under luminance and under the mean of R, G, B (a yellow
+# unresolved cycle was as light as the sky blue by the mean): sky 0.62/0.65, blue 0.34/0.38,
+# unresolved very light grey 0.91, black 0
+clsrgb(c) = (c == 0 ? 0x56B4E9 : (c == 1 ? 0x0072B2 : (c == 2 ? 0xE8E8E8 : (c == 3 ? 0x000000 : 0x7f7f7f))))
 dth = (t3m - t2m) / nphases
 wl = (W_min - db/2)*ysc; wh = (W_max + db/2)*ysc
 set arrow 3 from graph 0, first wl to graph 1, first wl nohead lw 3.5 lc rgb "#ffffff" front
@@ -126,7 +128,7 @@ set object 40 rect center screen kx, screen ky size screen 0.012, screen 0.022 f
 set label 40 '\scriptsize no stop' at screen kx + 0.012, screen ky left front
 set object 41 rect center screen kx + 0.13, screen ky size screen 0.012, screen 0.022 fc rgb 0x0072B2 fs solid noborder front
 set label 41 '\scriptsize stops, goes on' at screen kx + 0.142, screen ky left front
-set object 42 rect center screen kx + 0.30, screen ky size screen 0.012, screen 0.022 fc rgb 0xF0E442 fs solid border lc rgb "#7f7f7f" front
+set object 42 rect center screen kx + 0.30, screen ky size screen 0.012, screen 0.022 fc rgb 0xE8E8E8 fs solid border lc rgb "#7f7f7f" front
 set label 42 '\scriptsize unresolved cycle' at screen kx + 0.312, screen ky left front
 set object 43 rect center screen kx + 0.48, screen ky size screen 0.012, screen 0.022 fc rgb 0x000000 fs solid noborder front
 set label 43 '\scriptsize superstable cycle' at screen kx + 0.492, screen ky left front

@@ -8,10 +8,11 @@ set terminal cairolatex pdf input size 14cm,7.6cm
 set output "fig_plane.tex"
 f = data."/thm1_parameter_plane.tsv"
 # class: 0 neither, 1 covering, 2 superstable, 3 both, -1 error (header of the table)
-# Okabe-Ito colours (style.gp), chosen to differ in lightness too: neither very light, covering sky
-# blue, t2 superstable only orange (it lies among the 'neither' cells), both blue (among the
-# covering cells), failed black; in greyscale 'superstable only' (mid grey) and 'both' (dark) differ.
-col0 = 0xe8e8e8; col1 = 0x56B4E9; col2 = 0xE69F00; col3 = 0x0072B2; colE = 0x000000
+# Colours (Okabe-Ito hues, style.gp) that differ in lightness too, under both usual greyscale
+# conversions (luminance 0.299R+0.587G+0.114B, and the mean of R, G, B): neither very light (232),
+# covering sky blue (158; mean 166), t2 superstable only vermilion (119; 102), both a dark shade of
+# the Okabe-Ito blue (50; 58), failed black.
+col0 = 0xe8e8e8; col1 = 0x56B4E9; col2 = 0xD55E00; col3 = 0x003F6F; colE = 0x000000
 rgbof(c) = (c == 0 ? col0 : (c == 1 ? col1 : (c == 2 ? col2 : (c == 3 ? col3 : colE))))
 red(c) = int(rgbof(c)) >> 16 & 255; green(c) = int(rgbof(c)) >> 8 & 255; blue(c) = int(rgbof(c)) & 255
 do for [c=-1:3] {

@@ -34,7 +34,7 @@ do for [k=1:2] {
   set title '$q/a='.(k == 1 ? q_shown : q_outside).'$'.(k == 1 ? '' : ' $<\sin\vartheta_0$: (2) fails') offset 0,-0.4
   if (k == 1) { set ylabel '$\theta_2(t_2)\bmod 2\pi$' offset 1,0 } else { unset ylabel }
   set label 1 '\footnotesize (21): $(t_1,t_2)$' at graph 0.97, first 2.68 right front
-  set label 2 '\footnotesize (22): $[0,t_0)$' at graph 0.03, first 0.62 left front
+  set label 2 '\footnotesize (22): $[0,t_0)$' at graph 0.03, first 1.2 left front
   plot f using (sel(q) ? column("b_over_a") : NaN):"t1":"t2" w filledcurves fc rgb c_stop fs transparent solid 0.25 noborder notitle, \
        f using (sel(q) ? column("b_over_a") : NaN):"t3":(2*pi) w filledcurves fc rgb c_alt fs transparent solid 0.25 noborder notitle, \
        f using (sel(q) ? column("b_over_a") : NaN):(0):"t0" w filledcurves fc rgb c_alt fs transparent solid 0.25 noborder notitle, \

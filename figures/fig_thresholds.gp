@@ -34,7 +34,8 @@ set yrange [1e-4:1]
 set object 1 rect from graph 0, graph 0 to first s0, graph 1 fc rgb "#d9d9d9" fs solid 0.5 noborder back
 set label 1 '\footnotesize (2) fails' at first (0.6+s0)/2, graph 0.5 center front
 set label 2 '$\sin\vartheta_0$' at first s0, graph 0.92 left offset 0.4,0
-set key bottom right samplen 2 spacing 1.05 box opaque width -2
+# the key right of q/a = 0.78, clear of the curves' steep fall towards sin(theta0)
+set key at graph 0.985, graph 0.03 right bottom samplen 1.5 spacing 1.05 box opaque width -3
 f1 = data."/lemma1_progression_stop.tsv"
 fb = data."/certified_claims-b0.tsv"
 plot f1 using "q_over_a":(column("b0_lemma1") > 0 ? column("b0_lemma1") : NaN) w l lw 2 lc rgb c_free title '\footnotesize computed $b_0$', \
@@ -61,14 +62,16 @@ set xrange [NQ_min - dq/2 : NQ_max + dq/2]
 set xtics 0.1
 set mxtics 2
 set yrange [B_min/2 : B_max*2]
-# key outside the panel, on its right; the threshold of each q/a column is drawn over the width of its cell
+# key outside the panel, on its right; the threshold of each q/a column is drawn over the width of its cell.
+# The band of proved boxes is a few pixels high on this axis: one triangle per column at its height,
+# so that in greyscale it is not taken for the solid black step of the column bounds.
 set key at screen 0.805, graph 1 left top reverse Left samplen 1.5 spacing 1.2 nobox
 fu = data."/thm1_uniform_band.tsv"
 ylo = B_min/2
 plot fu using (0.5*(column("q_lo") + column("q_hi"))):(column("proved") == 1 ? sqrt(ylo*column("b_over_a_max")) : NaN):"q_lo":"q_hi":(ylo):"b_over_a_max" \
         w boxxyerror fs transparent solid 0.3 noborder lc rgb c_sky title 'proved for all smaller $b/a$', \
      fu using "q_lo":(column("proved") == 1 ? column("b_over_a_max") : NaN):(column("q_hi") - column("q_lo")):(0) \
-        w vectors nohead lw 2.5 lc rgb oi_black notitle, \
+        w vectors nohead lw 2.5 lc rgb oi_black title 'its bound per column', \
      g4 using "q_over_a":(column("covering_holds") == 0 && column("literal_all") == 0 ? column("b_over_a") : NaN) w p pt 6 ps 0.45 lc rgb c_grey title 'neither', \
      g4 using "q_over_a":(column("covering_holds") == 1 && column("literal_all") == 0 ? column("b_over_a") : NaN) w p pt 7 ps 0.45 lc rgb c_free title 'covering (b) only', \
      g4 using "q_over_a":(column("literal_all") == 1 ? column("b_over_a") : NaN) w p pt 5 ps 0.5 lc rgb c_prog title "(a) and (b)", \
@@ -76,6 +79,6 @@ plot fu using (0.5*(column("q_lo") + column("q_hi"))):(column("proved") == 1 ? s
         w xerrorbars pt -1 lw 2 lc rgb c_free title '$b_0$ of (b)', \
      f4 using "q_over_a":(column("b0_literal") > 0 ? column("b0_literal") : NaN):(column("q_over_a")-dq/2):(column("q_over_a")+dq/2) \
         w xerrorbars pt -1 lw 2 dt 2 lc rgb c_prog title '$b_0$ of (a)', \
-     fc using (0.5*(column("q_lo") + column("q_hi"))):(column("b_reached") > RB_min ? sqrt(RB_min*column("b_reached")) : NaN):"q_lo":"q_hi":(RB_min):"b_reached" \
-        w boxxyerror fs solid 1.0 border lc rgb c_stop lw 3 fc rgb c_stop title 'proved boxes'
+     fc using (0.5*(column("q_lo") + column("q_hi"))):(column("b_reached") > RB_min ? sqrt(RB_min*column("b_reached")) : NaN) \
+        w p pt 9 ps 0.75 lc rgb c_stop title 'proved boxes'
 unset multiplot

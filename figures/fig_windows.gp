@@ -16,7 +16,7 @@ set logscale xy
 set format x '$10^{%T}$'; set format y '$10^{%T}$'
 set lmargin at screen 0.12; set rmargin at screen 0.97
 # ---- (a) epsilon
-set bmargin at screen 0.585; set tmargin at screen 0.97
+set bmargin at screen 0.61; set tmargin at screen 0.97
 set format x ''; unset xlabel
 set ylabel '$\varepsilon$ at the middle'
 set label 1 '(a)' at graph 0.97, graph 0.1 right front
@@ -24,8 +24,8 @@ set key top left box opaque
 plot f using (sel(21) ? column("b_mid") : NaN):"epsilon_mid" w p pt 7 ps 0.4 lc rgb c_stop title 'condition (21)', \
      f using (sel(22) ? column("b_mid") : NaN):"epsilon_mid" w p pt 4 ps 0.45 lw 1.5 lc rgb c_alt title 'condition (22)'
 # ---- (b) relative width
-set bmargin at screen 0.12; set tmargin at screen 0.505
-set format x '$10^{%T}$'; set xlabel '$b/a$'
+set bmargin at screen 0.17; set tmargin at screen 0.53
+set format x '$10^{%T}$'; set xlabel '$b/a$' offset 0,0.4
 set ylabel 'relative width $\frac{b_{\mathrm{hi}}-b_{\mathrm{lo}}}{b_{\mathrm{mid}}}$'
 set label 1 '(b)' at graph 0.97, graph 0.1 right front
 unset key

@@ -7,8 +7,9 @@
 #                                    git lists the sources for the tests spdx and dist, and for make dist; python3-pandas
 #                                    reads every output in the test python_load_outputs)
 #   scripts/install-deps.sh report   build + gnuplot, LaTeX, Doxygen (for `make reproduce`)
-#   scripts/install-deps.sh check    build + clang and its OpenMP runtime (for `make test-clang`),
-#                                    clang-format (for `make format-check`) and clang-tidy (for `make test-tidy`)
+#   scripts/install-deps.sh check    build + clang, its OpenMP runtime and its sanitizer runtime (for `make test-clang`
+#                                    and `make test-sanitize SANITIZE_CXX=clang++`), clang-format (for
+#                                    `make format-check`) and clang-tidy (for `make test-tidy`)
 #
 # Idempotent: a second run finds nothing missing and does nothing. Runs apt-get as
 # root, or through sudo; where neither is possible it prints the exact command and fails.
@@ -21,7 +22,7 @@ build_pkgs=(g++ cmake make pkg-config git python3 python3-mpmath libeigen3-dev l
 report_pkgs=(gnuplot-nox latexmk texlive-latex-base texlive-latex-recommended
              texlive-latex-extra texlive-fonts-recommended texlive-pictures doxygen poppler-utils)
 
-check_pkgs=(clang libomp-dev clang-format clang-tidy)
+check_pkgs=(clang libomp-dev libclang-rt-14-dev clang-format clang-tidy)
 
 case "$profile" in
   build)  wanted=("${build_pkgs[@]}") ;;

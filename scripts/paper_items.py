@@ -19,14 +19,18 @@ Verdict about the paper (paper_verdict), the first rule that applies:
     or a hypothesis the statement leaves out);
   - confirmed with an explicit threshold: the claims of the paper hold, and so do the claims an item
     names in `threshold`, which bound "b/a sufficiently small" explicitly;
-  - confirmed: the claims of the paper hold (an inconclusive one aside, when another holds);
+  - consistent, sampled: the claims of the paper hold, and every one that holds is sampled (a grid, a
+    few parameter sets, one perturbation): nothing between the samples is known, so the word is
+    weaker than "confirmed";
+  - confirmed: the claims of the paper hold (an inconclusive one aside, when another holds), and at
+    least one of them is certified or analytic;
   - not checked: no claim of the paper, and no erratum that holds or is inconclusive, bears on it.
 An erratum that fails refutes nothing and confirms nothing.
 """
 import re
 
 # The verdicts about the paper, in the order the report counts them.
-VERDICTS = ["confirmed", "corrected", "threshold", "refuted", "inconclusive", "not checked"]
+VERDICTS = ["confirmed", "consistent", "corrected", "threshold", "refuted", "inconclusive", "not checked"]
 
 # Evidence, strongest first (kit/claim.hpp).
 STRENGTH = ["certified", "certified+argument", "analytic", "sampled", "precision-limited"]
@@ -52,7 +56,7 @@ ITEMS = [
          says=r"$\theta\in[t_2,5\pi/4]$ gives $\theta_1\in[3\pi/2,t_3]$"),
     dict(key="lemma3", home="sec:lemma3", item="Lemma~3", match=r"Lemma 3", corrections=["lemma3.needs_lemma1"],
          says=r"$T(\theta)=\theta_2 \bmod 2\pi$ when it lies in $[t_2,t_3)$, and $T(\theta)=t_2$ otherwise"),
-    dict(key="lemma4", home="sec:lemma4", item="Lemma~4", match=r"Lemma 4(?!, Remark)", threshold=["cert.lemma4.uniform_small_b"],
+    dict(key="lemma4", home="sec:lemma4", item="Lemma~4", match=r"Lemma 4(?!, Remark)", threshold=["cert.lemma4.uniform_small_b", "cert.thm1.uniform_band"],
          says=r"disjoint $J_0,J_1\subset[t_2,3\pi/2]$, $T$ continuous on each, $T(J_i)\supseteq[t_2,3\pi/2]$"),
     dict(key="lemma4remark", home="sec:periodic", item="Remark after Lemma~4", match=r"Lemma 4, Remark",
          says=r"the $J_i$ may be taken with $T(J_i)=[t_2,3\pi/2]$ exactly"),
@@ -60,7 +64,7 @@ ITEMS = [
          says=r"periodic points of every minimal period $m$ (itinerary $(0^{m-1}1)^\infty$)"),
     dict(key="sec7", home="sec:periodic", item="Sec.~7", match=r"Section 7",
          says=r"semi-conjugacy to the one-sided shift on two symbols, so $h_{\mathrm{top}}(T)\ge\ln2$"),
-    dict(key="thm1", home="sec:plane", item="Theorem~1", match=r"Theorems? 1", threshold=["cert.lemma4.uniform_small_b"],
+    dict(key="thm1", home="sec:plane", item="Theorem~1", match=r"Theorems? 1", threshold=["cert.lemma4.uniform_small_b", "cert.thm1.uniform_band"],
          says=r"for $b<b_0(a,q)$: covering segments, infinitely many periodic points, symbolic dynamics"),
     dict(key="thm2", home="sec:theorem2", item="Sec.~8, Theorem~2", match=r"Theorem 2|Section 8(?!, Remark)|Theorems 1 and 2",
          corrections=["thm2.nondegenerate", "cert.thm2.erratum"],
@@ -103,6 +107,8 @@ def paper_verdict(deciding, thresholds, corrections=()):
         return "corrected"
     if thresholds and all(c["verdict"] == "holds" for c in thresholds):
         return "threshold"
+    if all(c["evidence_kind"] == "sampled" for c in paper if c["verdict"] == "holds"):
+        return "consistent"
     return "confirmed"
 
 
@@ -141,21 +147,30 @@ def scope(claims):
     proved when a claim records it), parameter points, lines of fixed q/a (windows in b), and the
     grids of experiments whose claims name no point."""
     chosen = [c for c in claims if c["verdict"] == "holds"] or claims
-    regions, points, lines, other = [], set(), set(), set()
+    regions, points, lines, other, columns = [], set(), set(), set(), []
     number = lambda x: isinstance(x, (int, float)) and not isinstance(x, bool)
     for c in chosen:
         p = c["parameters"]
         b = p.get("b_over_a", p.get("b"))
         q = p.get("q_over_a", p.get("q"))
+        ev = c.get("evidence")
+        cols = ev.get("columns") if isinstance(ev, dict) else None
+        # every b/a up to a bound of its own in each column of q/a (thm1_uniform_band)
+        if isinstance(cols, list) and cols and all(isinstance(k, dict) and "b_over_a_max" in k for k in cols):
+            proved = [k for k in cols if k.get("proved")]
+            if proved:
+                columns.append((len(proved), min(k["b_over_a_max"] for k in proved), max(k["b_over_a_max"] for k in proved),
+                                min(k["parameters"]["q_over_a"][0] for k in proved), max(k["parameters"]["q_over_a"][1] for k in proved)))
+            continue
         # every b/a up to a bound: the item's statement itself (a step of a proof, "(proof)", proves less)
         if number(p.get("b_over_a_max")) and isinstance(q, list) and len(q) == 2 and "(proof)" not in c["reference"]:
-            if (("max", p["b_over_a_max"]), q, None) not in regions:
-                regions.append((("max", p["b_over_a_max"]), q, None))
+            if (("max", p["b_over_a_max"]), q, None, None) not in regions:
+                regions.append((("max", p["b_over_a_max"]), q, None, None))
         elif isinstance(b, list) and isinstance(q, list) and len(b) == 2 and len(q) == 2:
-            ev = c.get("evidence")
             frac = ev.get("proved_fraction_of_band") if isinstance(ev, dict) else None
-            if (b, q, frac) not in regions:
-                regions.append((b, q, frac))
+            union = ev.get("proved_fraction_with_columns") if isinstance(ev, dict) else None
+            if (b, q, frac, union) not in regions:
+                regions.append((b, q, frac, union))
         elif number(b):
             points.add((b, q if number(q) else None))
             if number(p.get("b_proof")):  # a second b/a of the same claim (dynamics_gallery: the proof's)
@@ -165,12 +180,17 @@ def scope(claims):
         else:
             other.add(c["evidence_kind"])
     parts = []
-    for b, q, frac in regions:
+    for b, q, frac, union in regions:
         if isinstance(b, tuple):  # every b/a in (0, bound]
             parts.append(r"every $b/a\le%s$, $q/a\in[%s,%s]$" % (fmt_down(b[1]), fmt(q[0]), fmt(q[1])))
             continue
         share = r"%d\,\%% of " % int(100 * frac) if number(frac) else ""  # rounded down
-        parts.append(share + r"$b/a\in[%s,%s]$, $q/a\in[%s,%s]$" % (fmt(b[0]), fmt(b[1]), fmt(q[0]), fmt(q[1])))
+        with_columns = (r" by boxes, %d\,\%% with the column bounds (area, linear)" % int(100 * union)) if number(union) else ""
+        parts.append(share + r"$b/a\in[%s,%s]$, $q/a\in[%s,%s]$" % (fmt(b[0]), fmt(b[1]), fmt(q[0]), fmt(q[1])) + with_columns)
+    for n, lo, hi, q0, q1 in columns:  # the q/a range printed inward, to three decimals
+        import math
+        parts.append(r"every $b/a$ below its column's bound ($%s$ to $%s$), %d columns of $q/a\in[%s,%s]$" %
+                     (fmt_down(lo), fmt_down(hi), n, fmt(math.ceil(q0 * 1000) / 1000), fmt(math.floor(q1 * 1000) / 1000)))
     if points:
         parts.append("%d point%s" % (len(points), "" if len(points) == 1 else "s"))
     for q in sorted(lines):
@@ -180,6 +200,19 @@ def scope(claims):
     if "analytic" in other:
         parts.append("closed forms")
     return "; ".join(parts)
+
+
+def union_fraction(band, boxes, columns):
+    """The share of the band (b_lo, b_hi, q_lo, q_hi) covered by the proved boxes (q_lo, q_hi, b_lo, b_hi)
+    together with the columns (q_lo, q_hi, bound) proved for every b/a up to their bound, by area in
+    the linear measure of (q/a, b/a). The boxes are disjoint, and so are the columns."""
+    B0, B1, Q0, Q1 = band
+    clip = lambda lo, hi, a, b: max(0.0, min(hi, b) - max(lo, a))
+    rects = [(max(q0, Q0), min(q1, Q1), B0, min(bound, B1)) for q0, q1, bound in columns if bound > B0 and q1 > Q0 and q0 < Q1]
+    area = sum((r[1] - r[0]) * (r[3] - r[2]) for r in rects if r[1] > r[0])
+    for q0, q1, b0, b1 in boxes:
+        area += clip(Q0, Q1, q0, q1) * clip(B0, B1, b0, b1) - sum(clip(r[0], r[1], q0, q1) * clip(r[2], r[3], b0, b1) for r in rects)
+    return area / ((B1 - B0) * (Q1 - Q0))
 
 
 def rows(claims):

@@ -48,13 +48,21 @@ class Verdicts(unittest.TestCase):
         self.assertEqual(row(cs, "thm2")[1], "corrected")  # needs b < b0(q): the erratum, as a correction
         self.assertEqual(row(cs, "sec8remark")[1], "refuted")  # and the Remark it refutes
         cs[1]["verdict"] = "inconclusive"
-        self.assertEqual(row(cs, "thm2")[1], "confirmed")  # a correction that is not shown does not count
+        self.assertEqual(row(cs, "thm2")[1], "consistent")  # a correction that is not shown does not count
 
     def test_precision_limited_is_inconclusive_never_refuted(self):
         cs = [claim("p", "Section 7", verdict="inconclusive", kind="precision-limited")]
         self.assertEqual(row(cs, "sec7")[1], "inconclusive")
-        cs.append(claim("q", "Section 7"))
+        cs.append(claim("q", "Section 7", kind="analytic"))
         self.assertEqual(row(cs, "sec7")[1], "confirmed")
+
+    def test_sampled_alone_is_consistent_not_confirmed(self):
+        cs = [claim("s", "Section 10"), claim("t", "Section 10", kind="precision-limited", verdict="inconclusive")]
+        self.assertEqual(row(cs, "sec10")[1], "consistent")  # one perturbation at one point proves nothing between
+        cs.append(claim("c", "Section 10", kind="certified", verdict="fails"))
+        self.assertEqual(row(cs, "sec10")[1], "refuted")
+        cs[-1]["verdict"] = "holds"
+        self.assertEqual(row(cs, "sec10")[1], "confirmed")  # one certified claim that holds is enough
 
     def test_our_claims_never_decide(self):
         cs = [claim("o", "Lemma 3", origin="ours", verdict="fails")]
@@ -75,6 +83,26 @@ class Verdicts(unittest.TestCase):
         self.assertIn(r"88\,\% of $b/a\in[0.00195,0.002]$", row(cs, "thm1")[3])  # the share proved, rounded down
         self.assertEqual(P.items_of(claim("x", "Lemma 4, Remark")), ["lemma4remark"])
         self.assertEqual(P.items_of(claim("x", "Section 8, Remark (23)")), ["sec8remark"])
+
+    def test_union_of_boxes_and_column_bounds(self):
+        band = (0.0, 1.0, 0.0, 1.0)
+        self.assertAlmostEqual(P.union_fraction(band, [(0, 0.5, 0, 1)], []), 0.5)  # boxes alone
+        self.assertAlmostEqual(P.union_fraction(band, [], [(0.5, 1, 2.0)]), 0.5)  # a bound above the band fills its column
+        # overlap counted once: a box inside a column's proved part adds nothing, one beside it adds its area
+        self.assertAlmostEqual(P.union_fraction(band, [(0.5, 1, 0, 0.5), (0, 0.5, 0, 0.5)], [(0.5, 1, 2.0)]), 0.75)
+        self.assertAlmostEqual(P.union_fraction(band, [], [(0, 1, -1.0)]), 0.0)  # a bound below the band: nothing
+        self.assertAlmostEqual(P.union_fraction(band, [(0, 1, 0.25, 0.75)], [(0, 1, 0.5)]), 0.75)
+
+    def test_columns_of_bounds_in_the_scope(self):
+        cols = [{"parameters": {"q_over_a": [0.7299642857, 0.74]}, "proved": True, "b_over_a_max": 7.5e-4},
+                {"parameters": {"q_over_a": [0.74, 0.999]}, "proved": True, "b_over_a_max": 2.4468e-3},
+                {"parameters": {"q_over_a": [0.72, 0.7299642857]}, "proved": False, "b_over_a_max": 7.8e-5}]
+        c = claim("u", "Lemma 4", kind="certified+argument", params={"q_over_a": [0.72, 0.999], "columns": 3})
+        c["evidence"] = {"columns": cols}
+        scope = P.scope([c])
+        self.assertIn(r"2 columns of $q/a\in[0.73,0.999]$", scope)  # the proved ones, the range printed inward
+        self.assertIn(r"($0.00075$ to $0.00244$)", scope)  # rounded down: bounds stay true
+        self.assertNotIn("grids", scope)
 
     def test_a_written_argument_is_not_counted_as_certified(self):
         cs = [claim("u", "Lemma 4, Theorem 1", kind="certified+argument", params={"b_over_a_max": 7.8e-5, "q_over_a": [0.73, 0.999]}),
@@ -165,9 +193,21 @@ class Typeset(unittest.TestCase):
         self.assertEqual(M.typeset(r"(0\textasciicircum{}(m-1)1)\textasciicircum{}infinity"), r"$(0^{m-1}1)^\infty$")
 
     def test_identifiers_and_paths_are_left_alone(self):
-        for text in (r"'jump\_at\_least' and t2\_cycle", r"\path{cert.t2} and \texttt{t2}", "typical steps at 2k+1",
-                     "the L1 distance", "Li-Yorke chaos, bi-infinite", r"costs \$t2 and \$\$", "3.5pi/2"):
+        for text in (r"jump\_at\_least and t2\_cycle, b\_over\_a\_max", r"\path{cert.t2} and \texttt{t2}", "typical steps at 2k+1",
+                     "the L1 distance", "Li-Yorke chaos, bi-infinite", r"costs \$t2 and \$\$", "3.5pi/2",
+                     "(I1)-(I9), (z-0), (q-2b), 0-1 matrix", "the paper's values and (q/a)'s", r"\path{a - b} and \path{x\_k}"):
             self.assertEqual(M.typeset(text), text)
+
+    def test_minus_signs_indices_and_formulas(self):
+        # a hyphen between spaces, or before a bracket after a space, is a minus sign
+        self.assertEqual(M.typeset(r"x - y $>$= -(2a + b)"), r"x $-$ y $\ge$ $-$(2a + b)")
+        # a one-letter base with a one-character index, the spectral radius, and the tangency condition whole
+        self.assertEqual(M.typeset(r"T(I\_j) contains I\_k, ln rho(A), z\_1 $<$ ... $<$ z\_n"),
+                         r"T($I_j$) contains $I_k$, ln $\rho(A)$, $z_1$ $<$ ... $<$ $z_n$")
+        self.assertEqual(M.typeset(r"the z\_k with 2z - (a/b) cos z = (2k+1) pi, T1(z\_k) = z\_k - (a/b) cos z\_k"),
+                         r"the $z_k$ with $2z-(a/b)\cos z=(2k+1)\pi$, $T_1$($z_k$) = $z_k-(a/b)\cos z_k$")
+        # an opening quote after a space or a bracket is one; apostrophes stay
+        self.assertEqual(M.typeset("the paper's 'b $<$$<$ q' (and 'x')"), r"the paper's `b $\ll$ q' (and `x')")
 
 
 if __name__ == "__main__":

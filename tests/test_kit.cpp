@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -18,6 +19,7 @@
 #include "dfchaos/bisect.hpp"
 #include "dfchaos/errors.hpp"
 #include "kit/claim.hpp"
+#include "kit/format.hpp"
 #include "kit/grid.hpp"
 #include "kit/json.hpp"
 #include "kit/options.hpp"
@@ -224,6 +226,19 @@ TEST(LatexTable, TypesetsCellsInExponentNotationAndLeavesOtherCells) {
   const std::string t = LatexTable("rrrr", {"a", "b", "c", "d"}).row({"8.68e-05", "1e-12", "0.85", "---"}).render();
   EXPECT_NE(t.find("\\ensuremath{8.68\\times 10^{-5}} & \\ensuremath{10^{-12}} & 0.85 & ---\\\\\n"), std::string::npos) << t;
   EXPECT_EQ(t.find("e-05"), std::string::npos) << t;
+}
+
+TEST(Format, SignificantDownNeverRoundsABoundUp) {
+  EXPECT_EQ(format_significant_down(7.8246700263127835e-5, 3), "7.82e-5");
+  EXPECT_EQ(format_significant_down(0.047054156659257156, 3), "0.047");
+  EXPECT_EQ(format_significant_down(0.04789, 3), "0.0478");  // to nearest it would be 0.0479, above the bound
+  EXPECT_EQ(format_significant_down(2.0, 2), "2");
+  EXPECT_EQ(format_significant_down(0.0, 3), "0");  // an unproved bound
+  for (double x = 1e-9; x < 1e9; x *= 1.37) {       // never above x, and within one unit of the last digit
+    const double d = std::strtod(format_significant_down(x, 3).c_str(), nullptr);
+    EXPECT_LE(d, x) << x;
+    EXPECT_GT(d, x * (1 - 1.01e-2)) << x;
+  }
 }
 
 TEST(Output, CertificatesGoWithTheOtherOutputsOrNotAtAll) {

@@ -13,6 +13,7 @@
 // version, embedded or not, a number that is not an exact hexadecimal float). Each file gets its
 // line, written out as soon as it is decided; the status is the worst of them.
 #include <fcntl.h>
+#include <gmp.h>
 #include <mpfi.h>
 #include <mpfr.h>
 #include <sys/stat.h>
@@ -1797,7 +1798,7 @@ int main(int argc, char** argv) {
         return 2;
       }
       if (arg == "--version")
-        std::printf("dfchaos-recheck %s (MPFI %s, MPFR %s)\n", DFCHAOS_VERSION, mpfi_get_version(), mpfr_get_version());
+        std::printf("dfchaos-recheck %s (MPFI %s, MPFR %s, GMP %s)\n", DFCHAOS_VERSION, mpfi_get_version(), mpfr_get_version(), gmp_version);
       else
         std::fputs(kUsage, stdout);
       return std::fflush(stdout) == 0 ? 0 : 2;

@@ -8,6 +8,7 @@
 #include <cstdlib>
 
 #include "dfchaos/errors.hpp"
+#include "kit/format.hpp"
 
 namespace dfchaos::certify {
 
@@ -56,7 +57,7 @@ void add_verdict(Json& j, const Outcome& v) {
 }
 
 std::string statement_vartheta0() {
-  return "Eq. (1): pi - x = cot(x/2) has exactly one solution vartheta0 on (0, pi/2] (the left side minus the right increases "
+  return "The equation pi - x = cot(x/2) has exactly one solution vartheta0 on (0, pi/2] (the left side minus the right increases "
          "strictly there), and vartheta0 and sin(vartheta0) lie in the printed balls; the printed doubles are their correctly "
          "rounded values.";
 }
@@ -72,8 +73,11 @@ std::string statement_b0(double a, double q, double b_low) {
 std::string statement_arc_l1(const ArcL1Proof& p) {
   const std::string arc = p.paper_arc ? "The arc L1 = [197pi/100, t3) of Lemma 4's proof"
                                       : "The arc [2pi - Delta, t3), Delta = " + format_double(p.delta_max) + " (L1 widened)";
-  return arc + ", for every b/a <= " + format_double(p.eps_max) + " and q/a in [" + format_double(p.kappa_lo) + ", " + format_double(p.kappa_hi) +
-         "] at once: from rest on it the first contact (Eq. 11) is simple and after t3, and the progression stops in " +
+  // For people: the bound of b/a rounded down (the exact double is the parameter b_over_a_max), the
+  // ends of the box of q/a as the shortest decimals of their doubles.
+  return arc + ", for every b/a <= " + kit::format_significant_down(p.eps_max, 3) + " and q/a in [" + format_shortest(p.kappa_lo) + ", " +
+         format_shortest(p.kappa_hi) +
+         "] (doubles) at once: from rest on it the first contact (Eq. 11) is simple and after t3, and the progression stops in " +
          (p.stop_arc ? std::string("(t3, 3pi), inside the stop arc (Eq. 17)") : std::string("(t3, t0 + 2pi) (Eq. 17)")) +
          ", so T = t2 there wherever Lemma 1 holds.";
 }
@@ -81,17 +85,18 @@ std::string statement_lemma4_uniform(const Lemma4UniformProof& p) {
   const std::string segment =
       p.paper_L2 ? "L2 = [101pi/100, 51pi/50]"
                  : "[pi + w_lo, pi + w_hi], w_lo = " + format_double(p.w_a) + ", w_hi = " + format_double(p.w_b) + " (wider than L2)";
-  return "Lemma 4 (hence Theorem 1) for every b/a <= " + format_double(p.eps_star) + " and q/a in [" + format_double(p.kappa_lo) + ", " +
-         format_double(p.kappa_hi) + "], by the paper's construction on " + segment +
+  // Rounded as in statement_arc_l1; the exact values are the certificate's parameters.
+  return "Lemma 4 (hence Theorem 1) for every b/a <= " + kit::format_significant_down(p.eps_star, 3) + " and q/a in [" + format_shortest(p.kappa_lo) +
+         ", " + format_shortest(p.kappa_hi) + "] (doubles), by the paper's construction on " + segment +
          ": the inequalities (I1)-(I9) of docs/certified.md are proved in ball arithmetic for all these b/a at once; the argument "
          "from them to Lemma 4 (written there) is a proof on paper.";
 }
 std::string statement_discontinuities(const std::string& segment, std::size_t n) {
-  return "Lemma 2 on " + segment + " at the double values of a, b: T1 has exactly " + std::to_string(n) +
-         " discontinuities there, the z_k with 2z - (a/b) cos z = (2k+1) pi (enclosed), each a first-contact tangency "
+  return "At the double values of a, b, T1 has exactly " + std::to_string(n) + " discontinuities on " + segment +
+         ": the z_k with 2z - (a/b) cos z = (2k+1) pi (enclosed), each a first-contact tangency "
          "T1(z_k) = z_k - (a/b) cos z_k at which T1 is continuous from the right and jumps down as theta increases: the left limit "
-         "T1(z_k - 0) exceeds T1(z_k) by at least the 'jump_at_least' recorded for that z_k; T1 is continuous and decreasing on "
-         "each interval between them.";
+         "T1(z_k - 0) exceeds T1(z_k) by at least the certified lower bound of the jump recorded for that z_k; T1 is continuous and "
+         "decreasing on each interval between them.";
 }
 std::string statement_covering(const ParameterBox& box) {
   return "Lemma 4 (and the covering of Theorem 1) " + params_text(box) +
@@ -114,11 +119,11 @@ std::string statement_superstable() {
          "'theorem2' is true when the conclusion and one of those pairs are proved, false otherwise.";
 }
 std::string statement_window() {
-  return "Superstability window in b at fixed a, q: for every b in [left_in, right_in], T sends [t2(b), t2(b) + eps_b] to t2 "
-         "with eps_b > 0 (proved over b-boxes, eps_b at least min_eps_boxes), so t2 is superstable at each such b; and "
-         "T(t2) != t2 at b = left_out and b = right_out; so the "
-         "maximal interval of b containing the window's middle on which T(t2) = t2 has its edges in [left_out, left_in] and "
-         "[right_in, right_out]. At the middle, Theorem 2 holds with a certified eps.";
+  return "Superstability window in b at fixed a, q: for every b of an inner interval, T sends [t2(b), t2(b) + eps_b] to t2 "
+         "with eps_b > 0 (proved over b-boxes, with a lower bound of eps_b recorded), so t2 is superstable at each such b; and "
+         "T(t2) != t2 at one b below that interval and one above it; so the maximal interval of b containing the window's middle "
+         "on which T(t2) = t2 has each edge between an end of the inner interval and the outer b next to it (all four recorded). "
+         "At the middle, Theorem 2 holds with a certified eps.";
 }
 
 Json to_json(const Vartheta0& v) {

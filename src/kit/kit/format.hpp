@@ -23,6 +23,11 @@ inline constexpr const char* kLoadInPython =
 /// A number with the given count of significant digits (printf's %.*g).
 std::string format_significant(double x, int digits);
 
+/// x > 0 rounded down (never up) to the given count of significant digits, printed as the shortest
+/// decimal of that double ("7.82e-05" for 7.8246700263127835e-05): an upper bound of a range printed
+/// for people stays inside the proved range. Any other x (0, an unproved bound) is printed as it is.
+std::string format_significant_down(double x, int digits);
+
 /// A number in exponent notation ("1.4e-13") as LaTeX (\f$1.4\times10^{-13}\f$); any other text
 /// unchanged. Applied to every macro value, so that the report typesets numbers properly.
 std::string latex_number(const std::string& text);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "kit/format.hpp"
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 
@@ -10,6 +11,18 @@ std::string format_significant(double x, int digits) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.*g", digits, x);
   return buf;
+}
+
+std::string format_significant_down(double x, int digits) {
+  if (!(x > 0) || !std::isfinite(x)) return dfchaos::format_shortest(x);  // 0 (an unproved bound) as it is
+  const int e = static_cast<int>(std::floor(std::log10(x))) - (digits - 1);
+  double m = std::floor(x / std::pow(10.0, e));
+  char buf[64];
+  for (int i = 0; i < 3; ++i, m -= 1) {  // the division may round up by one unit
+    std::snprintf(buf, sizeof buf, "%.0fe%d", m, e);
+    if (std::strtod(buf, nullptr) <= x) break;
+  }
+  return dfchaos::format_shortest(std::strtod(buf, nullptr));
 }
 
 std::string latex_number(const std::string& text) {
