@@ -65,7 +65,7 @@ plot fc using (0.5*(column("q_lo") + column("q_hi"))):(column("b_reached") < BH_
         w p pt 2 ps 0.5 lw 1 lc rgb "black" notitle, \
      fu using (0.5*(column("q_lo") + column("q_hi"))):(column("proved") == 1 && column("b_over_a_max") > BL_min ? BL_min : NaN) \
           :(qclip(column("q_lo"))):(qclip(column("q_hi"))):(BL_min):(min(column("b_over_a_max"), BH_max)) \
-        w boxxyerror fs transparent pattern 5 border lc rgb c_columns lw 1.2 notitle
+        w boxxyerror fs transparent pattern 5 border lc rgb c_columns lw 1.2 fc rgb c_columns notitle
 
 # ---- the key, drawn by hand under the panels
 unset border; unset tics; unset xlabel; unset ylabel; unset grid

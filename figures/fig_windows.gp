@@ -19,8 +19,8 @@ set lmargin at screen 0.12; set rmargin at screen 0.97
 set bmargin at screen 0.61; set tmargin at screen 0.97
 set format x ''; unset xlabel
 set ylabel '$\varepsilon$ at the middle'
-set label 1 '(a)' at graph 0.97, graph 0.1 right front
-set key top left box opaque
+set label 1 '(a)' at graph 0.03, graph 0.9 left front
+set key bottom right box opaque
 plot f using (sel(21) ? column("b_mid") : NaN):"epsilon_mid" w p pt 7 ps 0.4 lc rgb c_stop title 'condition (21)', \
      f using (sel(22) ? column("b_mid") : NaN):"epsilon_mid" w p pt 4 ps 0.45 lw 1.5 lc rgb c_alt title 'condition (22)'
 # ---- (b) relative width

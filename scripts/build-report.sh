@@ -12,6 +12,10 @@
 # latexmk reruns only when one of the report's inputs changed.
 set -euo pipefail
 build=${1:-build}
+case "${DFCHAOS_REPORT_LIMITS:-strict}" in
+  strict|warn) ;;
+  *) echo "build-report: DFCHAOS_REPORT_LIMITS must be strict or warn, got '${DFCHAOS_REPORT_LIMITS}'" >&2; exit 2 ;;
+esac
 root=$(cd "$(dirname "$0")/.." && pwd)
 abs=$(cd "$build" && pwd)
 out="$abs/paper"
@@ -86,12 +90,16 @@ fi
 # (before the appendices) and the whole report stay within the limits below.
 pdftotext -layout "$out/report.pdf" "$out/report.txt"
 python3 - "$abs" "$out" "$root/paper/report.tex" <<'PY'
-import glob, json, re, subprocess, sys
+import glob, json, os, re, subprocess, sys
 build, out = sys.argv[1], sys.argv[2]
 # The report's length: the third reading (issue 50) asked for a main text of at most 24 pages and 34
 # in all, with the bibliography and the written argument behind Lemma 4 for every small b/a
 # (docs/architecture.md says what was cut and what is left).
 MAX_MAIN, MAX_TOTAL = 24, 34
+# A researcher's extension of the report may run longer: DFCHAOS_REPORT_LIMITS=warn (make reproduce
+# REPORT_LIMITS=warn, docs/adding-an-experiment.md) turns the length limits into warnings; CI keeps
+# them strict (the default).
+length = []
 text = open(out + "/report.txt", encoding="utf-8", errors="replace").read()
 flat = re.sub(r"\s+", "", text)
 ids = [c["id"] for f in sorted(glob.glob(build + "/claims/*.json")) for c in json.load(open(f))["claims"]]
@@ -175,15 +183,17 @@ for pattern, what in ASCII:
                 problems.append(f"{what} in {name}: " + context(src, m))
             seen.add(key)
 aux = open(out + "/report.aux").read()
-m = re.search(r"\\newlabel\{app:start\}\{\{[^}]*\}\{(\d+)\}", aux)
+# The body ends on the page of its last line (label body:end, before \\appendix), which the first
+# appendix may share.
+m = re.search(r"\\newlabel\{body:end\}\{\{[^}]*\}\{(\d+)\}", aux)
 if not m:
-    problems.append("no label app:start at the appendices")
-elif int(m.group(1)) - 1 > MAX_MAIN:
-    problems.append(f"the main text runs to page {int(m.group(1)) - 1} (at most {MAX_MAIN}; docs/architecture.md, the report's length)")
+    problems.append("no label body:end at the end of the main text")
+elif int(m.group(1)) > MAX_MAIN:
+    length.append(f"the main text runs to page {int(m.group(1))} (at most {MAX_MAIN}; docs/architecture.md, the report's length)")
 pages = int(re.search(r"^Pages:\s+(\d+)", subprocess.run(["pdfinfo", out + "/report.pdf"], capture_output=True, text=True,
                                                            check=True).stdout, re.M).group(1))
 if pages > MAX_TOTAL:
-    problems.append(f"the report has {pages} pages (at most {MAX_TOTAL}; docs/architecture.md, the report's length)")
+    length.append(f"the report has {pages} pages (at most {MAX_TOTAL}; docs/architecture.md, the report's length)")
 # The title page names the version and the git hash of the build (tables/build-info.tex).
 info = dict(re.findall(r"\\dfcbuildrow\{([^}]*)\}\{([^}]*)\}", open(build + "/tables/build-info.tex").read()))
 title_page = re.sub(r"\s+", "", text.split("\f")[0])
@@ -203,11 +213,16 @@ for label in sorted(set(re.findall(r"\\newlabel\{((?:fig|tab):[^}]*)\}", aux))):
     end = report_tex.find("\n\n", start) if start >= 0 else -1
     if not [r for r in refs if not (start <= r < end)]:
         problems.append(f"{label} is not cited in the text (\\ref{{{label}}} outside its own caption)")
+if os.environ.get("DFCHAOS_REPORT_LIMITS", "strict") == "warn":
+    for p in length:
+        print("build-report: warning: " + p + " (allowed by DFCHAOS_REPORT_LIMITS=warn)", file=sys.stderr)
+else:
+    problems += [p + " (an extension of the report: make reproduce REPORT_LIMITS=warn)" for p in length]
 if problems:
     for p in problems:
         print("build-report: " + p, file=sys.stderr)
     sys.exit(1)
-print(f"report checks: {len(ids)} claims in the PDF, no nan/inf/??, no raw double or ASCII mathematics, main text {int(m.group(1)) - 1} pages")
+print(f"report checks: {len(ids)} claims in the PDF, no nan/inf/??, no raw double or ASCII mathematics, main text {int(m.group(1))} pages")
 PY
 pages=$(pdfinfo "$out/report.pdf" 2>/dev/null | awk '/^Pages:/ {print $2}')
 echo "report: $out/report.pdf (${pages:-?} pages)"

@@ -159,8 +159,10 @@ def scope(claims):
         if isinstance(cols, list) and cols and all(isinstance(k, dict) and "b_over_a_max" in k for k in cols):
             proved = [k for k in cols if k.get("proved")]
             if proved:
+                ranges = sorted(k["parameters"]["q_over_a"] for k in proved)
+                tiled = all(ranges[i][1] == ranges[i + 1][0] for i in range(len(ranges) - 1))  # no gap between them
                 columns.append((len(proved), min(k["b_over_a_max"] for k in proved), max(k["b_over_a_max"] for k in proved),
-                                min(k["parameters"]["q_over_a"][0] for k in proved), max(k["parameters"]["q_over_a"][1] for k in proved)))
+                                ranges[0][0], max(r[1] for r in ranges), tiled))
             continue
         # every b/a up to a bound: the item's statement itself (a step of a proof, "(proof)", proves less)
         if number(p.get("b_over_a_max")) and isinstance(q, list) and len(q) == 2 and "(proof)" not in c["reference"]:
@@ -185,12 +187,13 @@ def scope(claims):
             parts.append(r"every $b/a\le%s$, $q/a\in[%s,%s]$" % (fmt_down(b[1]), fmt(q[0]), fmt(q[1])))
             continue
         share = r"%d\,\%% of " % int(100 * frac) if number(frac) else ""  # rounded down
-        with_columns = (r" by boxes, %d\,\%% with the column bounds (area, linear)" % int(100 * union)) if number(union) else ""
+        with_columns = (r" by boxes, %d\,\%% with the columns (area)" % int(100 * union)) if number(union) else ""
         parts.append(share + r"$b/a\in[%s,%s]$, $q/a\in[%s,%s]$" % (fmt(b[0]), fmt(b[1]), fmt(q[0]), fmt(q[1])) + with_columns)
-    for n, lo, hi, q0, q1 in columns:  # the q/a range printed inward, to three decimals
+    for n, lo, hi, q0, q1, tiled in columns:  # the q/a range printed inward, to three decimals
         import math
-        parts.append(r"every $b/a$ below its column's bound ($%s$ to $%s$), %d columns of $q/a\in[%s,%s]$" %
-                     (fmt_down(lo), fmt_down(hi), n, fmt(math.ceil(q0 * 1000) / 1000), fmt(math.floor(q1 * 1000) / 1000)))
+        parts.append(r"every $b/a$ below its column's bound ($%s$--$%s$), %d columns %s $q/a\in[%s,%s]$" %
+                     (fmt_down(lo), fmt_down(hi), n, "tiling" if tiled else "in", fmt(math.ceil(q0 * 1000) / 1000),
+                      fmt(math.floor(q1 * 1000) / 1000)))
     if points:
         parts.append("%d point%s" % (len(points), "" if len(points) == 1 else "s"))
     for q in sorted(lines):

@@ -100,9 +100,11 @@ class Verdicts(unittest.TestCase):
         c = claim("u", "Lemma 4", kind="certified+argument", params={"q_over_a": [0.72, 0.999], "columns": 3})
         c["evidence"] = {"columns": cols}
         scope = P.scope([c])
-        self.assertIn(r"2 columns of $q/a\in[0.73,0.999]$", scope)  # the proved ones, the range printed inward
-        self.assertIn(r"($0.00075$ to $0.00244$)", scope)  # rounded down: bounds stay true
+        self.assertIn(r"2 columns tiling $q/a\in[0.73,0.999]$", scope)  # the proved ones, the range printed inward
+        self.assertIn(r"($0.00075$--$0.00244$)", scope)  # rounded down: bounds stay true
         self.assertNotIn("grids", scope)
+        cols[1]["parameters"]["q_over_a"] = [0.75, 0.999]  # a gap between the proved columns: not a tiling
+        self.assertIn(r"2 columns in $q/a\in[0.73,0.999]$", P.scope([c]))
 
     def test_a_written_argument_is_not_counted_as_certified(self):
         cs = [claim("u", "Lemma 4, Theorem 1", kind="certified+argument", params={"b_over_a_max": 7.8e-5, "q_over_a": [0.73, 0.999]}),
