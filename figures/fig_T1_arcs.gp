@@ -50,7 +50,8 @@ set xrange [X2_min:X2_max]
 set xtics ('$\frac{101\pi}{100}$' L2lo, '$\frac{51\pi}{50}$' L2hi)
 set object 2 rect from L2lo, graph 0 to L2hi, graph 1 fc rgb c_alt fs transparent solid 0.2 noborder back
 set object 4 rect from graph 0, first L1lo to graph 1, first t3b fc rgb c_stop fs transparent solid 0.5 noborder back
-set label 3 '\footnotesize $T_1(z_i)\in L_1$' at (L2lo + L2hi)/2, first 1.86*pi center front
+# (the circles T1(z_i) in L1 are named in the caption: a label here would sit on a branch)
+unset label 3
 # below the axis, between the tick labels of its ends: inside the panel it would sit on a branch
 set label 2 '\footnotesize $L_2$' at (L2lo + L2hi)/2, graph -0.07 center front
 plot f using (abs(column("b_over_a") - b2) < 1e-15*b2 ? column("theta") : NaN):"T1_phase" w p pt 7 ps 0.08 lc rgb c_free notitle, \

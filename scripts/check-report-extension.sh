@@ -35,11 +35,15 @@ set xlabel '$\theta$'; set ylabel '$T$'
 plot data."/sec6_periodic_points-graph.tsv" using "theta":"T" w p pt 7 ps 0.1 notitle
 GP
 (cd "$tmp/build/figures" && gnuplot -e "data='$build/data'; figdir='$tmp/src/figures'" "$tmp/src/figures/fig_throwaway.gp")
-section='\\section{A throwaway extension}\\label{app:throwaway}\nFig.~\\ref{fig:fig_throwaway} shows $T$ again.\n\\dfcfigure{fig_throwaway}{$T$ once more, for the check of an extension.}{sec6_periodic_points}\n'
-for _ in 1 2 3; do section+='\\clearpage\\null\n'; done
-python3 - "$tmp/src/paper/report.tex" "$section" <<'PY'
+cat > "$tmp/section.tex" <<'TEX'
+\section{A throwaway extension}\label{app:throwaway}
+Fig.~\ref{fig:fig_throwaway} shows $T$ again.
+\dfcfigure{fig_throwaway}{$T$ once more, for the check of an extension.}{sec6_periodic_points}
+\clearpage\null\clearpage\null\clearpage\null
+TEX
+python3 - "$tmp/src/paper/report.tex" "$tmp/section.tex" <<'PY'
 import sys
-path, section = sys.argv[1], sys.argv[2].replace("\\n", "\n")
+path, section = sys.argv[1], open(sys.argv[2]).read()
 text = open(path).read()
 anchor = "\\section{Every claim, by experiment}"
 assert anchor in text, "the report has no appendix of claims to put the extension before"
