@@ -157,7 +157,14 @@ StopArcProof certify_stop_arc(const ParameterBalls& m, const StartSet& set, cons
     r.verdict = Outcome::fail("stop arc: G2 < 0", "no certified negative velocity after the impact near t = " + rho.mid_str(17));
     return r;
   }
-  r.k = static_cast<long long>(std::floor((r.tau.mid() - m.t3.mid()) / (2 * M_PI)));
+  // The turn of tau after t3; tau may have run far out while d grew by 2^16 per try: beyond 2^53 turns
+  // no integer turn is meaningful (and the cast to long long would be undefined).
+  const double turns = std::floor((r.tau.mid() - m.t3.mid()) / (2 * M_PI));
+  if (!(std::fabs(turns) < 0x1p53)) {
+    r.verdict = Outcome::fail("stop arc: G2 < 0", "the first certified negative velocity lies beyond 2^53 turns of t3");
+    return r;
+  }
+  r.k = static_cast<long long>(turns);
   const Ball shift = Ball(static_cast<double>(r.k)) * m.two_pi;
   const Ball A = m.t3 + shift, E = m.t2 + shift + m.two_pi;
   if (!lt(r.tau, E)) {
