@@ -27,19 +27,30 @@ using EB = EventualBehaviour;
 constexpr double kInstantStopShare = 1e-8;  // at q = 2b: largest share of time stopped that counts as instantaneous stops
 
 struct Case {
-  std::string name;         ///< part name of the time-history table
+  std::string name;         ///< identifier: column case of the tables, part name of the time-history table
+  std::string label;        ///< the case in words (LaTeX), for the report's table and figure
   double b, q;              ///< with a = 1
   std::string remark;       ///< what the Remark predicts (LaTeX: the relations in math mode)
   std::vector<EB> allowed;  ///< the behaviours that agree with it
 };
 
 const std::vector<Case> cases = {
-    {"stop", 0.6, 2.5, "$q\\ge a+2b$: eventually stopped for ever", {EB::StaysStopped}},
-    {"progression", 0.6, 1.0, "$q\\le 2b$: an everlasting progression starts", {EB::EternalProgression}},
-    {"between-high", 0.6, 1.9, "$2b<q<a+2b$: everlasting progression or periodic stick-slip", {EB::EternalProgression, EB::PeriodicStickSlip}},
-    {"between-low", 0.6, 1.3, "$2b<q<a+2b$: everlasting progression or periodic stick-slip", {EB::EternalProgression, EB::PeriodicStickSlip}},
-    {"b-large-q-small", 1.5, 1.0, "$q\\le 2b$ ($b\\ge a/2$): an everlasting progression starts", {EB::EternalProgression}},
-    {"reference", 0.01, 0.85, "$b<a/2$ (the paper's case): free flights go on (contrast)", {EB::FreeFlights}},
+    {"stop", "high $q$", 0.6, 2.5, "$q\\ge a+2b$: eventually stopped for ever", {EB::StaysStopped}},
+    {"progression", "low $q$", 0.6, 1.0, "$q\\le 2b$: an everlasting progression starts", {EB::EternalProgression}},
+    {"between-high",
+     "middle $q$, upper",
+     0.6,
+     1.9,
+     "$2b<q<a+2b$: everlasting progression or periodic stick-slip",
+     {EB::EternalProgression, EB::PeriodicStickSlip}},
+    {"between-low",
+     "middle $q$, lower",
+     0.6,
+     1.3,
+     "$2b<q<a+2b$: everlasting progression or periodic stick-slip",
+     {EB::EternalProgression, EB::PeriodicStickSlip}},
+    {"b-large-q-small", "low $q$, large $b$", 1.5, 1.0, "$q\\le 2b$ ($b\\ge a/2$): an everlasting progression starts", {EB::EternalProgression}},
+    {"reference", "the paper's case", 0.01, 0.85, "$b<a/2$ (the paper's case): free flights go on (contrast)", {EB::FreeFlights}},
 };
 const std::vector<std::pair<double, double>> starts = {{0.0, 0.0}, {0.0, 2.0}, {1.5, 4.0}, {-1.0, 5.5}};  // (v0, t0)
 
@@ -68,8 +79,8 @@ const Experiment experiment{
                 latex("sec9_regimes", "per case: what the Remark predicts, what is observed, agreement")},
     .body = [](Run& run) {
       const double periods = run.real("periods"), window = periods / 4;
-      Table t({"case", "b_over_a", "q_over_a", "v0", "t0", "behaviour", "fraction_free", "fraction_progression", "fraction_stop", "events_in_window",
-               "last_free_time", "stick_stop_from_t1_min", "stick_stop_from_t1_max"});
+      Table t({"case", "label", "b_over_a", "q_over_a", "v0", "t0", "behaviour", "fraction_free", "fraction_progression", "fraction_stop",
+               "events_in_window", "last_free_time", "stick_stop_from_t1_min", "stick_stop_from_t1_max"});
       // Paragraph columns for the two texts, so that the table fits the text width.
       LatexTable tex("lrr>{\\raggedright\\arraybackslash}p{5.6cm}>{\\raggedright\\arraybackslash}p{3.2cm}l",
                      {"case", "$b/a$", "$q/a$", "the Remark predicts", "observed (all starts)", "agrees"});
@@ -84,8 +95,8 @@ const Experiment experiment{
           const auto [v0, t0] = starts[k];
           const EventualRegime r = eventual_regime(p, v0, t0, periods, window);
           const std::string name = eventual_behaviour_name(r.behaviour);
-          t.row({c.name, c.b, c.q, v0, t0, name, r.fraction_free, r.fraction_progression, r.fraction_stop, static_cast<long long>(r.events_in_window),
-                 r.last_free_time, r.stick_stop_phase_min, r.stick_stop_phase_max});
+          t.row({c.name, c.label, c.b, c.q, v0, t0, name, r.fraction_free, r.fraction_progression, r.fraction_stop,
+                 static_cast<long long>(r.events_in_window), r.last_free_time, r.stick_stop_phase_min, r.stick_stop_phase_max});
           if (std::find(c.allowed.begin(), c.allowed.end(), r.behaviour) == c.allowed.end()) ok = false;
           if (k == 0)
             first = r.behaviour;
@@ -96,7 +107,7 @@ const Experiment experiment{
         if (!ok) ++disagreements;
         if (same) ++independent_of_start;
         observed.emplace_back(c.name, seen);
-        tex.row({c.name, format_significant(c.b, 3), format_significant(c.q, 3), c.remark, seen, ok ? "yes" : "no"});
+        tex.row({c.label, format_significant(c.b, 3), format_significant(c.q, 3), c.remark, seen, ok ? "yes" : "no"});
         run.out.table("history-" + c.name, history(p, periods, run.fast() ? 200 : 2000),
                       "time history, case " + c.name + " (a=1, b=" + format_double(c.b) + ", q=" + format_double(c.q) + ")");
       }

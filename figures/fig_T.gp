@@ -17,7 +17,9 @@ set xlabel '$\theta$' offset 0,0
 set ylabel '$T(\theta)$' offset 1.5,0
 set grid noxtics noytics
 sc_col(s) = (s eq "A" ? c_free : (s eq "B" ? c_stop : (s eq "C" ? c_alt : (s eq "D" ? c_prog : c_grey))))
-# and a marker per scenario, so that the key reads in greyscale too (circle for theta2)
+# and a marker per scenario, so that the key reads in greyscale too (circle for theta2): the points
+# are dots in the scenario's colour, and points spread along each scenario's pieces carry its marker
+# (function marked below), large enough to tell the shapes apart where the dots overlap
 sc_pt(s) = (s eq "A" ? 5 : (s eq "B" ? 9 : (s eq "C" ? 13 : 11)))
 summary = data."/lemma3_return_map.tsv"
 # The panels: of the graphs the experiment wrote (in the order of their names), the first at which
@@ -65,10 +67,16 @@ do for [k=1:2] {
         to graph 1, first (y == 1 ? t1 : (y == 2 ? t2 : (y == 3 ? t3 : t0+2*pi))) nohead lw 0.6 lc rgb "#bbbbbb" back }
   set key at graph 0.5, graph 1.0 center bottom horizontal reverse Left samplen 0.8 spacing 1 width -1.5 maxrows 1 noopaque nobox
   unwrap(p) = (p < t0 + 1e-12 ? p + 2*pi : p)
+  # the marked points: the first of the scenario at least a gap after the last marked one, a gap of
+  # a twelfth of [t2, t3) for A, a fortieth for the short pieces of B, C and D
+  marked(th, s) = (th >= next_mark ? (next_mark = th + (t3 - t2) / (s eq "A" ? 12 : 40), 1) : 0)
   plot file using "theta":(strcol("scenario") ne "A" && abs(column("theta2_phase") - column("T")) > 1e-12 ? unwrap(column("theta2_phase")) : NaN) \
             w p pt 7 ps 0.15 lc rgb "#909090" notitle, \
        NaN w p pt 6 ps 1.0 lw 1.5 lc rgb "#909090" title '$\theta_2$', \
-       for [s in present] file using "theta":(strcol("scenario") eq s ? column("T") : NaN) w p pt sc_pt(s) ps 0.2 lc rgb sc_col(s) notitle, \
+       for [s in present] file using "theta":(strcol("scenario") eq s ? column("T") : NaN) w p pt 7 ps 0.15 lc rgb sc_col(s) notitle, \
+       for [s in present] file using "theta":(column(0) == 0 ? next_mark = -1e9 : 0, \
+                                              strcol("scenario") eq s && marked(column("theta"), s) ? column("T") : NaN) \
+            w p pt sc_pt(s) ps (s eq "A" ? 0.6 : 0.8) lc rgb sc_col(s) notitle, \
        for [s in present] NaN w p pt sc_pt(s) ps 1.0 lc rgb sc_col(s) title s, \
        x w l dt 2 lw 1 lc rgb "black" title '$T=\theta$'
   unset ylabel

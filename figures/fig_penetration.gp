@@ -20,6 +20,9 @@ stats g using (log10(column("b_over_a"))) name "B" nooutput
 stats g using (column("rate_mean")/column("b_over_a")) name "R" nooutput
 nq = int(sqrt(Q_records) + 0.5)
 dq = (Q_max - Q_min) / (nq - 1); db = (B_max - B_min) / (nq - 1)
+# The bars are drawn without points and the points on top: gnuplot's cairolatex terminal blanks a
+# disc around a point of an error-bar plot, and with points this close that disc covers half of the
+# neighbouring point.
 set multiplot
 set bmargin at screen 0.16; set tmargin at screen 0.91
 set logscale x
@@ -37,7 +40,8 @@ unset ylabel
 set label 90 'rate' at screen 0.025, graph 0.5 rotate center
 set logscale y
 set format y '$10^{%T}$'
-plot f using "b_over_a":"rate_mean":"rate_min":"rate_max" w yerrorbars pt 7 ps 0.35 lw 0.8 lc rgb c_free notitle
+plot f using "b_over_a":"rate_mean":"rate_min":"rate_max" w yerrorbars pt -1 lw 0.8 lc rgb c_free notitle, \
+     f using "b_over_a":"rate_mean" w p pt 7 ps 0.35 lc rgb c_free notitle
 
 # ---- (b)
 set lmargin at screen 0.41; set rmargin at screen 0.615
@@ -47,7 +51,8 @@ unset logscale y
 set format y '$%.1f$'
 set yrange [0:*]
 plot f using "b_over_a":(column("rate_mean")/column("b_over_a")):(column("rate_min")/column("b_over_a")):(column("rate_max")/column("b_over_a")) \
-       w yerrorbars pt 7 ps 0.35 lw 0.8 lc rgb c_free notitle, \
+       w yerrorbars pt -1 lw 0.8 lc rgb c_free notitle, \
+     f using "b_over_a":(column("rate_mean")/column("b_over_a")) w p pt 7 ps 0.35 lc rgb c_free notitle, \
      f using "b_over_a":((column("rate_max") - column("rate_min"))/column("rate_mean") > spread_tol ? column("rate_mean")/column("b_over_a") : NaN) \
        w p pt 6 ps 1.0 lw 1.2 lc rgb c_prog notitle
 

@@ -82,7 +82,7 @@ do for [k=1:6] {
 
   # --- the inset, in the part of the panel the motion leaves empty
   if (inset) {
-    ix = (s eq "D" ? 0.04 : 0.28); iy = (s eq "C" ? 0.3 : (s eq "D" ? 0.45 : 0.42))
+    ix = (s eq "D" ? 0.04 : 0.28); iy = (s eq "C" ? 0.17 : (s eq "D" ? 0.45 : 0.42))
     set lmargin at screen px0(k) + (ix + 0.04)*pw; set rmargin at screen px0(k) + (ix + 0.44)*pw
     set bmargin at screen py0(k) + iy*ph; set tmargin at screen py0(k) + (iy + 0.38)*ph
     unset xlabel; unset ylabel

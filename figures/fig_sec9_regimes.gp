@@ -1,13 +1,15 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # Figure: the Remark of Section 9 by the full simulator (sec9_regimes): one time history per case,
 # position of the mass x (drawn by regime, style.gp: free thin, progression thick, stop dotted) and of the
-# delimiter y (dashed black). Each panel names its case and its parameters (read from the table
-# sec9_regimes.tsv); one key for the whole figure, above the panels.
+# delimiter y (dashed black). Each panel names its case in words and its parameters (read from the
+# table sec9_regimes.tsv, columns case, label, b_over_a, q_over_a); one key for the whole figure, above the panels.
 load figdir."/style.gp"
 set terminal cairolatex pdf input size 15cm,11cm
 set output "fig_sec9_regimes.tex"
 tab = data."/sec9_regimes.tsv"
 cases = "stop progression between-high between-low b-large-q-small reference"
+# the case's label, from the first row of the table with its identifier
+label(c) = system("awk -F'\t' '$1 == \"".c."\" { print $2; exit }' '".tab."'")
 # the parameters of each case (stats obeys ranges: read them before any range is set)
 do for [k=1:words(cases)] {
   c = word(cases, k)
@@ -23,10 +25,11 @@ px0(k) = ((k-1)%2 == 0 ? 0.095 : 0.605); ph = 0.18
 py0(k) = 0.68 - ((k-1)/2)*0.3
 do for [k=1:words(cases)] {
   c = word(cases, k)
+  if (strlen(label(c)) == 0) { print "fig_sec9_regimes: no label of case ".c." in ".tab; exit status 1 }
   f = data."/sec9_regimes-history-".c.".tsv"
   set lmargin at screen px0(k); set rmargin at screen px0(k) + 0.385
   set bmargin at screen py0(k); set tmargin at screen py0(k) + ph
-  set title sprintf('\small %s: $b/a=%g$, $q/a=%g$', c, value("B".k."_mean"), value("Q".k."_mean")) offset 0,-0.5
+  set title sprintf('\small %s: $b/a=%g$, $q/a=%g$', label(c), value("B".k."_mean"), value("Q".k."_mean")) offset 0,-0.5
   set xrange [0:value("T".k."_max")]
   # the time axis is labelled on the bottom row only
   if (k > 4) { set xlabel '$t$' offset 0,0.6 } else { unset xlabel }

@@ -148,6 +148,11 @@ _TYPESET = [  # (pattern, replacement as for re.sub: group references \1, LaTeX 
     (r"\$<\$\$<\$", r"$\\ll$"), (r"\$>\$\$>\$", r"$\\gg$"),
     (r"\$>\$=", r"$\\ge$"), (r"\$<\$=", r"$\\le$"), (r"!=", r"$\\ne$"), (r"-\$>\$", r"$\\to$"),
     (_W + r"(\d*)pi/(\d+)" + _E, r"$\1\\pi/\2$"), (_W + r"(\d*)pi" + _E, r"$\1\\pi$"),
+    # derivatives and a one-sided limit, whole: |T1'|, T1', T', u', T1(z-0); minus infinity
+    (r"\$\|\$T1'\$\|\$", r"$|T_1'|$"),
+    (_W + r"([Tu])(1?)'(?!\w)", lambda m: "$" + m.group(1) + ("_1" if m.group(2) else "") + "'$"),
+    (_W + r"T1\(z-0\)", r"$T_1(z-0)$"),
+    (_W + r"minus infinity" + _E, r"$-\\infty$"),
     (_W + r"vartheta0" + _E, r"$\\vartheta_0$"), (_W + r"theta(\d)" + _E, r"$\\theta_\1$"), (_W + r"theta" + _E, r"$\\theta$"),
     (_W + r"eps\\_b" + _E, r"$\\varepsilon_b$"), (_W + r"(?:epsilon|eps)" + _E, r"$\\varepsilon$"),
     (_W + r"delta" + _E, r"$\\delta$"), (_W + r"lambda" + _E, r"$\\lambda$"),

@@ -208,6 +208,9 @@ class Typeset(unittest.TestCase):
                          r"T($I_j$) contains $I_k$, ln $\rho(A)$, $z_1$ $<$ ... $<$ $z_n$")
         self.assertEqual(M.typeset(r"the z\_k with 2z - (a/b) cos z = (2k+1) pi, T1(z\_k) = z\_k - (a/b) cos z\_k"),
                          r"the $z_k$ with $2z-(a/b)\cos z=(2k+1)\pi$, $T_1$($z_k$) = $z_k-(a/b)\cos z_k$")
+        # derivatives, the left limit of a jump and minus infinity; a possessive stays
+        self.assertEqual(M.typeset(r"$|$T1'$|$ $>$= 1000, T' = 0, u' $<$ 0, T1(z-0) - T1(z), lambda is minus infinity, T's fiber"),
+                         r"$|T_1'|$ $\ge$ 1000, $T'$ = 0, $u'$ $<$ 0, $T_1(z-0)$ $-$ $T_1$(z), $\lambda$ is $-\infty$, T's fiber")
         # an opening quote after a space or a bracket is one; apostrophes stay
         self.assertEqual(M.typeset("the paper's 'b $<$$<$ q' (and 'x')"), r"the paper's `b $\ll$ q' (and `x')")
 
