@@ -15,6 +15,7 @@
 #include "certify/certify.hpp"
 #include "convert.hpp"
 #include "dfchaos/errors.hpp"
+#include "dfchaos/parameters.hpp"
 #include "kit/budget.hpp"
 #include "kit/output.hpp"
 
@@ -273,6 +274,19 @@ The budget is the tool's (--max-seconds, --max-memory): at most max_seconds seco
 abandoned and dfchaos.GaveUp is raised ("gave up: the time budget of 60 s ran out (max_seconds raises
 it)"); Ctrl-C raises KeyboardInterrupt within a fraction of a second. Either way no certificate is
 written. The proof runs on a worker thread of the module, without the GIL.)doc");
+  // The same at the point of a dfchaos.Parameters, as the module's other functions take it.
+  m.def(
+      "certify",
+      [](const std::string& what, const Parameters& p, int period, const std::string& segment, std::optional<std::pair<double, double>> window,
+         std::optional<std::string> certificate, double max_seconds, double max_memory) {
+        return certify_py(what, p.a(), NumberOrBox{p.b()}, NumberOrBox{p.q()}, period, segment, window, std::move(certificate), max_seconds,
+                          max_memory);
+      },
+      py::arg("what"), py::arg("parameters"), py::arg("period") = 0, py::arg("segment") = "L0", py::arg("window") = py::none(),
+      py::arg("certificate") = py::none(), py::arg("max_seconds") = kit::kDefaultBudgetSeconds, py::arg("max_memory") = kit::kDefaultBudgetGiB,
+      R"doc(certify(what, parameters, period=0, segment='L0', window=None, certificate=None, max_seconds=60, max_memory=2) -> Certified
+
+The same as certify(what, a, b, q, ...) at the point (a, b, q) of a dfchaos.Parameters.)doc");
 }
 
 }  // namespace dfchaos::python

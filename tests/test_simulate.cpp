@@ -295,13 +295,17 @@ std::string samples_path(const char* name) {
   return path;
 }
 
+/// The provenance lines after the column line (cli.hpp, provenance_text): the title, the build, then
+/// a, b, q, x0, y0, v0, t0, t-end, max-events, and sample when samples are taken.
+constexpr std::size_t kProvenanceLines = 2 + 9;
+
 /// A short run under the same limit: the reference for the peak memory (and a check of the limit).
 ChildRun reference_run() {
   const std::string samples = samples_path("reference");
   const ChildRun r = run_simulate(with(kModel, {"--t-end", "10", "--sample", "1", "--samples-out", samples}));
   EXPECT_EQ(r.status, 0) << r.err;
-  EXPECT_EQ(r.lines, 1 + 1 + 3 + 1) << "column line, initial regime, 3 events, final state";
-  EXPECT_EQ(file_lines(samples).size(), 2U + 11U) << "column line, comment, 11 samples";
+  EXPECT_EQ(r.lines, 1 + (kProvenanceLines + 1) + 1 + 3 + 1) << "column line, provenance, initial regime, 3 events, final state";
+  EXPECT_EQ(file_lines(samples).size(), 1 + (kProvenanceLines + 1) + 11U) << "column line, provenance, 11 samples";
   return r;
 }
 
@@ -313,7 +317,7 @@ TEST(SimulateStreaming, Regression_28_7_EventsStreamInFlatMemory) {
   EXPECT_EQ(r.status, 1);
   EXPECT_EQ(r.err, "dfchaos: gave up: simulate: more than 1000000 events before t-end=1e12; raise the event limit or shorten the time span\n");
   EXPECT_EQ(r.first, "t\tphase\tbefore\tafter\tkind\tx\ty\tv_before\tv_after");
-  EXPECT_EQ(r.lines, 2 + 1'000'000) << "column line, initial regime, the first 1e6 events (no final state)";
+  EXPECT_EQ(r.lines, 1 + kProvenanceLines + 1 + 1'000'000) << "column line, provenance, initial regime, the first 1e6 events (no final state)";
   EXPECT_EQ(r.sample_header, -1);
   EXPECT_EQ(r.blank_lines, 0);
   EXPECT_LT(r.maxrss_kib - ref.maxrss_kib, kFlatGrowthKiB)
@@ -335,7 +339,7 @@ TEST(SimulateStreaming, Regression_28_7_SamplesSpoolInFlatMemory) {
   EXPECT_EQ(r.blank_lines, 0);
   EXPECT_EQ(r.last.substr(0, 20), "# final state: t = 1");
   const std::vector<std::string> rows = file_lines(samples);
-  ASSERT_EQ(rows.size(), 2U + 1'000'001U) << "column line, comment, samples at t = 0, 1, ..., 1e6";
+  ASSERT_EQ(rows.size(), 1 + (kProvenanceLines + 1) + 1'000'001U) << "column line, provenance, samples at t = 0, 1, ..., 1e6";
   EXPECT_EQ(rows[0], "t\tx\ty\tv\tregime");
   EXPECT_EQ(rows.back().substr(0, 8), "1000000\t");
   std::remove(samples.c_str());

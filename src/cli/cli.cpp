@@ -7,12 +7,15 @@
 
 #include "dfchaos/errors.hpp"
 #include "kit/options.hpp"
+#include "kit/provenance.hpp"
 
 namespace dfchaos::cli {
 
 void ModelOptions::add_to(CLI::App* app) {
   const std::string range = format_shortest(kMinParameter) + " <= X <= " + format_shortest(kMaxParameter);
-  app->add_option("-a,--a", a, "forcing amplitude a, " + range)->required()->type_name("FLOAT");
+  // a defaults to 1 (the paper's scaling: b and q are then b/a and q/a), as in sweep, certify and
+  // the Python module's certify: one rule for every command.
+  app->add_option("-a,--a", a, "forcing amplitude a, " + range + " [default 1]")->type_name("FLOAT");
   app->add_option("-b,--b", b, "half the constant force b, " + range + "; the return map needs b < a/2 and b/a >= " + format_shortest(kMinMapRatio))
       ->required()
       ->type_name("FLOAT");
@@ -20,6 +23,10 @@ void ModelOptions::add_to(CLI::App* app) {
 }
 
 Parameters ModelOptions::model() const { return Parameters(number("a", a), number("b", b), number("q", q)); }
+
+std::vector<Setting> model_settings(const Parameters& p) {
+  return {{"a", format_shortest(p.a())}, {"b", format_shortest(p.b())}, {"q", format_shortest(p.q())}};
+}
 
 double number(const std::string& name, const std::string& text) { return kit::parse_number(name, text, false); }
 
@@ -45,6 +52,17 @@ void Writer::row(const std::vector<std::string>& cells) {
 void Writer::line(const std::string& text) {
   buffer_ += text;
   buffer_ += '\n';
+  if (buffer_.size() >= (1 << 16)) flush();
+}
+
+std::string provenance_text(const std::string& title, const std::vector<Setting>& settings) {
+  std::string text = "# dfchaos " + title + "\n# dfchaos " + kit::version() + " (" + kit::git_hash() + "), " + kit::compiler_id() + "\n";
+  for (const auto& [name, value] : settings) text += "# " + name + " = " + value + "\n";
+  return text;
+}
+
+void Writer::provenance(const std::string& title, const std::vector<Setting>& settings) {
+  buffer_ += provenance_text(title, settings);
   if (buffer_.size() >= (1 << 16)) flush();
 }
 

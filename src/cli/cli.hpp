@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "dfchaos/parameters.hpp"
@@ -26,12 +27,21 @@ struct Command {
 
 /// The model options --a --b --q, as typed (parsed by model()).
 struct ModelOptions {
-  std::string a, b, q;
-  /// Registers --a, --b, --q (required) on a subcommand.
+  std::string a = "1", b, q;
+  /// Registers --a (default 1), --b and --q (required) on a subcommand.
   void add_to(CLI::App* app);
   /// The parameters. @throws InvalidParameter naming a, b or q.
   Parameters model() const;
 };
+
+/// One setting of a run, for the provenance header: "# name = value".
+using Setting = std::pair<std::string, std::string>;
+/// The settings a, b, q of parameters (shortest round-trip form), first in every header.
+std::vector<Setting> model_settings(const Parameters& p);
+/// The provenance header that follows the column line of every table of the tool (as the sweep's),
+/// each line ending in a newline: "# dfchaos TITLE", "# dfchaos VERSION (GIT), COMPILER", then
+/// "# name = value" per setting.
+std::string provenance_text(const std::string& title, const std::vector<Setting>& settings);
 
 /// A number option: the whole text must be a finite number. @throws InvalidParameter naming it.
 double number(const std::string& name, const std::string& text);
@@ -46,7 +56,9 @@ class Writer {
   ~Writer();
   void row(const std::vector<std::string>& cells);  ///< one tab-separated line
   void line(const std::string& text);               ///< one line as given
-  void flush();                                     ///< @throws WriteFailed
+  /// provenance_text(title, settings), as lines.
+  void provenance(const std::string& title, const std::vector<Setting>& settings);
+  void flush();  ///< @throws WriteFailed
 
  private:
   std::string buffer_;

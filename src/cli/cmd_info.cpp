@@ -25,15 +25,14 @@ Command add_info(CLI::App& app) {
     ph->excludes(o);
   }
   cmd->footer(
-      "Output: a table 'quantity value'. t0 < t1 are the zeros of F - q, t2 < t3 the zeros of F = a sin t + 2b on [0, 2 pi) "
+      "Output: a table 'quantity value' (after the column line, # lines: the version and the settings). t0 < t1 are the zeros of F - q, t2 < t3 the "
+      "zeros of F = a sin t + 2b on [0, 2 pi) "
       "(Section 2); vartheta0 solves Eq. (1); the assumptions are Eq. (2) (a > 0, 0 < b < a/2, a sin(vartheta0) < q < a) "
       "and Eq. (23) (a > 0, b > 0, 0 < q < a).");
   return {cmd, [m, physical] {
-            if (physical->empty() && (m->a.empty() || m->b.empty() || m->q.empty()))
-              throw InvalidParameter(m->a.empty()   ? "a"
-                                     : m->b.empty() ? "b"
-                                                    : "q",
-                                     "give --a, --b and --q, or --physical MASS OMEGA AMPLITUDE STATIC FRICTION");
+            if (physical->empty() && (m->b.empty() || m->q.empty()))
+              throw InvalidParameter(m->b.empty() ? "b" : "q",
+                                     "give --b and --q (and --a, 1 by default), or --physical MASS OMEGA AMPLITUDE STATIC FRICTION");
             const Parameters p = physical->empty() ? m->model()
                                                    : from_physical(number("mass", (*physical)[0]), number("omega", (*physical)[1]),
                                                                    number("amplitude", (*physical)[2]), number("static_force", (*physical)[3]),
@@ -41,6 +40,12 @@ Command add_info(CLI::App& app) {
             Writer w;
             auto opt = [](const std::optional<double>& v) { return v ? format_shortest(*v) : std::string("undefined"); };
             w.row({"quantity", "value"});
+            std::vector<Setting> settings = model_settings(p);
+            if (!physical->empty())
+              settings.emplace_back("physical", (*physical)[0] + " " + (*physical)[1] + " " + (*physical)[2] + " " + (*physical)[3] + " " +
+                                                    (*physical)[4] +
+                                                    "  (mass, omega, amplitude, static force, friction; a, b, q from them, docs/units.md)");
+            w.provenance("info: the phases and assumptions of (a, b, q)", settings);
             w.row({"a", format_shortest(p.a())});
             w.row({"b", format_shortest(p.b())});
             w.row({"q", format_shortest(p.q())});

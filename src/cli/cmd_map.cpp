@@ -32,7 +32,7 @@ Command add_map(CLI::App& app) {
   t->excludes(g)->excludes(a);
   g->excludes(a);
   cmd->footer(
-      "Output columns (tab-separated, one row per phase, %.17g):\n"
+      "Output columns (tab-separated, one row per phase, %.17g; after the column line, # lines: the version and the settings):\n"
       "  theta        the start phase (at rest at the delimiter, Eq. 10)\n"
       "  T1           the next hit T1(theta) as an instant (Eq. 11; may exceed 2 pi)\n"
       "  T            the return map T(theta) in [t2, t3) (Lemma 3)\n"
@@ -73,8 +73,16 @@ Command add_map(CLI::App& app) {
             }
             if (th.empty()) throw InvalidParameter("theta", "give --theta X [X ...], --grid LO:HI:N or --arc N");
             for (double x : th) p.require_in_map_domain(x, "theta");  // every input checked before any output
+            std::vector<Setting> settings = model_settings(p);
+            if (!o->grid.empty())
+              settings.emplace_back("grid", sweep::Range::parse("grid", o->grid[0], kMaxMapGrid).canonical());
+            else if (!o->arc.empty())
+              settings.emplace_back("arc", std::to_string(th.size()) + "  (t2 + (t3 - t2) i / N, i = 0..N-1)");
+            else
+              settings.emplace_back("theta", std::to_string(th.size()) + " phases given");
             Writer w;
             w.row({"theta", "T1", "T", "scenario", "elapsed", "penetration"});
+            w.provenance("map: T1 and T at given phases of [t2, t3)", settings);
             for (double x : th) {
               const auto s = return_map_step(p, x);
               w.row({format_double(x), format_double(s.hit.theta1), format_double(s.T), scenario_name(s.scenario), format_double(s.elapsed),

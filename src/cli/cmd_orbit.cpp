@@ -22,7 +22,8 @@ Command add_orbit(CLI::App& app) {
   cmd->add_option("--theta0", o->theta0, "the initial phase, in [t2, t3)")->required()->type_name("FLOAT");
   cmd->add_option("--steps", o->steps, "number of steps, 1 <= steps <= 1e8 (written as an integer or like 1e8)")->required()->type_name("N");
   cmd->footer(
-      "Output columns (tab-separated, one row per step, streamed as computed, %.17g):\n"
+      "Output columns (tab-separated, one row per step, streamed as computed, %.17g; after the column line, # lines: the version and\n"
+      "the settings):\n"
       "  n            the step number (0 is the initial phase)\n"
       "  theta        the iterate theta_n = T^n(theta0)\n"
       "  scenario     the scenario of the step from theta_n (see 'dfchaos map --help'; G is a grazing touch)\n"
@@ -49,6 +50,10 @@ Command add_orbit(CLI::App& app) {
             const auto start = std::chrono::steady_clock::now();
             Writer w;
             w.row({"n", "theta", "scenario", "elapsed", "penetration", "time", "y"});
+            std::vector<Setting> settings = model_settings(p);
+            settings.emplace_back("theta0", format_shortest(theta0));
+            settings.emplace_back("steps", std::to_string(steps));
+            w.provenance("orbit: iterates of T from theta0", settings);
             const Orbit orbit(p, theta0, steps);
             for (auto it = orbit.begin(); it != orbit.end(); ++it) {
               const long long n = it.n();

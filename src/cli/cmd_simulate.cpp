@@ -40,12 +40,15 @@ class SampleFile {
 /// library words it, as in the Python module).
 class Printer final : public SimulationSink {
  public:
-  /// `samples_out` empty: no samples; else their file and its comment lines.
-  Printer(Writer& w, std::string samples_out, std::string comments) : w_(w), samples_out_(std::move(samples_out)), comments_(std::move(comments)) {}
+  /// `header`: the provenance lines after the column line; `samples_out` empty: no samples; else
+  /// their file and its comment lines.
+  Printer(Writer& w, std::string header, std::string samples_out, std::string comments)
+      : w_(w), header_(std::move(header)), samples_out_(std::move(samples_out)), comments_(std::move(comments)) {}
 
   void start(Regime initial_regime) override {
     if (!samples_out_.empty()) samples_.emplace(samples_out_, comments_);
     w_.row({"t", "phase", "before", "after", "kind", "x", "y", "v_before", "v_after"});
+    w_.line(header_.substr(0, header_.size() - 1));  // without its last newline
     w_.line(std::string("# initial regime: ") + regime_code(initial_regime));
   }
   void event(const SimulationEvent& e) override {
@@ -66,7 +69,7 @@ class Printer final : public SimulationSink {
 
  private:
   Writer& w_;
-  std::string samples_out_, comments_;
+  std::string header_, samples_out_, comments_;
   std::optional<SampleFile> samples_;
 };
 
@@ -92,7 +95,8 @@ Command add_simulate(CLI::App& app) {
   cmd->add_option("--samples-out", o->samples_out, "with --sample: write the sample table to FILE (whole, or not at all)")->type_name("FILE");
   cmd->add_option("--max-events", o->max_events, "give up after this many events, 1 <= N <= 1e8 [default 1000000]")->type_name("N");
   cmd->footer(
-      "Output: the column line, '# initial regime: f|p|s', then the event log, one row per regime change (%.17g),\n"
+      "Output: the column line, the provenance lines ('# dfchaos ...', '# name = value'), '# initial regime: f|p|s', then the event log, one row per "
+      "regime change (%.17g),\n"
       "then '# final state: t = ..., phase = ..., x = ..., y = ..., v = ..., regime = ...' (the state at t-end).\n"
       "One call reads it: " +
       std::string(kit::kLoadInPython) +
@@ -128,14 +132,15 @@ Command add_simulate(CLI::App& app) {
             const double x0 = number("x0", o->x0), y0 = number("y0", o->y0), v0 = number("v0", o->v0), t0 = number("t0", o->t0),
                          t_end = number("t-end", o->t_end);
             // Nothing is written before the library has checked the input (bad input: no output).
-            std::string comments;
-            if (so.sample_dt > 0)
-              comments =
-                  ("# simulate samples: a = " + format_shortest(p.a()) + ", b = " + format_shortest(p.b()) + ", q = " + format_shortest(p.q()) +
-                   "; x0 = " + format_shortest(x0) + ", y0 = " + format_shortest(y0) + ", v0 = " + format_shortest(v0) +
-                   ", t0 = " + format_shortest(t0) + ", t-end = " + format_shortest(t_end) + "; every " + format_shortest(so.sample_dt) + "\n");
+            std::vector<Setting> settings = model_settings(p);
+            for (const auto& [name, value] : {std::pair{"x0", x0}, {"y0", y0}, {"v0", v0}, {"t0", t0}, {"t-end", t_end}})
+              settings.emplace_back(name, format_shortest(value));
+            settings.emplace_back("max-events", std::to_string(so.max_events));
+            if (so.sample_dt > 0) settings.emplace_back("sample", format_shortest(so.sample_dt));
+            const std::string comments = so.sample_dt > 0 ? provenance_text("simulate: the state every sample time units", settings) : std::string();
             Writer w;
-            Printer printer(w, so.sample_dt > 0 ? o->samples_out : std::string(), comments);
+            Printer printer(w, provenance_text("simulate: the event log of the full system", settings),
+                            so.sample_dt > 0 ? o->samples_out : std::string(), comments);
             const MechanicalState end = simulate(p, x0, y0, v0, t0, t_end, so, printer);
             printer.finish(end);
             return 0;

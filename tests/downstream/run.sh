@@ -16,7 +16,7 @@ cmake -S "$here" -B "$work/build" -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_CXX_COMP
 cmake --build "$work/build" -j 2 > "$work/build.log"
 # The library call gives the same T as the dfchaos tool installed with it.
 lib=$("$work/build/downstream")
-cli=$("$prefix/bin/dfchaos" map --a 1 --b 0.01 --q 0.85 --theta 4 | awk 'NR == 2 {print $3}')
+cli=$("$prefix/bin/dfchaos" map --a 1 --b 0.01 --q 0.85 --theta 4 | awk '!/^#/ && ++n == 2 {print $3}')
 [[ "$lib" == "$cli" ]] || { echo "downstream T = $lib, dfchaos map T = $cli" >&2; exit 1; }
 # The copied experiment runs under its new name and writes its claims.
 "$work/build/experiments/my_copied_experiment" --fast --out "$work/out" 2> "$work/run.log"

@@ -42,11 +42,13 @@ class Cli:
         return r.returncode, r.stdout, r.stderr
 
     def table(self, *args):
-        """The rows of a successful call, as lists of strings, without the header; and the header."""
+        """The rows of a successful call, as lists of strings, without the header; and the header.
+        The '#' lines after the column line (provenance, settings) are checked and left out."""
         rc, out, err = self.run(*args)
         assert rc == 0, f"dfchaos {' '.join(map(str, args))} failed: {err}"
-        lines = [l.split("\t") for l in out.splitlines()]
-        return lines[0], lines[1:]
+        lines = out.splitlines()
+        assert lines[1].startswith("# dfchaos ") and lines[2].startswith("# dfchaos "), f"no provenance lines after the column line: {lines[:3]}"
+        return lines[0].split("\t"), [l.split("\t") for l in lines[1:] if not l.startswith("#")]
 
     def error(self, *args):
         """The message of a refused call (the CLI prints 'dfchaos: error: <message>', exit 2)."""

@@ -116,19 +116,24 @@ def test_orbit(cli, abq, theta0, steps):
 
 
 def parse_simulate(out, samples_text=None):
-    """The tool's simulate output: the column line, the initial regime, event rows, the final state;
-    the sample rows from their own file (--samples-out)."""
+    """The tool's simulate output: the column line, the provenance lines, the initial regime, event
+    rows, the final state; the sample rows from their own file (--samples-out), which has the
+    provenance lines too."""
     lines = out.split("\n")
     assert lines[0].split("\t") == ["t", "phase", "before", "after", "kind", "x", "y", "v_before", "v_after"]
-    assert lines[1].startswith("# initial regime: ")
-    initial = lines[1].split(": ")[1]
-    events = [l.split("\t") for l in lines[2:] if l and not l.startswith("#")]
+    assert lines[1] == "# dfchaos simulate: the event log of the full system" and lines[2].startswith("# dfchaos ")
+    head = [l for l in lines[3:] if l.startswith("# ") and " = " in l and not l.startswith("# final")]
+    assert [l.split(" = ")[0] for l in head][:3] == ["# a", "# b", "# q"]
+    start = 3 + len(head)
+    assert lines[start].startswith("# initial regime: ")
+    initial = lines[start].split(": ")[1]
+    events = [l.split("\t") for l in lines[start + 1:] if l and not l.startswith("#")]
     assert lines[-2].startswith("# final state: ") and lines[-1] == ""
     samples = []
     if samples_text is not None:
         s = samples_text.split("\n")
-        assert s[0] == "t\tx\ty\tv\tregime" and s[1].startswith("# simulate samples: ")
-        samples = [l.split("\t") for l in s[2:] if l]
+        assert s[0] == "t\tx\ty\tv\tregime" and s[1] == "# dfchaos simulate: the state every sample time units"
+        samples = [l.split("\t") for l in s[1:] if l and not l.startswith("#")]
     return initial, events, samples
 
 

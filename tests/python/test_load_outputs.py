@@ -79,7 +79,8 @@ def test_simulate_and_its_samples(cli, tmp_path):
                            "--sample", "0.5", "--samples-out", samples)
     assert rc == 0, err
     check_column(out, "t")
-    assert out.splitlines()[1].startswith("# initial regime: ")
+    assert out.splitlines()[1] == "# dfchaos simulate: the event log of the full system"
+    assert [l for l in out.splitlines() if l.startswith("# initial regime: ")]
     assert out.splitlines()[-1].startswith("# final state: t = 40, ")
     frame = check_column(samples.read_text(), "x")
     assert len(frame) == 81 and frame["t"].iloc[-1] == 40
@@ -101,3 +102,52 @@ def test_sweep_and_merged_shards(cli, tmp_path):
     rc, merged, err = cli.run("sweep-merge", *shards)
     assert rc == 0, err
     assert merged == whole.read_text()
+
+
+def provenance(text):
+    """The '#' lines between the column line and the first row: the title, the build and the
+    settings as a dict."""
+    lines = text.splitlines()
+    head = []
+    for l in lines[1:]:
+        if not l.startswith("#"):
+            break
+        head.append(l)
+    assert len(head) >= 2, f"no provenance lines after the column line: {lines[:3]}"
+    settings = dict(l[2:].split(" = ", 1) for l in head[2:] if " = " in l)
+    return head[0], head[1], settings
+
+
+@pytest.mark.parametrize("command,extra,settings", [
+    ("info", [], {}),
+    ("map", ["--arc", "5"], {"arc": "5  (t2 + (t3 - t2) i / N, i = 0..N-1)"}),
+    ("map", ["--grid", "3.5:4.5:3"], {"grid": "3.5:4.5:3:lin"}),
+    ("orbit", ["--theta0", "3.5", "--steps", "4"], {"theta0": "3.5", "steps": "4"}),
+    ("simulate", ["--x0", "0", "--y0", "0", "--v0", "0", "--t0", "0", "--t-end", "5"],
+     {"x0": "0", "y0": "0", "v0": "0", "t0": "0", "t-end": "5", "max-events": "1000000"}),
+])
+def test_every_table_says_where_it_came_from(cli, command, extra, settings):
+    """The tool's tables carry the sweep's header: what made them, with which build, at which
+    settings (issue 53, item 2)."""
+    rc, out, err = cli.run(command, *P, *extra)
+    assert rc == 0, err
+    title, build, got = provenance(out)
+    assert title.startswith(f"# dfchaos {command}: ")
+    _, sweep_build, _ = provenance(cli.run("sweep", "--q-range", "0.8:0.9:2", "--b-range", "0.01:0.02:2",
+                                           "--observables", "covering")[1])
+    assert build == sweep_build and build.startswith("# dfchaos ")
+    assert {k: got[k] for k in ("a", "b", "q")} == {"a": "1", "b": "0.02", "q": "0.85"}
+    for k, v in settings.items():
+        assert got[k] == v, (k, got)
+
+
+@pytest.mark.parametrize("command,extra", [
+    ("info", []), ("map", ["--theta", "4"]), ("orbit", ["--theta0", "3.5", "--steps", "3"]),
+    ("simulate", ["--x0", "0", "--y0", "0", "--v0", "0", "--t0", "0", "--t-end", "5"]),
+])
+def test_a_defaults_to_one_as_in_sweep_and_certify(cli, command, extra):
+    """One rule for a in every command (issue 53, item 6): left out, it is 1."""
+    rc1, out1, err1 = cli.run(command, "--b", "0.02", "--q", "0.85", *extra)
+    rc2, out2, err2 = cli.run(command, *P, *extra)
+    assert rc1 == 0 and rc2 == 0, (err1, err2)
+    assert out1 == out2
