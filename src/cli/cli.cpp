@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include "dfchaos/errors.hpp"
+#include "dfchaos/units.hpp"
 #include "kit/options.hpp"
 #include "kit/provenance.hpp"
 
@@ -15,14 +16,45 @@ void ModelOptions::add_to(CLI::App* app) {
   const std::string range = format_shortest(kMinParameter) + " <= X <= " + format_shortest(kMaxParameter);
   // a defaults to 1 (the paper's scaling: b and q are then b/a and q/a), as in sweep, certify and
   // the Python module's certify: one rule for every command.
-  app->add_option("-a,--a", a, "forcing amplitude a, " + range + " [default 1]")->type_name("FLOAT");
-  app->add_option("-b,--b", b, "half the constant force b, " + range + "; the return map needs b < a/2 and b/a >= " + format_shortest(kMinMapRatio))
-      ->required()
-      ->type_name("FLOAT");
-  app->add_option("-q,--q", q, "maximal dry-friction force q, " + range + "; the return map needs q > 2b")->required()->type_name("FLOAT");
+  auto* oa = app->add_option("-a,--a", a, "forcing amplitude a, " + range + " [default 1]")->type_name("FLOAT");
+  auto* ob = app->add_option("-b,--b", b,
+                             "half the constant force b, " + range + "; the return map needs b < a/2 and b/a >= " + format_shortest(kMinMapRatio))
+                 ->type_name("FLOAT");
+  auto* oq = app->add_option("-q,--q", q, "maximal dry-friction force q, " + range + "; the return map needs q > 2b")->type_name("FLOAT");
+  auto* ph = app->add_option("--physical", physical,
+                             "instead of --a --b --q: a drilling model in physical units, MASS (kg), OMEGA the forcing's angular "
+                             "frequency (rad/s), AMPLITUDE of the harmonic force (N), STATIC force (N), FRICTION the delimiter's "
+                             "largest dry friction (N); a = AMPLITUDE/(MASS OMEGA^2), b = STATIC/(2 MASS OMEGA^2), "
+                             "q = FRICTION/(MASS OMEGA^2) (docs/units.md). Times are then in seconds, lengths in metres, "
+                             "velocities in m/s, in the input and the output (columns named with their unit: elapsed_s, y_m)")
+                 ->expected(5)
+                 ->type_name("MASS OMEGA AMPLITUDE STATIC FRICTION");
+  for (auto* o : {oa, ob, oq}) ph->excludes(o);
 }
 
-Parameters ModelOptions::model() const { return Parameters(number("a", a), number("b", b), number("q", q)); }
+Parameters ModelOptions::model() const {
+  if (!physical.empty())
+    return from_physical(number("mass", physical[0]), number("omega", physical[1]), number("amplitude", physical[2]),
+                         number("static_force", physical[3]), number("friction", physical[4]));
+  if (b.empty() || q.empty())
+    throw InvalidParameter(b.empty() ? "b" : "q", "give --b and --q (and --a, 1 by default), or --physical MASS OMEGA AMPLITUDE STATIC FRICTION");
+  return Parameters(number("a", a), number("b", b), number("q", q));
+}
+
+Units ModelOptions::units() const {
+  if (physical.empty()) return {};
+  return {true, number("omega", physical[1])};
+}
+
+std::vector<Setting> ModelOptions::settings(const Parameters& p) const {
+  std::vector<Setting> s = model_settings(p);
+  if (!physical.empty()) {
+    s.emplace_back("physical", physical[0] + " " + physical[1] + " " + physical[2] + " " + physical[3] + " " + physical[4] +
+                                   "  (mass kg, omega rad/s, amplitude N, static force N, friction N; docs/units.md)");
+    s.emplace_back("units", "times in seconds (t / omega), lengths in metres, velocities in m/s (omega dx/dt); phases in radians");
+  }
+  return s;
+}
 
 std::vector<Setting> model_settings(const Parameters& p) {
   return {{"a", format_shortest(p.a())}, {"b", format_shortest(p.b())}, {"q", format_shortest(p.q())}};

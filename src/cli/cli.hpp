@@ -25,17 +25,43 @@ struct Command {
   std::function<int()> run;
 };
 
-/// The model options --a --b --q, as typed (parsed by model()).
-struct ModelOptions {
-  std::string a = "1", b, q;
-  /// Registers --a (default 1), --b and --q (required) on a subcommand.
-  void add_to(CLI::App* app);
-  /// The parameters. @throws InvalidParameter naming a, b or q.
-  Parameters model() const;
+/// The units of a command's times, lengths and velocities (docs/units.md, "Back to physical
+/// units"). Without --physical, the paper's: t in radians of the forcing, lengths as they are,
+/// velocities dx/dt. With --physical MASS OMEGA ..., times in seconds (tau = t / omega), lengths in
+/// metres (the same numbers), velocities in m/s (omega dx/dt); the columns then carry the unit in
+/// their names (elapsed_s, y_m, v_m_per_s), so that a table never hides which units it holds.
+/// Phases (theta, T, the phase of an event) stay in radians either way.
+struct Units {
+  bool physical = false;
+  double omega = 1;  ///< the angular frequency (rad/s) of --physical
+  std::string time(const std::string& name) const { return physical ? name + "_s" : name; }
+  std::string length(const std::string& name) const { return physical ? name + "_m" : name; }
+  std::string velocity(const std::string& name) const { return physical ? name + "_m_per_s" : name; }
+  double seconds(double t) const { return physical ? t / omega : t; }            ///< a time t of the model, in the output's unit
+  double metres_per_second(double v) const { return physical ? v * omega : v; }  ///< a velocity dx/dt, in the output's unit
+  double model_time(double s) const { return physical ? s * omega : s; }         ///< an input time in the model's t
+  double model_velocity(double v) const { return physical ? v / omega : v; }     ///< an input velocity as dx/dt
 };
 
 /// One setting of a run, for the provenance header: "# name = value".
 using Setting = std::pair<std::string, std::string>;
+
+/// The model options: --a (1 by default), --b, --q, or --physical MASS OMEGA AMPLITUDE STATIC
+/// FRICTION instead of them (a, b, q by dfchaos::from_physical, docs/units.md), as typed.
+struct ModelOptions {
+  std::string a = "1", b, q;
+  std::vector<std::string> physical;
+  /// Registers the options on a subcommand.
+  void add_to(CLI::App* app);
+  /// The parameters. @throws InvalidParameter naming a, b, q or the physical quantity at fault.
+  Parameters model() const;
+  /// The units of the output: physical with --physical.
+  Units units() const;
+  /// The settings for the provenance header: a, b, q (shortest round-trip form) and, with
+  /// --physical, the five quantities as typed and the units of the output.
+  std::vector<Setting> settings(const Parameters& p) const;
+};
+
 /// The settings a, b, q of parameters (shortest round-trip form), first in every header.
 std::vector<Setting> model_settings(const Parameters& p);
 /// The provenance header that follows the column line of every table of the tool (as the sweep's),

@@ -41,6 +41,8 @@ Command add_map(CLI::App& app) {
       "and flies on, so T = T1 mod 2 pi)\n"
       "  elapsed      the time from theta to the next start of free flight\n"
       "  penetration  the advance of the delimiter during that time\n"
+      "With --physical: T1_s and elapsed_s in seconds (divided by OMEGA), penetration_m in metres; theta and T stay\n"
+      "phases in radians (docs/units.md).\n"
       "Accuracy (docs/accuracy.md; checked against a 40-digit reference by the test precision_reference):\n"
       "  needs b/a >= " +
       format_shortest(kMinMapRatio) +
@@ -73,20 +75,21 @@ Command add_map(CLI::App& app) {
             }
             if (th.empty()) throw InvalidParameter("theta", "give --theta X [X ...], --grid LO:HI:N or --arc N");
             for (double x : th) p.require_in_map_domain(x, "theta");  // every input checked before any output
-            std::vector<Setting> settings = model_settings(p);
+            const Units u = o->m.units();
+            std::vector<Setting> settings = o->m.settings(p);
             if (!o->grid.empty())
               settings.emplace_back("grid", sweep::Range::parse("grid", o->grid[0], kMaxMapGrid).canonical());
             else if (!o->arc.empty())
               settings.emplace_back("arc", std::to_string(th.size()) + "  (t2 + (t3 - t2) i / N, i = 0..N-1)");
             else
-              settings.emplace_back("theta", std::to_string(th.size()) + " phases given");
+              settings.emplace_back("theta", std::to_string(th.size()) + (th.size() == 1 ? " phase" : " phases") + " given");
             Writer w;
-            w.row({"theta", "T1", "T", "scenario", "elapsed", "penetration"});
+            w.row({"theta", u.time("T1"), "T", "scenario", u.time("elapsed"), u.length("penetration")});
             w.provenance("map: T1 and T at given phases of [t2, t3)", settings);
             for (double x : th) {
               const auto s = return_map_step(p, x);
-              w.row({format_double(x), format_double(s.hit.theta1), format_double(s.T), scenario_name(s.scenario), format_double(s.elapsed),
-                     format_double(s.penetration)});
+              w.row({format_double(x), format_double(u.seconds(s.hit.theta1)), format_double(s.T), scenario_name(s.scenario),
+                     format_double(u.seconds(s.elapsed)), format_double(s.penetration)});
             }
             w.flush();
             return 0;

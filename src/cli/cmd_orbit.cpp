@@ -31,6 +31,8 @@ Command add_orbit(CLI::App& app) {
       "  penetration  the advance of the delimiter during that step\n"
       "  time         the time at which theta_n starts (theta0 at n = 0)\n"
       "  y            the delimiter position at that time (0 at n = 0)\n"
+      "With --physical: elapsed_s and time_s in seconds (divided by OMEGA), penetration_m and y_m in metres;\n"
+      "theta0 and theta stay phases in radians (docs/units.md).\n"
       "Memory does not grow with the number of steps; progress goes to stderr when it is a terminal.\n"
       "Rows are streamed as computed: a step at which the computation gives up (exit 1, one line on stderr) ends\n"
       "the output after the rows of the steps before it.\n"
@@ -49,16 +51,18 @@ Command add_orbit(CLI::App& app) {
             const bool progress = ::isatty(2) && steps >= 100000;
             const auto start = std::chrono::steady_clock::now();
             Writer w;
-            w.row({"n", "theta", "scenario", "elapsed", "penetration", "time", "y"});
-            std::vector<Setting> settings = model_settings(p);
+            const Units u = o->m.units();
+            w.row({"n", "theta", "scenario", u.time("elapsed"), u.length("penetration"), u.time("time"), u.length("y")});
+            std::vector<Setting> settings = o->m.settings(p);
             settings.emplace_back("theta0", format_shortest(theta0));
             settings.emplace_back("steps", std::to_string(steps));
             w.provenance("orbit: iterates of T from theta0", settings);
             const Orbit orbit(p, theta0, steps);
             for (auto it = orbit.begin(); it != orbit.end(); ++it) {
               const long long n = it.n();
-              w.row({std::to_string(n), format_double(it->theta), scenario_name(it->scenario), format_double(it->elapsed),
-                     format_double(it->penetration), format_double(static_cast<double>(it.time())), format_double(static_cast<double>(it.y()))});
+              w.row({std::to_string(n), format_double(it->theta), scenario_name(it->scenario), format_double(u.seconds(it->elapsed)),
+                     format_double(it->penetration), format_double(u.seconds(static_cast<double>(it.time()))),
+                     format_double(static_cast<double>(it.y()))});
               if (progress && (n + 1) % 100000 == 0) {
                 const double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
                 std::fprintf(stderr, "\rorbit: %lld/%lld steps, about %.0f s left   ", n + 1, steps, sec / (n + 1) * (steps - n - 1));

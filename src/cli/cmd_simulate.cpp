@@ -21,17 +21,20 @@ namespace {
 class SampleFile {
  public:
   /// @throws kit::OutputError when the path cannot be written (bad_path(): exit 2).
-  SampleFile(const std::string& path, const std::string& comments) : file_(path, "samples-out") { file_.write("t\tx\ty\tv\tregime\n" + comments); }
-  /// One row t x y v regime, in the number format of the event rows.
+  SampleFile(const std::string& path, const std::string& comments, const Units& u) : file_(path, "samples-out"), u_(u) {
+    file_.write(u.time("t") + '\t' + u.length("x") + '\t' + u.length("y") + '\t' + u.velocity("v") + "\tregime\n" + comments);
+  }
+  /// One row t x y v regime, in the number format of the event rows and the output's units.
   void row(const Sample& s) {
-    line_ =
-        format_double(s.t) + '\t' + format_double(s.x) + '\t' + format_double(s.y) + '\t' + format_double(s.v) + '\t' + regime_code(s.regime) + '\n';
+    line_ = format_double(u_.seconds(s.t)) + '\t' + format_double(s.x) + '\t' + format_double(s.y) + '\t' + format_double(u_.metres_per_second(s.v)) +
+            '\t' + regime_code(s.regime) + '\n';
     file_.write(line_);
   }
   void commit() { file_.commit(); }
 
  private:
   sweep::AtomicFile file_;
+  Units u_;
   std::string line_;
 };
 
@@ -42,18 +45,18 @@ class Printer final : public SimulationSink {
  public:
   /// `header`: the provenance lines after the column line; `samples_out` empty: no samples; else
   /// their file and its comment lines.
-  Printer(Writer& w, std::string header, std::string samples_out, std::string comments)
-      : w_(w), header_(std::move(header)), samples_out_(std::move(samples_out)), comments_(std::move(comments)) {}
+  Printer(Writer& w, const Units& u, std::string header, std::string samples_out, std::string comments)
+      : w_(w), u_(u), header_(std::move(header)), samples_out_(std::move(samples_out)), comments_(std::move(comments)) {}
 
   void start(Regime initial_regime) override {
-    if (!samples_out_.empty()) samples_.emplace(samples_out_, comments_);
-    w_.row({"t", "phase", "before", "after", "kind", "x", "y", "v_before", "v_after"});
+    if (!samples_out_.empty()) samples_.emplace(samples_out_, comments_, u_);
+    w_.row({u_.time("t"), "phase", "before", "after", "kind", u_.length("x"), u_.length("y"), u_.velocity("v_before"), u_.velocity("v_after")});
     w_.line(header_.substr(0, header_.size() - 1));  // without its last newline
     w_.line(std::string("# initial regime: ") + regime_code(initial_regime));
   }
   void event(const SimulationEvent& e) override {
-    w_.row({format_double(e.t), format_double(e.when.phase), regime_code(e.before), regime_code(e.after), transition_code(e.kind), format_double(e.x),
-            format_double(e.y), format_double(e.v_before), format_double(e.v_after)});
+    w_.row({format_double(u_.seconds(e.t)), format_double(e.when.phase), regime_code(e.before), regime_code(e.after), transition_code(e.kind),
+            format_double(e.x), format_double(e.y), format_double(u_.metres_per_second(e.v_before)), format_double(u_.metres_per_second(e.v_after))});
   }
   void sample(const Sample& s) override { samples_->row(s); }
 
@@ -62,13 +65,15 @@ class Printer final : public SimulationSink {
   void finish(const MechanicalState& end) {
     w_.flush();  // the events reached stdout (a failed write ends here: no samples file)
     if (samples_) samples_->commit();
-    w_.line("# final state: t = " + format_double(end.t.value()) + ", phase = " + format_double(end.t.phase) + ", x = " + format_double(end.x) +
-            ", y = " + format_double(end.y) + ", v = " + format_double(end.v) + ", regime = " + regime_code(end.regime));
+    w_.line("# final state: " + u_.time("t") + " = " + format_double(u_.seconds(end.t.value())) + ", phase = " + format_double(end.t.phase) + ", " +
+            u_.length("x") + " = " + format_double(end.x) + ", " + u_.length("y") + " = " + format_double(end.y) + ", " + u_.velocity("v") + " = " +
+            format_double(u_.metres_per_second(end.v)) + ", regime = " + regime_code(end.regime));
     w_.flush();
   }
 
  private:
   Writer& w_;
+  Units u_;
   std::string header_, samples_out_, comments_;
   std::optional<SampleFile> samples_;
 };
@@ -107,6 +112,8 @@ Command add_simulate(CLI::App& app) {
       "               at the delimiter for an instant: the start or end of a stop, the end of a progression, or a grazing touch)\n"
       "  x, y         positions of the mass and of the delimiter\n"
       "  v_before, v_after  velocities of the mass just before and after\n"
+      "With --physical: the times t0, t-end, DT and the t column in seconds (t_s), positions in metres (x_m, y_m), velocities\n"
+      "v0 and v_before, v_after in m/s (v_before_m_per_s, ...); the phase stays in radians (docs/units.md).\n"
       "--sample DT --samples-out FILE: the state every DT time units goes to FILE, a table of its own read the same way\n"
       "(columns t x y v regime). Memory does not grow with the number of events or samples: events are streamed to\n"
       "stdout as found, samples into a temporary beside FILE, renamed into place when the simulation reaches t-end.\n"
@@ -129,17 +136,23 @@ Command add_simulate(CLI::App& app) {
               throw InvalidParameter("samples-out", "--samples-out needs --sample DT");
             }
             so.max_events = count("max-events", o->max_events, 1, kMaxSimulationEvents);
-            const double x0 = number("x0", o->x0), y0 = number("y0", o->y0), v0 = number("v0", o->v0), t0 = number("t0", o->t0),
-                         t_end = number("t-end", o->t_end);
+            // With --physical the input is in seconds, metres and m/s: t0, t-end, sample and v0 are taken to
+            // the model's t and dx/dt (docs/units.md); the settings keep them as given.
+            const Units u = o->m.units();
+            const double x0 = number("x0", o->x0), y0 = number("y0", o->y0), v0_in = number("v0", o->v0), t0_in = number("t0", o->t0),
+                         t_end_in = number("t-end", o->t_end);
+            const double v0 = u.model_velocity(v0_in), t0 = u.model_time(t0_in), t_end = u.model_time(t_end_in);
+            const double sample_in = so.sample_dt;
+            so.sample_dt = u.model_time(so.sample_dt);
             // Nothing is written before the library has checked the input (bad input: no output).
-            std::vector<Setting> settings = model_settings(p);
-            for (const auto& [name, value] : {std::pair{"x0", x0}, {"y0", y0}, {"v0", v0}, {"t0", t0}, {"t-end", t_end}})
+            std::vector<Setting> settings = o->m.settings(p);
+            for (const auto& [name, value] : {std::pair{"x0", x0}, {"y0", y0}, {"v0", v0_in}, {"t0", t0_in}, {"t-end", t_end_in}})
               settings.emplace_back(name, format_shortest(value));
             settings.emplace_back("max-events", std::to_string(so.max_events));
-            if (so.sample_dt > 0) settings.emplace_back("sample", format_shortest(so.sample_dt));
+            if (so.sample_dt > 0) settings.emplace_back("sample", format_shortest(sample_in));
             const std::string comments = so.sample_dt > 0 ? provenance_text("simulate: the state every sample time units", settings) : std::string();
             Writer w;
-            Printer printer(w, provenance_text("simulate: the event log of the full system", settings),
+            Printer printer(w, u, provenance_text("simulate: the event log of the full system", settings),
                             so.sample_dt > 0 ? o->samples_out : std::string(), comments);
             const MechanicalState end = simulate(p, x0, y0, v0, t0, t_end, so, printer);
             printer.finish(end);

@@ -107,3 +107,59 @@ def test_repr_is_shortest_and_round_trips(abq):
     assert back == p and r == p and hash(r) == hash(p) and len({p, r, back}) == 1
     assert p != dfchaos.Parameters(abq[0], math.nextafter(abq[1], 1.0), abq[2])
     assert p != abq and (p == "p") is False
+
+
+PHYS = ["--physical", "0.5", "100", "5000", "100", "4250"]   # the worked example: a = 1 m, b = 0.01 m, q = 0.85 m
+SCALED = ["--a", "1", "--b", "0.01", "--q", "0.85"]
+
+
+def columns(cli, *args):
+    header, rows = cli.table(*args)
+    return {name: [r[k] for r in rows] for k, name in enumerate(header)}
+
+
+@pytest.mark.crossval
+@pytest.mark.parametrize("command,extra,times,lengths,velocities,phases", [
+    ("map", ["--theta", "3.3", "4", "5.5"], ["T1", "elapsed"], ["penetration"], [], ["theta", "T"]),
+    ("orbit", ["--theta0", "3.5", "--steps", "20"], ["elapsed", "time"], ["penetration", "y"], [], ["theta"]),
+])
+def test_physical_output_is_the_scaled_one_in_seconds_and_metres(cli, command, extra, times, lengths, velocities, phases):
+    """--physical (issue 53, item 5): the worked example of docs/units.md gives the rows of a = 1,
+    b = 0.01, q = 0.85 with every time divided by omega = 100 (column name_s), lengths the same
+    numbers in metres (name_m) and phases unchanged; the table says so in its '#' lines."""
+    phys, scaled = columns(cli, command, *PHYS, *extra), columns(cli, command, *SCALED, *extra)
+    for name in times:
+        assert [float(x) for x in phys[name + "_s"]] == [float(x) / 100 for x in scaled[name]], name
+    for name in lengths:
+        assert phys[name + "_m"] == scaled[name], name
+    for name in phases:
+        assert phys[name] == scaled[name], name
+    _, out, _ = cli.run(command, *PHYS, *extra)
+    assert "# units = times in seconds (t / omega), lengths in metres, velocities in m/s" in out
+
+
+@pytest.mark.crossval
+def test_physical_simulate_takes_and_gives_seconds_metres_and_metres_per_second(cli, tmp_path):
+    """simulate --physical: t0, t-end, the sample step and v0 in seconds and m/s are the scaled run's
+    t0 = 100 t0_s, ...; its events and samples come back in seconds, metres and m/s."""
+    s1, s2 = tmp_path / "phys.tsv", tmp_path / "scaled.tsv"
+    rc, phys, err = cli.run("simulate", *PHYS, "--x0", "0", "--y0", "0", "--v0", "0.5", "--t0", "0.04", "--t-end", "1",
+                            "--sample", "0.01", "--samples-out", s1)
+    assert rc == 0, err
+    rc, scaled, err = cli.run("simulate", *SCALED, "--x0", "0", "--y0", "0", "--v0", "0.005", "--t0", "4", "--t-end", "100",
+                              "--sample", "1", "--samples-out", s2)
+    assert rc == 0, err
+    def table(text):
+        lines = text.splitlines()
+        return lines[0].split("\t"), [l.split("\t") for l in lines[1:] if not l.startswith("#")]
+    (hp, rp), (hs, rs) = table(phys), table(scaled)
+    assert hp == ["t_s", "phase", "before", "after", "kind", "x_m", "y_m", "v_before_m_per_s", "v_after_m_per_s"]
+    assert len(rp) == len(rs) >= 3
+    for a, b in zip(rp, rs):
+        assert float(a[0]) == pytest.approx(float(b[0]) / 100, rel=1e-14)      # seconds
+        assert float(a[1]) == pytest.approx(float(b[1]), abs=1e-12) and a[2:5] == b[2:5]  # phase; regimes, kind
+        assert float(a[5]) == pytest.approx(float(b[5]), rel=1e-12, abs=1e-14)  # metres
+        assert float(a[7]) == pytest.approx(float(b[7]) * 100, rel=1e-12, abs=1e-12)  # m/s
+    (hp, rp), (hs, rs) = table(s1.read_text()), table(s2.read_text())
+    assert hp == ["t_s", "x_m", "y_m", "v_m_per_s", "regime"] and len(rp) == len(rs) == 97
+    assert phys.splitlines()[-1].startswith("# final state: t_s = 1, ")
