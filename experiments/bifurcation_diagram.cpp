@@ -16,6 +16,7 @@
 #include "dfchaos/covering.hpp"
 #include "dfchaos/errors.hpp"
 #include "dfchaos/map_derivative.hpp"
+#include "dfchaos/orbit_diagram.hpp"
 #include "dfchaos/superstable.hpp"
 #include "kit/experiment.hpp"
 #include "kit/format.hpp"
@@ -28,11 +29,6 @@ namespace {
 constexpr double kDerivativeRelTol = 1e-4;  // T' (implicit function theorem) against central differences
 struct Point {
   double b, q;
-};
-/// One parameter value: the orbit's statistics and, when the orbit returned to t2, that cycle's resolution.
-struct Value {
-  OrbitStatistics orbit;
-  StopCycle cycle;
 };
 }  // namespace
 
@@ -63,20 +59,11 @@ const Experiment experiment{
       const Axis b_axis = Axis::log_ratio(1e-3, 200.0, nb), q_axis = Axis::linear(0.5, 0.99, nq);
       for (int j = 0; j < nb; ++j) pts.push_back({b_axis[j], q_fixed});
       for (int j = 0; j < nq; ++j) pts.push_back({b_fixed, q_axis[j]});
-      const auto st = sweep_list<Value, Point>(
+      const auto st = sweep_list<OrbitDiagramColumn, Point>(
           pts,
           [&](const Point& pt) {
             const Parameters p(1.0, pt.b, pt.q);
-            Value v{orbit_statistics(p, *p.t2() + 0.377 * (*p.t3() - *p.t2()), transient, averaged, keep), {}};
-            // The cycle the orbit fell onto is that of t2: followed again from t2, with its error.
-            try {
-              if (v.orbit.period_of_t2 > 0) v.cycle = t2_cycle(p, v.orbit.period_of_t2);
-            } catch (const GaveUp&) {
-              v.cycle = StopCycle{};  // left unresolved: the orbit itself was followed
-            } catch (const InvalidParameter&) {
-              v.cycle = StopCycle{};
-            }
-            return v;
+            return orbit_diagram_column(p, orbit_diagram_start(p), transient, averaged, keep);
           },
           "orbit diagram");
       Table diagram({"sweep", "b_over_a", "q_over_a", "theta"});

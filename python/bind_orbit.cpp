@@ -6,11 +6,13 @@
 #include <pybind11/stl.h>
 
 #include <optional>
+#include <vector>
 
 #include "convert.hpp"
 #include "dfchaos/errors.hpp"
 #include "dfchaos/map_derivative.hpp"
 #include "sweep/cell.hpp"
+#include "sweep/orbit_diagram.hpp"
 #include "sweep/spec.hpp"
 
 namespace dfchaos::python {
@@ -99,6 +101,72 @@ the computed orbit: through a stop it may be a cycle of the rounding (see dfchao
 The `period` column of `dfchaos sweep`, by the same C++ function: equal to a one-cell sweep with the
 same settings. Arguments and errors as lyapunov(), and ValueError unless 1 <= period_max <= 10000
 and 1e-15 <= period_tol <= 1e-3 (the messages name period-max and period-tol, as the tool does).)doc");
+
+  const OrbitDiagramSettings diagram;
+  m.def(
+      "orbit_diagram",
+      [](const py::handle& q_over_a, const py::handle& b_over_a, double a, double theta0_fraction, long long transient, long long steps,
+         long long keep) {
+        const Reals qs = as_reals(q_over_a, "q_over_a"), bs = as_reals(b_over_a, "b_over_a");
+        const std::vector<double> q(qs.array.data(), qs.array.data() + qs.array.size()), b(bs.array.data(), bs.array.data() + bs.array.size());
+        const OrbitDiagramSettings set{finite("theta0_fraction", theta0_fraction), transient, steps, keep};
+        set.validate();
+        const double av = finite("a", a);
+        const auto cells = static_cast<py::ssize_t>(q.size() * b.size());
+        std::vector<double> theta, lyapunov(static_cast<std::size_t>(cells));
+        std::vector<long long> period(static_cast<std::size_t>(cells));
+        std::vector<bool> superstable(static_cast<std::size_t>(cells));
+        interruptible([&] {
+          sweep::orbit_diagram(av, q, b, set, [&](long long i, const OrbitDiagramColumn& c) {
+            if (theta.empty()) theta.reserve(static_cast<std::size_t>(cells * keep));
+            theta.insert(theta.end(), c.orbit.tail.begin(), c.orbit.tail.end());
+            lyapunov[static_cast<std::size_t>(i)] = c.orbit.lyapunov;
+            period[static_cast<std::size_t>(i)] = c.orbit.period_of_t2;
+            superstable[static_cast<std::size_t>(i)] = c.cycle.resolved;
+          });
+          return 0;
+        });
+        py::array_t<double> qa(cells), ba(cells), ly(cells), th({cells, static_cast<py::ssize_t>(keep)});
+        py::array_t<long long> pe(cells);
+        py::array_t<bool> su(cells);
+        const auto nb = static_cast<py::ssize_t>(b.size());
+        for (py::ssize_t i = 0; i < cells; ++i) {
+          qa.mutable_at(i) = q[static_cast<std::size_t>(i / nb)];
+          ba.mutable_at(i) = b[static_cast<std::size_t>(i % nb)];
+          ly.mutable_at(i) = lyapunov[static_cast<std::size_t>(i)];
+          pe.mutable_at(i) = period[static_cast<std::size_t>(i)];
+          su.mutable_at(i) = superstable[static_cast<std::size_t>(i)];
+        }
+        std::copy(theta.begin(), theta.end(), th.mutable_data());
+        py::dict out;
+        out["q_over_a"] = qa;
+        out["b_over_a"] = ba;
+        out["theta"] = th;
+        out["lyapunov"] = ly;
+        out["period_of_t2"] = pe;
+        out["superstable"] = su;
+        return out;
+      },
+      py::arg("q_over_a"), py::arg("b_over_a"), py::arg("a") = 1.0, py::arg("theta0_fraction") = diagram.theta0_fraction,
+      py::arg("transient") = diagram.transient, py::arg("steps") = diagram.steps, py::arg("keep") = diagram.keep,
+      R"doc(orbit_diagram(q_over_a, b_over_a, a=1.0, theta0_fraction=0.377, transient=500, steps=256, keep=64) -> dict
+
+The orbit diagram of `dfchaos orbit-diagram`, by the same C++ function (to the last bit): over the
+cells (q/a, b/a) of the two axes (each a number or a 1-d array-like; q/a outer, b/a inner), the
+last `keep` phases of the orbit of T from theta_0 = t2 + theta0_fraction (t3 - t2) after
+`transient` discarded steps and `steps` averaged ones, with the marks of each cell. Returns a dict
+of numpy arrays, one entry per cell (theta one row per cell):
+  q_over_a, b_over_a  the cell
+  theta         shape (cells, keep): the kept phases, the earliest first
+  lyapunov      the Lyapunov exponent over the averaged steps; -inf when a step stopped (T' = 0)
+  period_of_t2  the return time of t2 when the orbit reached t2 and came back, else 0
+  superstable   True when that return is a superstable cycle through t2 that double precision
+                resolves (Theorem 2; superstable.hpp)
+Raises ValueError (dfchaos.InvalidParameter, the tool's messages) unless T is defined at every
+cell, 0 <= theta0_fraction < 1, 0 <= transient <= 1e8, 1 <= steps <= 1e8, 1 <= keep <= min(steps,
+1e5), cells * keep <= 1e8 and cells * (transient + steps) <= 1e9; dfchaos.GaveUp if a cell's motion
+never flies again. Runs without the GIL, on OMP_NUM_THREADS threads; Ctrl-C raises
+KeyboardInterrupt.)doc");
 
   m.def(
       "derivative",

@@ -205,3 +205,40 @@ def _is_number(text):
         return math.isfinite(float(text))
     except ValueError:
         return False
+
+
+@pytest.mark.crossval
+def test_orbit_diagram_equals_the_tool(cli):
+    """dfchaos.orbit_diagram and `dfchaos orbit-diagram` (issue 53, item 4): the same cells, phases
+    and marks to the last bit, with the defaults of both (one C++ function and one set of defaults)
+    and with settings given; the q/a axis reaches cells whose orbit stops (lyapunov -inf, a return of t2)."""
+    q = [0.8, 0.96705685618729098]
+    b = [0.003, 0.01, 0.05]
+    for kw, opts in (({}, []), (dict(transient=40, steps=30, keep=7, theta0_fraction=0.25),
+                                ["--transient", 40, "--steps", 30, "--keep", 7, "--theta0-fraction", 0.25])):
+        d = dfchaos.orbit_diagram(q, b, **kw)
+        keep = d["theta"].shape[1]
+        for qi in q:
+            for bi in b:
+                header, rows = cli.table("orbit-diagram", "--q-range", repr(qi), "--b-range", repr(bi), *map(str, opts))
+                assert header == ["q_over_a", "b_over_a", "k", "theta", "lyapunov", "period_of_t2", "superstable"]
+                i = [j for j in range(len(d["q_over_a"])) if d["q_over_a"][j] == qi and d["b_over_a"][j] == bi]
+                assert len(i) == 1 and len(rows) == keep
+                i = i[0]
+                assert_bits("theta", d["theta"][i], floats([r[3] for r in rows]))
+                assert_bits("lyapunov", [d["lyapunov"][i]], floats([rows[0][4]]))
+                assert int(rows[0][5]) == d["period_of_t2"][i] and (rows[0][6] == "1") == bool(d["superstable"][i])
+        if not kw:  # with the defaults, the cell (0.967..., 0.01) stops and returns to t2
+            assert (d["lyapunov"] == -np.inf).any() and (d["period_of_t2"] > 0).any()
+
+
+@pytest.mark.failure
+@pytest.mark.parametrize("kw,opts", [
+    (dict(q_over_a=0.85, b_over_a=[0.01, 0.6]), ["--q-range", "0.85", "--b-range", "0.01:0.6:2"]),
+    (dict(q_over_a=0.85, b_over_a=0.01, steps=10, keep=11), ["--q-range", "0.85", "--b-range", "0.01", "--steps", "10", "--keep", "11"]),
+    (dict(q_over_a=0.85, b_over_a=0.01, theta0_fraction=1.0), ["--q-range", "0.85", "--b-range", "0.01", "--theta0-fraction", "1"]),
+])
+def test_orbit_diagram_refuses_as_the_tool(cli, kw, opts):
+    with pytest.raises(dfchaos.InvalidParameter) as e:
+        dfchaos.orbit_diagram(**kw)
+    assert str(e.value) == cli.error("orbit-diagram", *opts)
