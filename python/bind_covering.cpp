@@ -11,6 +11,8 @@
 #include "dfchaos/covering.hpp"
 #include "dfchaos/errors.hpp"
 #include "dfchaos/phase.hpp"
+#include "dfchaos/return_map.hpp"
+#include "dfchaos/symbolic.hpp"
 
 namespace dfchaos::python {
 
@@ -144,6 +146,34 @@ Lemma 4's conclusion at one parameter set: two disjoint closed segments J0, J1 o
 with T continuous and T(J) containing [t2, 3 pi/2]. Keys: holds, J0, J1 (dicts as from
 covering_segments, None unless holds), segments_found (the search stops after 2 when
 max_segments is 0). Sampled evidence, as covering_segments; its options are checked as there.)doc");
+
+  m.def(
+      "periodic_orbit",
+      [](const Parameters& p, const std::string& word) {
+        p.require_return_map();
+        const auto [orb, T] = interruptible([&] {
+          ItineraryOrbit o = periodic_orbit(p, word);
+          std::vector<double> t(o.x.size());
+          for (std::size_t j = 0; j < o.x.size(); ++j) t[j] = return_map_step(p, o.x[j]).T;
+          return std::pair{std::move(o), std::move(t)};
+        });
+        py::dict d;
+        d["word"] = orb.word;
+        d["x"] = py::array_t<double>(static_cast<py::ssize_t>(orb.x.size()), orb.x.data());
+        d["T"] = py::array_t<double>(static_cast<py::ssize_t>(T.size()), T.data());
+        d["log_multiplier"] = orb.log_expansion;
+        d["max_step_residual"] = orb.max_step_residual;
+        d["precision_floor"] = orb.precision_floor;
+        d["itinerary_ok"] = orb.itinerary_ok;
+        return d;
+      },
+      py::arg("p"), py::arg("word"), R"doc(periodic_orbit(p, word) -> dict
+
+`dfchaos periodic --word` (to the last bit): the orbit of T with itinerary (word)^infinity over
+Lemma 4's J0 (letter 0) and J1 (letter 1), word primitive of 1 to 1000 letters (least period
+len(word)). Returns word, x (x_(j+1) = T(x_j)), T (T(x_j) as computed), log_multiplier
+(ln|(T^m)'(x_0)|), max_step_residual, precision_floor and itinerary_ok; errors as the tool's.
+certify("periodic", p, word=word) encloses it in ball arithmetic.)doc");
 }
 
 }  // namespace dfchaos::python

@@ -151,22 +151,12 @@ and 1e-15 <= period_tol <= 1e-3 (the messages name period-max and period-tol, as
       py::arg("transient") = diagram.transient, py::arg("steps") = diagram.steps, py::arg("keep") = diagram.keep,
       R"doc(orbit_diagram(q_over_a, b_over_a, a=1.0, theta0_fraction=0.377, transient=500, steps=256, keep=64) -> dict
 
-The orbit diagram of `dfchaos orbit-diagram`, by the same C++ function (to the last bit): over the
-cells (q/a, b/a) of the two axes (each a number or a 1-d array-like; q/a outer, b/a inner), the
-last `keep` phases of the orbit of T from theta_0 = t2 + theta0_fraction (t3 - t2) after
-`transient` discarded steps and `steps` averaged ones, with the marks of each cell. Returns a dict
-of numpy arrays, one entry per cell (theta one row per cell):
-  q_over_a, b_over_a  the cell
-  theta         shape (cells, keep): the kept phases, the earliest first
-  lyapunov      the Lyapunov exponent over the averaged steps; -inf when a step stopped (T' = 0)
-  period_of_t2  the return time of t2 when the orbit reached t2 and came back, else 0
-  superstable   True when that return is a superstable cycle through t2 that double precision
-                resolves (Theorem 2; superstable.hpp)
-Raises ValueError (dfchaos.InvalidParameter, the tool's messages) unless T is defined at every
-cell, 0 <= theta0_fraction < 1, 0 <= transient <= 1e8, 1 <= steps <= 1e8, 1 <= keep <= min(steps,
-1e5), cells * keep <= 1e8 and cells * (transient + steps) <= 1e9; dfchaos.GaveUp if a cell's motion
-never flies again. Runs without the GIL, on OMP_NUM_THREADS threads; Ctrl-C raises
-KeyboardInterrupt.)doc");
+`dfchaos orbit-diagram` (the same C++ function, to the last bit) over the cells of the axes q/a
+(outer) and b/a (inner), each a number or a 1-d array-like: numpy arrays, one entry per cell, of
+q_over_a, b_over_a, theta (shape (cells, keep): the last phases of the orbit from t2 +
+theta0_fraction (t3 - t2)), lyapunov (-inf when a step stopped), period_of_t2 (the return time of
+t2, else 0) and superstable (that return resolved as a superstable cycle, Theorem 2). Settings,
+bounds and messages as the tool's (`dfchaos orbit-diagram --help`); runs without the GIL.)doc");
 
   m.def(
       "derivative",

@@ -24,11 +24,13 @@ The return map (Lemma 3), elementwise over array-likes:
   derivative(p, theta)             T' (0 at a stop, nan at a grazing)
 One orbit (theta0 a phase in [t2, t3)):
   orbit(p, theta0, steps)          T^n(theta0) with the columns of `dfchaos orbit`
+  periodic_orbit(p, word)          the periodic orbit of itinerary (word)^infinity (Section 6)
   lyapunov(p, theta0, steps, transient), rate(...), period(...)
                                    as a cell of `dfchaos sweep`; theta0=None: the sweep's default
                                    start, the arc's midpoint
 The plane, the full system, Lemma 4 and the proofs:
   sweep(q_range, b_range, ...)     numpy columns of `dfchaos sweep` and its provenance
+  orbit_diagram(q_over_a, b_over_a, ...)  `dfchaos orbit-diagram`: phases per cell, stops marked
   simulate(p, x0, y0, v0, t0, t_end, sample=..., max_events=...)
   covering_segments(p), lemma4_covering(p)
   certify(what, ...)               proofs in ball arithmetic, as `dfchaos certify`: a Certified

@@ -67,7 +67,7 @@ expect 2 'b:'   covering --b 0.002:0.001 --q 0.85
 expect 2 '--q is required'   covering --b 0.001
 expect 2 'q:'   covering --b 0.001 --q 0.001
 expect 2 'a:'   covering --a -1 --b 0.001 --q 0.85
-expect 2 '--period is required' periodic --b 0.003 --q 0.85
+expect 2 'period: ' periodic --b 0.003 --q 0.85
 expect 2 'period:' periodic --b 0.003 --q 0.85 --period 0
 expect 2 'b:'   periodic --b 0.003:0.004 --q 0.85 --period 2
 expect 2 'segment:' discontinuities --b 0.01 --segment L7

@@ -55,6 +55,7 @@ certify::Request request_from(const CertifyOptions& o) {
   r.what = o.what;
   r.certificate = !o.certificate.empty();
   r.period = o.period;
+  r.word = o.word;
   r.segment = o.segment;
   if (o.what == "vartheta0") return r;
   r.a = number("a", o.a);
@@ -164,7 +165,12 @@ CLI::App* add_certify(CLI::App& app, CertifyOptions& o) {
   add_a(per, o);
   add_parameter(per, o.b, kB, kBText, false);
   add_parameter(per, o.q, kQ, kQText, false);
-  per->add_option("--period", o.period, "the minimal period M, 1 <= M <= 64")->type_name("M")->required();
+  auto* pm = per->add_option("--period", o.period, "the minimal period M, 1 <= M <= 64: the orbit of itinerary (0^(M-1)1)^infinity")->type_name("M");
+  auto* pw = per->add_option("--word", o.word,
+                             "instead of --period: the orbit of itinerary (W)^infinity, W a primitive word of 1..64 letters 0 and 1\n"
+                             "(0 for J0, 1 for J1; its least period is the length of W)")
+                 ->type_name("W");
+  pm->excludes(pw);
   add_common(per, o, true);
 
   auto* sup = c->add_subcommand("superstable", "Theorem 2 at a point, or a window in b with both its edges (--window)");

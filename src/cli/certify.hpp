@@ -35,6 +35,7 @@ struct CertifyOptions {
   std::string b;                   ///< b: a number or LO:HI
   std::string q;                   ///< q: a number or LO:HI
   int period = 0;                  ///< periodic: the minimal period m
+  std::string word;                ///< periodic, instead of period: one period of the itinerary
   std::string segment = "L0";      ///< discontinuities: L0 = [101pi/100, 3pi/2] or L2 = [101pi/100, 51pi/50]
   std::string window;              ///< superstable: a window LO:HI in b (floating estimate) to certify with its edges
   std::string J0;                  ///< covering: the segment J0 as TOP:T2 (its candidate ends, as certified_region records them)

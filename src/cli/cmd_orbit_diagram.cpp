@@ -26,7 +26,8 @@ Command add_orbit_diagram(CLI::App& app) {
   cmd->add_option("--theta0-fraction", o->theta0, "orbit start theta_0 = t2 + f (t3 - t2), f in [0, 1) (default " + o->theta0 + ", the report's)")
       ->type_name("F");
   cmd->add_option("--transient", o->transient, "steps discarded, 0 <= N <= 1e8 (default " + o->transient + ")")->type_name("N");
-  cmd->add_option("--steps", o->steps, "steps averaged for the Lyapunov exponent, 1 <= N <= 1e8, at least --keep (default " + o->steps + ")")->type_name("N");
+  cmd->add_option("--steps", o->steps, "steps averaged for the Lyapunov exponent, 1 <= N <= 1e8, at least --keep (default " + o->steps + ")")
+      ->type_name("N");
   cmd->add_option("--keep", o->keep, "phases written per cell (the last ones), 1 <= K <= 1e5 (default " + o->keep + ")")->type_name("K");
   cmd->footer(
       "Output (tab-separated, %.17g; after the column line, # lines: the version and the settings), one row per kept phase,\n"
@@ -71,7 +72,8 @@ Command add_orbit_diagram(CLI::App& app) {
               const std::string qs = format_double(q[static_cast<std::size_t>(i / nb)]), bs = format_double(b[static_cast<std::size_t>(i % nb)]),
                                 lyap = format_double(c.orbit.lyapunov), period = std::to_string(c.orbit.period_of_t2),
                                 superstable = c.cycle.resolved ? "1" : "0";
-              for (std::size_t k = 0; k < c.orbit.tail.size(); ++k) w.row({qs, bs, std::to_string(k), format_double(c.orbit.tail[k]), lyap, period, superstable});
+              for (std::size_t k = 0; k < c.orbit.tail.size(); ++k)
+                w.row({qs, bs, std::to_string(k), format_double(c.orbit.tail[k]), lyap, period, superstable});
             });
             w.flush();
             return 0;

@@ -90,4 +90,26 @@ ItineraryOrbit periodic_orbit(const Parameters& p, const InverseBranch (&g)[2], 
   return o;
 }
 
+bool is_primitive_word(const std::string& word) {
+  // w is a proper power iff it occurs in ww at a position strictly between 0 and |w|
+  return !word.empty() && (word + word).find(word, 1) == word.size();
+}
+
+void require_itinerary_word(const std::string& name, const std::string& word, std::size_t max_length) {
+  if (word.empty() || word.size() > max_length || word.find_first_not_of("01") != std::string::npos)
+    throw InvalidParameter(name, "a word of 1 to " + std::to_string(max_length) + " letters 0 and 1 (got '" + word.substr(0, 80) + "')");
+  if (!is_primitive_word(word)) {
+    const std::size_t root = (word + word).find(word, 1);
+    throw InvalidParameter(name, "a primitive word, not a power of a shorter one (" + word.substr(0, 80) + " repeats " + word.substr(0, root) +
+                                     ": give that, whose orbit is the same)");
+  }
+}
+
+ItineraryOrbit periodic_orbit(const Parameters& p, const std::string& word) {
+  require_itinerary_word("word", word, kMaxItineraryLength);
+  const Lemma4Covering c = require_lemma4_covering(p);
+  const InverseBranch g[2] = {make_inverse_branch(p, c.J0), make_inverse_branch(p, c.J1)};
+  return periodic_orbit(p, g, word);
+}
+
 }  // namespace dfchaos

@@ -61,6 +61,24 @@ void for_each_word(const Parameters& p, const InverseBranch (&g)[2], int n, Visi
 /// @throws GaveUp if 200 sweeps do not converge.
 ItineraryOrbit periodic_orbit(const Parameters& p, const InverseBranch (&g)[2], const std::string& word);
 
+/// Whether `word` is primitive: not a power \f$u^k\f$, \f$k \ge 2\f$, of a shorter word. As
+/// \f$J_0 \cap J_1 = \emptyset\f$, the orbit with itinerary \f$(\text{word})^\infty\f$ then has least
+/// period \f$|\text{word}|\f$ (the least period of the sequence).
+bool is_primitive_word(const std::string& word);
+
+/// Longest itinerary word that periodic_orbit(p, word) accepts.
+inline constexpr std::size_t kMaxItineraryLength = 1000;
+
+/// An itinerary as a user gives it: 1 to max_length letters 0 and 1, primitive.
+/// @throws InvalidParameter naming `name`.
+void require_itinerary_word(const std::string& name, const std::string& word, std::size_t max_length);
+
+/// The periodic orbit with itinerary \f$(\text{word})^\infty\f$ at p: Lemma 4's covering
+/// (require_lemma4_covering), its inverse branches, then periodic_orbit above.
+/// @throws InvalidParameter naming word (require_itinerary_word with kMaxItineraryLength), or b or
+/// q as require_lemma4_covering; GaveUp as periodic_orbit.
+ItineraryOrbit periodic_orbit(const Parameters& p, const std::string& word);
+
 namespace detail {
 void check_itinerary_orbit(const Parameters& p, const InverseBranch (&g)[2], ItineraryOrbit& o, bool periodic);
 }

@@ -1286,15 +1286,17 @@ Iv T_on(Steps& st, const Iv& A, const json& j, double b, double q, const Num& lo
   return T;
 }
 
-/// Sections 6-7: for each orbit, boxes X_0..X_(m-1) with X_j inside J_(w_j) (J0 < J1 disjoint, w =
-/// 0^(m-1)1), T continuous on X_j and T at the ends of X_j on opposite sides outside X_(j+1): then
-/// T(X_j) contains X_(j+1) (intermediate values), and going back along the cycle a point x of X_0 has
-/// T^j x in X_j and T^m x = x; its itinerary is w^infinity, of least period m (X_(m-1) lies in J1, the
-/// other boxes in J0).
+/// Sections 6-7: for each orbit, boxes X_0..X_(m-1) with X_j inside J_(w_j) (J0 < J1 disjoint, w a
+/// word of m letters 0 and 1, checked here to be primitive: no power of a shorter word), T continuous
+/// on X_j and T at the ends of X_j on opposite sides outside X_(j+1): then T(X_j) contains X_(j+1)
+/// (intermediate values), and going back along the cycle a point x of X_0 has T^j x in X_j and
+/// T^m x = x; its itinerary is w^infinity (J0, J1 disjoint), whose least period is m as w is primitive.
+/// (The prover's default word is 0^(m-1)1.)
 long check_periodic(const json& c, std::string& what) {
   Steps st;
   what =
-      "re-verified: an orbit of least period m with itinerary (0^(m-1)1)^infinity in the boxes of each orbit; not re-verified: "
+      "re-verified: an orbit of least period m with itinerary (w)^infinity, w the orbit's primitive word of m letters, in the boxes of "
+      "each orbit; not re-verified: "
       "that it is the only one there (the prover's Krawczyk test)";
   const auto [a, b, q] = read_point(c);
   const json& w = field(c, "witnesses", "");
@@ -1312,7 +1314,10 @@ long check_periodic(const json& c, std::string& what) {
     const std::size_t m = jm.get<std::size_t>();
     const json &word = field(orbits[i], "word", wo), &boxes = field(orbits[i], "boxes", wo);
     if (!word.is_string() || !boxes.is_array()) throw Malformed("'" + wo + "' has no word string or boxes array");
-    st.require(word == std::string(m - 1, '0') + "1", wo + "word is 0^(m-1)1 with m = period");
+    const std::string wd = word.get<std::string>();
+    // primitive: w occurs in ww only at 0 and m (a power u^k, k >= 2, also occurs at |u|)
+    st.require(wd.size() == m && wd.find_first_not_of("01") == std::string::npos && (wd + wd).find(wd, 1) == m,
+               wo + "word: m letters 0 and 1 (m = period), primitive, so that the least period is m");
     st.require(boxes.size() == m, wo + "boxes: one per point of the orbit (m of them)");
     std::vector<Num> lo(m), hi(m);
     std::vector<Iv> T_lo(m), T_hi(m);
@@ -1321,9 +1326,9 @@ long check_periodic(const json& c, std::string& what) {
       const json& X = field(boxes[j], "X", wx + ".");
       if (!X.is_array() || X.size() != 2) throw Malformed("'" + wx + ".X' is not [lo, hi]");
       lo[j] = exact(X[0], wx + ".X[0]"), hi[j] = exact(X[1], wx + ".X[1]");
-      const std::vector<double>& Jw = j + 1 == m ? J1 : J0;
+      const std::vector<double>& Jw = wd[j] == '1' ? J1 : J0;
       st.require(mpfr_cmp(lo[j].x, hi[j].x) < 0 && mpfr_cmp_d(lo[j].x, Jw[0]) >= 0 && mpfr_cmp_d(hi[j].x, Jw[1]) <= 0,
-                 wx + ": lo < hi, inside J" + word.get<std::string>()[j]);
+                 wx + ": lo < hi, inside J" + wd[j]);
       T_on(st, A, field(boxes[j], "on", wx + "."), b, q, lo[j], hi[j], wx + ".on");
       T_lo[j] = T_on(st, A, field(boxes[j], "at_lo", wx + "."), b, q, lo[j], lo[j], wx + ".at_lo");
       T_hi[j] = T_on(st, A, field(boxes[j], "at_hi", wx + "."), b, q, hi[j], hi[j], wx + ".at_hi");

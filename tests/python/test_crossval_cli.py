@@ -242,3 +242,32 @@ def test_orbit_diagram_refuses_as_the_tool(cli, kw, opts):
     with pytest.raises(dfchaos.InvalidParameter) as e:
         dfchaos.orbit_diagram(**kw)
     assert str(e.value) == cli.error("orbit-diagram", *opts)
+
+
+@pytest.mark.crossval
+@pytest.mark.parametrize("word", ["0011", "1", "0111010"])
+def test_periodic_orbit_of_any_itinerary_equals_the_tool_and_its_proof(cli, word):
+    """dfchaos.periodic_orbit equals `dfchaos periodic --word` to the last bit (issue 53, item 3), and
+    dfchaos.certify("periodic", p, word=...) proves the orbit of that itinerary, the floating points
+    within their precision floor of the certified balls."""
+    p = dfchaos.Parameters(1.0, 0.003, 0.85)
+    o = dfchaos.periodic_orbit(p, word)
+    header, rows = cli.table("periodic", "--b", "0.003", "--q", "0.85", "--word", word)
+    assert header == ["j", "letter", "x", "T"] and "".join(r[1] for r in rows) == word == o["word"]
+    assert_bits("x", o["x"], floats([r[2] for r in rows]))
+    assert_bits("T", o["T"], floats([r[3] for r in rows]))
+    c = dfchaos.certify("periodic", p, word=word)
+    assert c["proved"] is True and c["itinerary"] == word and c["period"] == len(word)
+    for x, ball in zip(o["x"], c["orbit"]):
+        assert abs(x - float(ball["mid"])) <= o["precision_floor"] + float(ball["rad"])
+
+
+@pytest.mark.failure
+def test_periodic_orbit_refuses_as_the_tool(cli):
+    p = dfchaos.Parameters(1.0, 0.003, 0.85)
+    for word in ("0101", "012"):
+        with pytest.raises(dfchaos.InvalidParameter) as e:
+            dfchaos.periodic_orbit(p, word)
+        assert str(e.value) == cli.error("periodic", "--b", "0.003", "--q", "0.85", "--word", word)
+    with pytest.raises(dfchaos.InvalidParameter, match="word"):
+        dfchaos.certify("periodic", p, word="0101")

@@ -44,7 +44,8 @@ struct Request {
   double a = 1;                 ///< forcing amplitude a > 0
   std::optional<Range> b;       ///< dry friction b (a box for lemma1 and covering)
   std::optional<Range> q;       ///< constant force q (a box for lemma1 and covering)
-  int period = 0;               ///< periodic: the minimal period m, 1..64
+  int period = 0;               ///< periodic: the minimal period m, 1..64, itinerary (0^(m-1)1)^infinity
+  std::string word;             ///< periodic, instead of period: the itinerary (word)^infinity, a primitive word of 1..64 letters 0, 1
   std::string segment = "L0";   ///< discontinuities: L0 = [101pi/100, 3pi/2] or L2 = [101pi/100, 51pi/50]
   std::optional<Range> window;  ///< superstable: a window [lo, hi] in b (floating estimate) to certify with its edges
   /// covering: the segments to prove (both or neither; J0 left of J1). Given, no candidates are searched,

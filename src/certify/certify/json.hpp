@@ -50,7 +50,7 @@ std::string statement_lemma1(const certified::ParameterBox& box);
 std::string statement_b0(double a, double q, double b_low);
 std::string statement_discontinuities(const std::string& segment, std::size_t n);
 std::string statement_covering(const certified::ParameterBox& box);
-std::string statement_periodic(int m);
+std::string statement_periodic(const std::string& word);  ///< word: one period of the itinerary (its length is the least period)
 std::string statement_superstable();
 std::string statement_window();
 std::string statement_arc_l1(const certified::ArcL1Proof& p);

@@ -7,6 +7,7 @@
 #include "certify/json.hpp"
 #include "dfchaos/errors.hpp"
 #include "dfchaos/parameters.hpp"
+#include "dfchaos/symbolic.hpp"
 
 namespace dfchaos::certify {
 
@@ -162,11 +163,13 @@ Result certify(const Request& r) {
   }
   if (r.what == "periodic") {
     const ParameterBox box = box_from(r, true, false);
-    if (r.period < 1 || r.period > 64) throw InvalidParameter("period", "an integer 1 <= m <= 64", r.period);
+    if (!r.word.empty() && r.period != 0) throw InvalidParameter("word", "give the period M or the word W, not both");
+    if (r.word.empty() && (r.period < 1 || r.period > 64)) throw InvalidParameter("period", "an integer 1 <= m <= 64 (or give a word)", r.period);
+    if (!r.word.empty()) require_itinerary_word("word", r.word, 64);
     const CoveringProof c = prove_covering(box);
     PeriodicOptions opt;
     opt.record = r.certificate;
-    const PeriodicProof p = prove_periodic(c, r.period, opt);
+    const PeriodicProof p = r.word.empty() ? prove_periodic(c, r.period, opt) : prove_periodic(c, r.word, opt);
     Result res{p.verdict.proved, to_json(c, p)};
     if (res.proved && r.certificate) {
       try {

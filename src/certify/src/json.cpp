@@ -104,9 +104,8 @@ std::string statement_covering(const ParameterBox& box) {
          "are proved simple and the chain fixed), T = t2 exactly at one end and T >= 3pi/2 at the other, so T(Ji) contains "
          "[t2, 3pi/2] (which contains J0 and J1).";
 }
-std::string statement_periodic(int m) {
-  const std::string w = std::string(static_cast<std::size_t>(std::max(m - 1, 0)), '0') + "1";
-  return "Sections 6-7 from the certified covering: T has a point of minimal period " + std::to_string(m) + " with itinerary (" + w +
+std::string statement_periodic(const std::string& w) {
+  return "Sections 6-7 from the certified covering: T has a point of minimal period " + std::to_string(w.size()) + " with itinerary (" + w +
          ")^infinity through J0, J1 (nested segments and the intermediate value theorem, applied to the certified hypotheses); "
          "the Krawczyk operator proves that the printed boxes contain exactly one such orbit of the cycle equations "
          "T(x_j) = x_{j+1}; and h_top(T restricted to its invariant set in J0 u J1) >= ln 2 (semi-conjugacy onto the 2-shift).";
@@ -195,7 +194,7 @@ Json to_json(const CoveringProof& p) {
 
 Json to_json(const CoveringProof& c, const PeriodicProof& p) {
   Json j = Json::object();
-  j.set("statement", statement_periodic(p.period)).set("parameters", box_json(c.box));
+  j.set("statement", statement_periodic(p.word)).set("parameters", box_json(c.box));
   add_verdict(j, p.verdict);
   j.set("period", p.period).set("itinerary", p.word).set("existence_from_covering", p.existence);
   j.set("J0", Json::array().push(c.J0.lo).push(c.J0.hi)).set("J1", Json::array().push(c.J1.lo).push(c.J1.hi));

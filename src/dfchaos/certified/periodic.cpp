@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "dfchaos/certified/periodic.hpp"
 
+#include "dfchaos/symbolic.hpp"
+
 #include <arb_mat.h>
 
 #include <chrono>
@@ -111,16 +113,28 @@ Outcome covering_relations(const ParameterBalls& m, const std::vector<Ball>& X, 
 }  // namespace
 
 PeriodicProof prove_periodic(const CoveringProof& cov, int period, const PeriodicOptions& opt) {
+  if (period < 1 || period > 64) {
+    PeriodicProof r;
+    r.period = period;
+    r.verdict = Outcome::fail("periodic: period", "1 <= m <= 64");
+    return r;
+  }
+  return prove_periodic(cov, std::string(static_cast<std::size_t>(period - 1), '0') + "1", opt);
+}
+
+PeriodicProof prove_periodic(const CoveringProof& cov, const std::string& word, const PeriodicOptions& opt) {
   const auto start = std::chrono::steady_clock::now();
   PeriodicProof r;
-  r.period = period;
-  r.word = std::string(static_cast<std::size_t>(std::max(period - 1, 0)), '0') + "1";
+  r.period = static_cast<int>(word.size());
+  r.word = word;
   auto finish = [&](Outcome v) {
     r.verdict = std::move(v);
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return r;
   };
-  if (period < 1 || period > 64) return finish(Outcome::fail("periodic: period", "1 <= m <= 64"));
+  if (word.empty() || word.size() > 64 || word.find_first_not_of("01") != std::string::npos || !is_primitive_word(word))
+    return finish(Outcome::fail("periodic: word", "a primitive word of 1 to 64 letters 0 and 1 (got '" + word.substr(0, 80) + "')"));
+  const int period = r.period;
   if (!cov.verdict) return finish(Outcome::fail("periodic: needs the covering", cov.verdict.describe()));
   if (!cov.box.is_point()) return finish(Outcome::fail("periodic: point parameters", "orbits are enclosed at a parameter point"));
   r.existence = true;

@@ -54,7 +54,7 @@ struct OrbitBoxProof {
   BallProof at_hi;  ///< T at hi
 };
 
-/// A periodic orbit of T with itinerary \f$(0^{m-1}1)^\infty\f$.
+/// A periodic orbit of T with itinerary \f$(\text{word})^\infty\f$ (\f$0^{m-1}1\f$ unless another word is given).
 struct PeriodicProof {
   Outcome verdict;                   ///< proved: Krawczyk encloses a unique orbit in the boxes, each inside its J
   bool existence = false;            ///< the Section 6 argument applies (the covering is certified)
@@ -67,7 +67,14 @@ struct PeriodicProof {
   double seconds = 0;                ///< wall time
 };
 
-/// Periodic orbit of minimal period m = `period` (1 <= m <= 64) from the proved covering `cov`.
+/// Periodic orbit of minimal period m = `period` (1 <= m <= 64), itinerary \f$(0^{m-1}1)^\infty\f$, from
+/// the proved covering `cov`.
 PeriodicProof prove_periodic(const CoveringProof& cov, int period, const PeriodicOptions& opt = {});
+
+/// The periodic orbit with itinerary \f$(\text{word})^\infty\f$ for any primitive word over {0, 1} of
+/// 1 to 64 letters (symbolic.hpp, is_primitive_word): the same existence argument (nested segments
+/// of J0, J1 along the word) and the same enclosure; its least period is the word's length, since J0
+/// and J1 are disjoint and the word is no power of a shorter one. Another word fails the proof, naming it.
+PeriodicProof prove_periodic(const CoveringProof& cov, const std::string& word, const PeriodicOptions& opt = {});
 
 }  // namespace dfchaos::certified

@@ -34,7 +34,7 @@ void orbit_diagram(double a, const std::vector<double>& q_over_a, const std::vec
     }
   };
   for (long long i = 0; i < n; ++i) cell(i);  // every cell checked before any is computed
-  constexpr long long kChunk = 64;             // cells computed at a time, then handed over in order
+  constexpr long long kChunk = 64;            // cells computed at a time, then handed over in order
   std::vector<OrbitDiagramColumn> col;
   std::vector<std::exception_ptr> err;
   for (long long start = 0; start < n; start += kChunk) {
