@@ -269,14 +269,14 @@ def run_cli(cli, a, b, q, thetas):
         return [None]
     if out.returncode != 0:
         raise RuntimeError("dfchaos map failed (%d): %s" % (out.returncode, out.stderr.strip()))
-    rows = [line.split("\t") for line in out.stdout.strip().split("\n")[1:]]
+    rows = [line.split("\t") for line in out.stdout.strip().split("\n")[1:] if not line.startswith("#")]
     return [(float(r[0]), float(r[1]), float(r[2]), r[3], float(r[4])) for r in rows]
 
 
 def lib_phases(cli, a, b, q):
     """The doubles t2, t3 as dfchaos computes them (its map accepts theta in [t2, t3))."""
     out = subprocess.run([cli, "info", "--a", repr(a), "--b", repr(b), "--q", repr(q)], capture_output=True, text=True, check=True)
-    rows = dict(line.split("\t", 1) for line in out.stdout.strip().split("\n"))
+    rows = dict(line.split("\t", 1) for line in out.stdout.strip().split("\n") if not line.startswith("#"))
     return float(rows["t2"]), float(rows["t3"])
 
 
