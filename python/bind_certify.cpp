@@ -60,8 +60,8 @@ py::object to_python(const kit::Json::Value& v) {
 }
 
 py::object certify_py(const std::string& what, double a, std::optional<NumberOrBox> b, std::optional<NumberOrBox> q, int period,
-                      const std::string& word, const std::string& segment, std::optional<std::pair<double, double>> window,
-                      std::optional<std::string> certificate, double max_seconds, double max_memory) {
+                      const std::string& segment, std::optional<std::pair<double, double>> window, std::optional<std::string> certificate,
+                      double max_seconds, double max_memory, const std::string& word) {
   certify::check_statement(what);
   if (certificate && certificate->empty()) throw InvalidParameter("certificate", "a file name (got '')");
   if (certificate && !certify::has_certificate(what))
@@ -244,10 +244,10 @@ void bind_certify(py::module_& m) {
   m.attr("Interval") = scope["Interval"];
   m.attr("Certified") = scope["Certified"];
   m.def("certify", &certify_py, py::arg("what"), py::arg("a") = 1.0, py::arg("b") = py::none(), py::arg("q") = py::none(), py::arg("period") = 0,
-        py::arg("word") = "", py::arg("segment") = "L0", py::arg("window") = py::none(), py::arg("certificate") = py::none(),
-        py::arg("max_seconds") = kit::kDefaultBudgetSeconds, py::arg("max_memory") = kit::kDefaultBudgetGiB,
-        R"doc(certify(what, a=1.0, b=None, q=None, period=0, word='', segment='L0', window=None, certificate=None,
-        max_seconds=60, max_memory=2) -> Certified
+        py::arg("segment") = "L0", py::arg("window") = py::none(), py::arg("certificate") = py::none(),
+        py::arg("max_seconds") = kit::kDefaultBudgetSeconds, py::arg("max_memory") = kit::kDefaultBudgetGiB, py::kw_only(), py::arg("word") = "",
+        R"doc(certify(what, a=1.0, b=None, q=None, period=0, segment='L0', window=None, certificate=None,
+        max_seconds=60, max_memory=2, *, word='') -> Certified
 
 A proof in ball arithmetic (Arb), as `dfchaos certify WHAT` gives it: `what` is one of vartheta0 (Eq. 1),
 lemma1 (Lemma 1), b0 (a certified lower bound of b0(q)), discontinuities (Lemma 2, on segment L0 or L2),
@@ -279,14 +279,15 @@ written. The proof runs on a worker thread of the module, without the GIL.)doc")
   // The same at the point of a dfchaos.Parameters, as the module's other functions take it.
   m.def(
       "certify",
-      [](const std::string& what, const Parameters& p, int period, const std::string& word, const std::string& segment,
-         std::optional<std::pair<double, double>> window, std::optional<std::string> certificate, double max_seconds, double max_memory) {
-        return certify_py(what, p.a(), NumberOrBox{p.b()}, NumberOrBox{p.q()}, period, word, segment, window, std::move(certificate), max_seconds,
-                          max_memory);
+      [](const std::string& what, const Parameters& p, int period, const std::string& segment, std::optional<std::pair<double, double>> window,
+         std::optional<std::string> certificate, double max_seconds, double max_memory, const std::string& word) {
+        return certify_py(what, p.a(), NumberOrBox{p.b()}, NumberOrBox{p.q()}, period, segment, window, std::move(certificate), max_seconds,
+                          max_memory, word);
       },
-      py::arg("what"), py::arg("parameters"), py::arg("period") = 0, py::arg("word") = "", py::arg("segment") = "L0", py::arg("window") = py::none(),
+      py::arg("what"), py::arg("parameters"), py::arg("period") = 0, py::arg("segment") = "L0", py::arg("window") = py::none(),
       py::arg("certificate") = py::none(), py::arg("max_seconds") = kit::kDefaultBudgetSeconds, py::arg("max_memory") = kit::kDefaultBudgetGiB,
-      R"doc(certify(what, parameters, period=0, word='', segment='L0', window=None, certificate=None, max_seconds=60, max_memory=2) -> Certified
+      py::kw_only(), py::arg("word") = "",
+      R"doc(certify(what, parameters, period=0, segment='L0', window=None, certificate=None, max_seconds=60, max_memory=2, *, word='') -> Certified
 
 The same as certify(what, a, b, q, ...) at the point (a, b, q) of a dfchaos.Parameters.)doc");
 }

@@ -111,6 +111,7 @@ and 1e-15 <= period_tol <= 1e-3 (the messages name period-max and period-tol, as
         const std::vector<double> q(qs.array.data(), qs.array.data() + qs.array.size()), b(bs.array.data(), bs.array.data() + bs.array.size());
         const OrbitDiagramSettings set{finite("theta0_fraction", theta0_fraction), transient, steps, keep};
         set.validate();
+        sweep::check_orbit_diagram_size(static_cast<double>(q.size()), static_cast<double>(b.size()), set);  // before the result arrays
         const double av = finite("a", a);
         const auto cells = static_cast<py::ssize_t>(q.size() * b.size());
         std::vector<double> theta, lyapunov(static_cast<std::size_t>(cells));

@@ -48,4 +48,9 @@ refuse "theta0-fraction" --q-range 0.85 --b-range 0.01 --theta0-fraction 1
 refuse "transient" --q-range 0.85 --b-range 0.01 --transient -1
 refuse "steps: " --q-range 0.8:0.9:1000 --b-range 0.01:0.02:1000 --keep 1 --transient 2000
 refuse "keep: " --q-range 0.8:0.9:1000 --b-range 0.01:0.02:1000 --keep 200 --steps 200 --transient 0
+refuse "a: " --a 0 --q-range 0.85 --b-range 0.01
+refuse "q-range: T must be defined" --q-range 0.01:0.85:3 --b-range 0.01
+# a grid of 1e16 cells is refused from the sizes of its axes, before they are built (under 500 MB)
+ulimit -v 500000
+refuse "keep: " --q-range 0.5:0.99:1e8 --b-range 0.001:0.2:1e8
 ((fails == 0)) || exit 1

@@ -57,4 +57,5 @@ for bad in 0101 012 "" 000; do
   refuse certify periodic "${P[@]}" --word "$bad"
 done
 refuse certify periodic "${P[@]}" --word "$(printf '0%.0s' {1..64})1"
+refuse certify covering "${P[@]}" --word 01
 ((fails == 0))

@@ -50,6 +50,8 @@ Command add_orbit_diagram(CLI::App& app) {
             set.transient = count("transient", o->transient, 0, 100'000'000);
             set.steps = count("steps", o->steps, 1, 100'000'000);
             set.keep = count("keep", o->keep, 1, 100'000);
+            set.validate();
+            sweep::check_orbit_diagram_size(static_cast<double>(qr.size()), static_cast<double>(br.size()), set);  // before the axes are built
             std::vector<double> q(static_cast<std::size_t>(qr.size())), b(static_cast<std::size_t>(br.size()));
             for (long long i = 0; i < qr.size(); ++i) q[static_cast<std::size_t>(i)] = qr[i];
             for (long long i = 0; i < br.size(); ++i) b[static_cast<std::size_t>(i)] = br[i];

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include <cmath>
 #include <memory>
 #include <optional>
 #include <string>
@@ -144,6 +145,19 @@ Command add_simulate(CLI::App& app) {
             const double v0 = u.model_velocity(v0_in), t0 = u.model_time(t0_in), t_end = u.model_time(t_end_in);
             const double sample_in = so.sample_dt;
             so.sample_dt = u.model_time(so.sample_dt);
+            if (u.physical) {
+              // The library checks the model's values; in seconds and m/s its limits and messages would
+              // name numbers the user did not type: the conditions on the given values, first.
+              const std::string per = " (in seconds; the model's time is OMEGA times the seconds)";
+              if (!(std::fabs(t0) <= kMaxSimulationTime))
+                throw InvalidParameter("t0", "|t0| x OMEGA <= " + format_shortest(kMaxSimulationTime) + per, t0_in);
+              if (!(std::fabs(t_end) <= kMaxSimulationTime))
+                throw InvalidParameter("t-end", "|t-end| x OMEGA <= " + format_shortest(kMaxSimulationTime) + per, t_end_in);
+              if (!(t_end_in >= t0_in)) throw InvalidParameter("t-end", "t-end >= t0 = " + format_shortest(t0_in), t_end_in);
+              if (!std::isfinite(v0)) throw InvalidParameter("v0", "|v0| / OMEGA finite (m/s; the model's velocity is v0 / OMEGA)", v0_in);
+              if (sample_in > 0 && !(so.sample_dt > 0))
+                throw InvalidParameter("sample", "sample x OMEGA > 0 (seconds; it underflows to 0 in the model's time)", sample_in);
+            }
             // Nothing is written before the library has checked the input (bad input: no output).
             std::vector<Setting> settings = o->m.settings(p);
             for (const auto& [name, value] : {std::pair{"x0", x0}, {"y0", y0}, {"v0", v0_in}, {"t0", t0_in}, {"t-end", t_end_in}})

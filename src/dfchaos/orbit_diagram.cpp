@@ -32,9 +32,9 @@ void OrbitDiagramSettings::validate() const {
     throw InvalidParameter("keep", "1 <= keep <= min(steps, 1e5) (steps = " + std::to_string(steps) + ")", static_cast<double>(keep));
 }
 
-double orbit_diagram_start(const Parameters& p) {
+double orbit_diagram_start(const Parameters& p, double theta0_fraction) {
   const double t2 = p.t2_required(), t3 = p.t3_required();
-  return t2 + OrbitDiagramSettings{}.theta0_fraction * (t3 - t2);
+  return t2 + theta0_fraction * (t3 - t2);
 }
 
 }  // namespace dfchaos

@@ -44,8 +44,9 @@ struct OrbitDiagramSettings {
   void validate() const;
 };
 
-/// The start the orbit diagrams of the report use: \f$t_2 + 0.377\,(t_3 - t_2)\f$, a phase in no
-/// particular relation to the arcs of the map. @throws InvalidParameter where \f$T\f$ is not defined.
-double orbit_diagram_start(const Parameters& p);
+/// The start of an orbit diagram's orbits, \f$t_2 + f\,(t_3 - t_2)\f$; the report's f = 0.377
+/// (OrbitDiagramSettings) is a phase in no particular relation to the arcs of the map.
+/// @throws InvalidParameter where \f$T\f$ is not defined.
+double orbit_diagram_start(const Parameters& p, double theta0_fraction = OrbitDiagramSettings{}.theta0_fraction);
 
 }  // namespace dfchaos

@@ -271,3 +271,7 @@ def test_periodic_orbit_refuses_as_the_tool(cli):
         assert str(e.value) == cli.error("periodic", "--b", "0.003", "--q", "0.85", "--word", word)
     with pytest.raises(dfchaos.InvalidParameter, match="word"):
         dfchaos.certify("periodic", p, word="0101")
+    with pytest.raises(dfchaos.InvalidParameter, match="word"):
+        dfchaos.certify("covering", p, word="01")
+    # word is keyword-only: the arguments before it keep their places (segment is the sixth)
+    assert "on L2" in dfchaos.certify("discontinuities", 1.0, 0.01, None, 0, "L2")["statement"]

@@ -163,3 +163,8 @@ def test_physical_simulate_takes_and_gives_seconds_metres_and_metres_per_second(
     (hp, rp), (hs, rs) = table(s1.read_text()), table(s2.read_text())
     assert hp == ["t_s", "x_m", "y_m", "v_m_per_s", "regime"] and len(rp) == len(rs) == 97
     assert phys.splitlines()[-1].startswith("# final state: t_s = 1, ")
+    # the limits and messages are in the units given
+    for args, name in ((["--t0", "1", "--t-end", "0.5"], "t-end: must satisfy t-end >= t0 = 1 "),
+                       (["--t0", "0", "--t-end", "1e11"], "t-end: must satisfy |t-end| x OMEGA <= 1e12 (in seconds"),
+                       (["--t0", "0", "--t-end", "1", "--sample", "1e-320", "--samples-out", str(tmp_path / "s.tsv")], "sample: ")):
+        assert cli.error("simulate", *PHYS, "--x0", "0", "--y0", "0", "--v0", "0", *args).startswith(name)

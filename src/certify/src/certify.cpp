@@ -79,6 +79,7 @@ void check_statement(const std::string& what) {
 
 Result certify(const Request& r) {
   check_statement(r.what);
+  if (!r.word.empty() && r.what != "periodic") throw InvalidParameter("word", "only certify periodic takes an itinerary word (not " + r.what + ")");
   if (r.what == "vartheta0") {
     const Vartheta0 v = certify_vartheta0(200);
     Result c{v.verdict.proved, to_json(v)};

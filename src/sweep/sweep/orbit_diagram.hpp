@@ -17,6 +17,10 @@ namespace dfchaos::sweep {
 inline constexpr long long kMaxOrbitDiagramRows = 100'000'000;
 inline constexpr long long kMaxOrbitDiagramWork = 1'000'000'000;
 
+/// Refuses a diagram of nq x nb cells beyond the bounds above, before anything is allocated.
+/// @throws InvalidParameter naming keep (rows) or steps (evaluations).
+void check_orbit_diagram_size(double nq, double nb, const OrbitDiagramSettings& settings);
+
 /// The orbit diagram over the cells (q/a, b/a) of two axes, q/a outer and b/a inner (cell
 /// \f$i\f$ is q_over_a[i / nb], b_over_a[i % nb]), at amplitude a: every cell checked first (T
 /// defined), then computed in parallel (OpenMP; the result does not depend on the threads) and
