@@ -40,6 +40,15 @@ def test_parameters_is_the_only_class_bound():
         assert not issubclass(vars(dfchaos)[name], dfchaos.Parameters.__mro__[1]), name  # not a pybind11 object
 
 
+def periodic_orbit_01(p):
+    """periodic_orbit at p; at the model's b/a = 0.01 no covering is found (InvalidParameter): the call
+    got past the check of the Parameters, which is what is tested here."""
+    try:
+        return dfchaos.periodic_orbit(p, "01")
+    except dfchaos.InvalidParameter:
+        return None
+
+
 # Every use of a Parameters: its properties, its methods, pickling, every function taking one.
 USES = {
     **{f"property {name}": (lambda name: lambda p: getattr(p, name))(name)
@@ -62,6 +71,8 @@ USES = {
     "rate": lambda p: dfchaos.rate(p, steps=3, transient=0),
     "period": lambda p: dfchaos.period(p, steps=3, transient=0),
     "derivative": lambda p: dfchaos.derivative(p, 4.0),
+    "periodic_orbit": periodic_orbit_01,
+    "certify at a Parameters": lambda p: dfchaos.certify("covering", p),
 }
 
 
@@ -69,7 +80,9 @@ def test_every_use_is_listed():
     """Every property of Parameters and every function of the module taking one is in USES."""
     assert {f"property {n}" for n in ("a", "b", "q", "c", "t0", "t1", "t2", "t3", "assumptions")} <= set(USES)
     functions = {name for name, f in vars(dfchaos).items() if callable(f) and not isinstance(f, type)}
-    assert functions - {"certify", "sweep"} == {k for k in USES if k in functions}  # certify, sweep take no Parameters
+    # sweep and orbit_diagram take axes, not a Parameters; certify takes one in its second form (listed
+    # above under its own name)
+    assert functions - {"certify", "sweep", "orbit_diagram"} == {k for k in USES if k in functions}
 
 
 @pytest.mark.parametrize("cls", [dfchaos.Parameters, type("Sub", (dfchaos.Parameters,), {})], ids=["Parameters", "subclass"])
