@@ -5,7 +5,8 @@
 #   scripts/install-deps.sh build    compiler, CMake, Eigen, GSL, GoogleTest, CLI11, nlohmann-json, OpenSSL, Arb, MPFI, OpenMPI (for `make test`;
 #                                    OpenMPI builds dfchaos-sweep-mpi and its test; python3-yaml reads CITATION.cff in the test citation;
 #                                    git lists the sources for the tests spdx and dist, and for make dist; python3-pandas
-#                                    reads every output in the test python_load_outputs)
+#                                    reads every output in the test python_load_outputs; pip, venv, setuptools and wheel
+#                                    install the module offline in the test python_pip_install)
 #   scripts/install-deps.sh report   build + gnuplot, LaTeX, Doxygen (for `make reproduce`)
 #   scripts/install-deps.sh check    build + clang, its OpenMP runtime and its sanitizer runtime (for `make test-clang`
 #                                    and `make test-sanitize SANITIZE_CXX=clang++`), clang-format (for
@@ -18,7 +19,7 @@ set -euo pipefail
 profile=${1:-build}
 build_pkgs=(g++ cmake make pkg-config git python3 python3-mpmath libeigen3-dev libgsl-dev libgtest-dev libgmock-dev
             libcli11-dev nlohmann-json3-dev libbenchmark-dev libssl-dev libflint-arb-dev libflint-dev libmpfr-dev libgmp-dev libmpfi-dev
-            pybind11-dev python3-dev python3-numpy python3-pandas python3-pytest python3-matplotlib python3-yaml libopenmpi-dev openmpi-bin)
+            pybind11-dev python3-dev python3-numpy python3-pandas python3-pytest python3-matplotlib python3-yaml python3-pip python3-venv python3-setuptools python3-wheel libopenmpi-dev openmpi-bin)
 report_pkgs=(gnuplot-nox latexmk texlive-latex-base texlive-latex-recommended
              texlive-latex-extra texlive-fonts-recommended texlive-pictures doxygen poppler-utils)
 
