@@ -5,12 +5,14 @@
 /// numpy columns and the header's provenance instead of a TSV file.
 #include <pybind11/stl.h>
 
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
 
 #include "convert.hpp"
 #include "dfchaos/errors.hpp"
+#include "dfchaos/units.hpp"
 #include "kit/provenance.hpp"
 #include "sweep/cell.hpp"
 #include "sweep/engine.hpp"
@@ -70,10 +72,17 @@ py::dict provenance(const sweep::Spec& spec) {
 
 py::tuple sweep_py(const AxisArg& q_range, const AxisArg& b_range, double a, const ObservablesArg& observables, long long max_branches,
                    long long superstable_scan, double theta0_fraction, long long transient, long long steps, long long period_max, double period_tol,
-                   long long region_max_boxes, long long max_proofs) {
+                   long long region_max_boxes, long long max_proofs, const std::optional<std::tuple<double, double, double>>& physical) {
   // The checks of SweepArguments::resolve, in its order and with its option names.
   sweep::Spec s;
   s.a = finite("a", a);
+  if (physical) {
+    if (a != sweep::Spec{}.a) throw InvalidParameter("a", "give a or physical=(mass, omega, amplitude), not both");
+    s.physical = {.mass = finite("mass", std::get<0>(*physical)),
+                  .omega = finite("omega", std::get<1>(*physical)),
+                  .amplitude = finite("amplitude", std::get<2>(*physical))};
+    s.a = length_scale(s.physical.mass, s.physical.omega, s.physical.amplitude);
+  }
   s.q_over_a = sweep::Range::parse("q-range", axis_text(q_range));
   s.b_over_a = sweep::Range::parse("b-range", axis_text(b_range));
   s.observables = sweep::ObservableSet::parse("observables", observables_text(observables));
@@ -139,10 +148,10 @@ void bind_sweep(py::module_& m) {
         py::arg("max_branches") = d.covering_max_branches, py::arg("superstable_scan") = d.superstable_scan,
         py::arg("theta0_fraction") = d.orbit.theta0_fraction, py::arg("transient") = d.orbit.transient, py::arg("steps") = d.orbit.steps,
         py::arg("period_max") = d.period.max, py::arg("period_tol") = d.period.tol, py::arg("region_max_boxes") = d.region_max_boxes,
-        py::arg("max_proofs") = d.max_proofs,
+        py::arg("max_proofs") = d.max_proofs, py::kw_only(), py::arg("physical") = py::none(),
         R"doc(sweep(q_range, b_range, a=1.0, observables='covering,superstable,lyapunov,rate,period', max_branches=1000000,
       superstable_scan=400, theta0_fraction=0.5, transient=1000, steps=1000, period_max=64, period_tol=1e-9,
-      region_max_boxes=4000, max_proofs=20000000)
+      region_max_boxes=4000, max_proofs=20000000, *, physical=None)
     -> (columns, provenance)
 
 The observables over a grid of the (q/a, b/a) plane, as `dfchaos sweep` computes them: the same checks
@@ -156,6 +165,10 @@ q_range, b_range: an axis as the tool writes it, 'lo:hi:n[:lin|log|mid]' or 'x',
   cell centres for mid.
 observables: a comma-separated string or a list of names among covering, superstable, lyapunov, rate,
   period, certified, region (the columns always come in that order).
+physical: (mass, omega, amplitude) in kg, rad/s and N, the tool's --physical (instead of a, which
+  must then be left at 1): a = amplitude/(mass omega^2) metres, the axes read as q/a = friction/amplitude
+  and b/a = static force/(2 amplitude), the column rate becomes rate_m_per_s and the columns friction_N
+  and static_N (the forces of each cell) come before error (docs/units.md).
 
 Returns a tuple:
   columns     a dict of numpy arrays, one element per cell, keyed by the tool's column names, in its

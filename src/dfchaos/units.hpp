@@ -22,6 +22,12 @@
 
 namespace dfchaos {
 
+/// The length \f$a = F_0/s\f$ with \f$s = (m\,\omega)\,\omega\f$: the forcing amplitude of Eq. (3) in
+/// the caller's unit of length, the scale of every length of the model (only b/a and q/a matter).
+/// @throws InvalidParameter naming mass, omega or amplitude unless each is finite and positive,
+/// or omega when \f$m\omega^2\f$ overflows or underflows.
+double length_scale(double mass, double omega, double amplitude);
+
 /// The parameters \f$(a, b, q) = (F_0/s,\ P/(2s),\ Q/s)\f$ with \f$s = (m\,\omega)\,\omega\f$ (in that
 /// order of rounding): Eqs. (3)-(4) for the physical model of the file comment.
 /// @param mass          \f$m\f$, the mass (kg)

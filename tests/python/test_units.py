@@ -168,3 +168,52 @@ def test_physical_simulate_takes_and_gives_seconds_metres_and_metres_per_second(
                        (["--t0", "0", "--t-end", "1e11"], "t-end: must satisfy |t-end| x OMEGA <= 1e12 (in seconds"),
                        (["--t0", "0", "--t-end", "1", "--sample", "1e-320", "--samples-out", str(tmp_path / "s.tsv")], "sample: ")):
         assert cli.error("simulate", *PHYS, "--x0", "0", "--y0", "0", "--v0", "0", *args).startswith(name)
+
+
+SWEEP = ["--q-range", "0.8:0.95:3", "--b-range", "1e-3:0.02:3:log", "--observables", "superstable,lyapunov,rate,period",
+         "--transient", "50", "--steps", "50"]
+
+
+@pytest.mark.crossval
+@pytest.mark.parametrize("mass,omega,amplitude", [(0.5, 100.0, 5000.0), (0.7, 123.0, 4321.0)])
+def test_physical_sweep_is_the_scaled_one_with_rate_in_metres_per_second(cli, mass, omega, amplitude):
+    """sweep --physical MASS OMEGA AMPLITUDE (issue 53, item 5): the rows of the sweep at
+    a = AMPLITUDE/(MASS OMEGA^2) (computed here, in the same order of rounding), the rate times omega
+    (column rate_m_per_s) and each cell's forces Q = (q/a) F0, P = 2 (b/a) F0 in newtons; the Python
+    module's physical= gives the same columns."""
+    a = amplitude / (mass * omega * omega)
+    phys = columns(cli, "sweep", "--physical", repr(mass), repr(omega), repr(amplitude), *SWEEP)
+    scaled = columns(cli, "sweep", "--a", repr(a), *SWEEP)
+    assert list(phys) == ["index", "q_over_a", "b_over_a", "status", "superstable", "epsilon", "lyapunov", "rate_m_per_s",
+                          "period", "friction_N", "static_N", "error"]
+    for name in ("index", "q_over_a", "b_over_a", "status", "superstable", "epsilon", "lyapunov", "period", "error"):
+        assert phys[name] == scaled[name], name
+    assert [float(x) for x in phys["rate_m_per_s"]] == [omega * float(x) for x in scaled["rate"]]
+    assert [float(x) for x in phys["friction_N"]] == [float(q) * amplitude for q in scaled["q_over_a"]]
+    assert [float(x) for x in phys["static_N"]] == [2 * float(b) * amplitude for b in scaled["b_over_a"]]
+    _, out, _ = cli.run("sweep", "--physical", repr(mass), repr(omega), repr(amplitude), *SWEEP)
+    assert f"# a = {a!r}".removesuffix(".0") in out.splitlines()
+    assert any(l.startswith("# units = rate_m_per_s = omega rate (m/s)") for l in out.splitlines())
+    cols, prov = dfchaos.sweep("0.8:0.95:3", "1e-3:0.02:3:log", observables="superstable,lyapunov,rate,period", transient=50,
+                               steps=50, physical=(mass, omega, amplitude))
+    assert list(cols) == list(phys)
+    assert tuple(float(x) for x in prov["physical"].split("  ")[0].split()) == (mass, omega, amplitude)
+    for name in ("rate_m_per_s", "friction_N", "static_N", "lyapunov"):
+        assert [float(x) for x in phys[name]] == [float(x) for x in cols[name]], name
+
+
+@pytest.mark.failure
+def test_physical_sweep_bad_input(cli):
+    """--physical excludes --a; each quantity must be finite and positive, named; Python says the same."""
+    assert "--a excludes --physical" in cli.error("sweep", "--physical", "0.5", "100", "5000", "--a", "2", *SWEEP) or \
+        "--physical excludes --a" in cli.error("sweep", "--physical", "0.5", "100", "5000", "--a", "2", *SWEEP)
+    for k, name in enumerate(("mass", "omega", "amplitude")):
+        args = ["0.5", "100", "5000"]
+        args[k] = "-1"
+        message = cli.error("sweep", "--physical", *args, *SWEEP)
+        assert message.startswith(f"{name}: must satisfy 0 < {name} < inf"), message
+        with pytest.raises(ValueError) as e:
+            dfchaos.sweep("0.85", "0.01", physical=tuple(float(x) for x in args))
+        assert str(e.value) == message
+    with pytest.raises(ValueError, match="^a: give a or physical"):
+        dfchaos.sweep("0.85", "0.01", a=2.0, physical=(0.5, 100.0, 5000.0))

@@ -235,12 +235,13 @@ std::vector<double> observable_values(const Spec& spec, const CellValues& v) {
       case Observable::Covering: x.push_back(v.covering); break;
       case Observable::Superstable: x.insert(x.end(), {v.superstable, v.epsilon}); break;
       case Observable::Lyapunov: x.push_back(v.lyapunov); break;
-      case Observable::Rate: x.push_back(v.rate); break;
+      case Observable::Rate: x.push_back(spec.physical.given() ? spec.physical.metres_per_second(v.rate) : v.rate); break;
       case Observable::Period: x.push_back(v.period); break;
       case Observable::Certified: x.insert(x.end(), {v.certified, v.certified_step}); break;
       case Observable::Region: x.insert(x.end(), {v.region, v.region_uniform, v.region_boxes, v.region_stop}); break;
     }
   }
+  if (spec.physical.given()) x.insert(x.end(), {spec.physical.friction(v.q_over_a), spec.physical.static_force(v.b_over_a)});
   return x;
 }
 

@@ -2,6 +2,7 @@
 #include "sweep/options.hpp"
 
 #include "dfchaos/errors.hpp"
+#include "dfchaos/units.hpp"
 #include "kit/format.hpp"
 #include "kit/options.hpp"
 #include "sweep/cell.hpp"
@@ -18,6 +19,13 @@ void SweepArguments::add_to(CLI::App* app) {
                   "forcing amplitude, " + format_shortest(kMinA) + " <= a <= " + format_shortest(kMaxA) +
                       ", and a*(q/a), a*(b/a) in the same range at every cell (default 1; only q/a and b/a matter)")
       ->type_name("FLOAT");
+  app->add_option("--physical", physical,
+                  "instead of --a: a drilling model in physical units, MASS (kg), OMEGA the forcing's angular frequency (rad/s),\n"
+                  "AMPLITUDE of the harmonic force (N); a = AMPLITUDE/(MASS OMEGA^2) m. The axes stay q/a = FRICTION/AMPLITUDE and\n"
+                  "b/a = STATIC/(2 AMPLITUDE); rate becomes rate_m_per_s, and friction_N, static_N are added (docs/units.md)")
+      ->expected(3)
+      ->type_name("MASS OMEGA AMPLITUDE")
+      ->excludes("--a");
   app->add_option("--q-range", q_range, "q/a axis lo:hi:n[:lin|log|mid] (every q/a > 0)")->required()->type_name("LO:HI:N[:KIND]");
   app->add_option("--b-range", b_range, "b/a axis lo:hi:n[:lin|log|mid] (every b/a in [" + format_shortest(kMinMapRatio) + ", 1/2))")
       ->required()
@@ -79,7 +87,8 @@ void SweepArguments::add_to(CLI::App* app) {
       "  covering     Lemma 4 / Theorem 1: two disjoint covering segments found (1) or not (0)\n"
       "  superstable  Theorem 2: T(t2) = t2 with superstable width epsilon > 0 (1) or not (0); then epsilon\n"
       "  lyapunov     mean ln|T'| over the averaged steps of the orbit (-inf when a step stops)\n"
-      "  rate         mean drilling speed over those steps (delimiter advance / elapsed time)\n"
+      "  rate         mean drilling speed over those steps (delimiter advance / elapsed time); rate_m_per_s with --physical\n"
+      "  friction_N, static_N   with --physical only: the cell's forces Q = (q/a) AMPLITUDE and P = 2 (b/a) AMPLITUDE\n"
       "  period       smallest k <= period-max with |T^k(e) - e| <= period-tol, e = T^(transient+steps)(theta_0); 0 if none\n"
       "  certified    Lemma 4 proved in ball arithmetic (Arb) at the cell's double parameters (1) or not proved (0):\n"
       "               a proof at that point, not over the cell (as 'dfchaos certify covering'); then certified_step,\n"
@@ -104,7 +113,14 @@ void SweepArguments::add_to(CLI::App* app) {
 RunOptions SweepArguments::resolve() const {
   RunOptions r;
   Spec& s = r.spec;
-  s.a = kit::parse_number("a", a, false);
+  if (physical.empty()) {
+    s.a = kit::parse_number("a", a, false);
+  } else {
+    s.physical = {.mass = kit::parse_number("mass", physical[0], false),
+                  .omega = kit::parse_number("omega", physical[1], false),
+                  .amplitude = kit::parse_number("amplitude", physical[2], false)};
+    s.a = length_scale(s.physical.mass, s.physical.omega, s.physical.amplitude);
+  }
   s.q_over_a = Range::parse("q-range", q_range);
   s.b_over_a = Range::parse("b-range", b_range);
   s.observables = ObservableSet::parse("observables", observables);

@@ -7,6 +7,7 @@
 
 #include "dfchaos/errors.hpp"
 #include "dfchaos/parameters.hpp"
+#include "dfchaos/units.hpp"
 #include "sweep/cell.hpp"
 
 namespace dfchaos::sweep {
@@ -30,6 +31,8 @@ void PeriodSettings::validate() const {
 }
 
 void Spec::validate() const {
+  if (physical.given() && !(a == length_scale(physical.mass, physical.omega, physical.amplitude)))
+    throw InvalidParameter("a", "give --a or --physical MASS OMEGA AMPLITUDE, not both (physical: a = AMPLITUDE/(MASS OMEGA^2))", a);
   if (!(a >= kMinA && a <= kMaxA))
     throw InvalidParameter("a", format_shortest(kMinA) + " <= a <= " + format_shortest(kMaxA) + " (the model's range)", a);
   if (q_over_a.size() < 1 || b_over_a.size() < 1) throw InvalidParameter("q-range", "both ranges are required");
@@ -95,6 +98,14 @@ void Spec::validate() const {
 std::vector<std::string> Spec::header_lines() const {
   std::vector<std::string> h;
   h.push_back("a = " + format_shortest(a));
+  if (physical.given()) {
+    h.push_back("physical = " + format_shortest(physical.mass) + " " + format_shortest(physical.omega) + " " + format_shortest(physical.amplitude) +
+                "  (mass kg, omega rad/s, amplitude N: a = amplitude/(mass omega^2) m; q_over_a = friction/amplitude, "
+                "b_over_a = static force/(2 amplitude); docs/units.md)");
+    h.emplace_back(
+        "units = rate_m_per_s = omega rate (m/s); friction_N = q_over_a amplitude, static_N = 2 b_over_a amplitude (N); "
+        "epsilon in radians of the forcing");
+  }
   h.push_back("q_over_a = " + q_over_a.canonical());
   h.push_back("b_over_a = " + b_over_a.canonical());
   h.push_back("observables = " + observables.canonical());
@@ -136,7 +147,8 @@ std::vector<std::string> Spec::header_lines() const {
 
 std::vector<std::string> Spec::columns() const {
   std::vector<std::string> c = {"index", "q_over_a", "b_over_a", "status"};
-  for (auto& name : observables.columns()) c.push_back(name);
+  for (auto& name : observables.columns()) c.push_back(physical.given() && name == "rate" ? "rate_m_per_s" : name);
+  if (physical.given()) c.insert(c.end(), {"friction_N", "static_N"});
   c.emplace_back("error");
   return c;
 }

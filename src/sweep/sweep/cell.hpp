@@ -159,8 +159,9 @@ CellValues evaluate_cell(const Spec& spec, long long index);
 /// when it has none.
 std::string error_field(const CellValues& v);
 
-/// The values of the observables' columns of a cell, in the order of Spec::columns() (between status
-/// and error): what a row holds and the Python module returns.
+/// The values of the columns of a cell between status and error, in the order of Spec::columns():
+/// the observables' (rate times omega with --physical), then with --physical friction_N and static_N.
+/// What a row holds and the Python module returns.
 std::vector<double> observable_values(const Spec& spec, const CellValues& v);
 /// The row of a cell: the spec's columns, tab-separated, numbers in %.17g, ending in '\n'.
 std::string format_row(const Spec& spec, const CellValues& v);

@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 
 #include <string>
+#include <vector>
 
 #include "sweep/run.hpp"
 
@@ -17,7 +18,8 @@ struct SweepArguments {
   std::string a = "1", q_range, b_range, observables = kDefaultObservables;
   std::string max_branches = std::to_string(kDefaultMaxCoveringBranches);
   std::string superstable_scan = "400", theta0 = "0.5", transient = "1000", steps = "1000";
-  std::string old_theta0;  ///< --theta0, refused (the start is --theta0-fraction)
+  std::vector<std::string> physical;  ///< --physical MASS OMEGA AMPLITUDE, as typed (empty: not given)
+  std::string old_theta0;             ///< --theta0, refused (the start is --theta0-fraction)
   std::string period_max = "64", period_tol = "1e-9";
   std::string region_max_boxes = std::to_string(kDefaultRegionBoxes);
   std::string max_proofs = std::to_string(kDefaultMaxProofs);

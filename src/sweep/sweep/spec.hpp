@@ -72,9 +72,24 @@ struct PeriodSettings {
   void validate() const;
 };
 
+/// A sweep of a drilling model in physical units (`--physical MASS OMEGA AMPLITUDE`, docs/units.md):
+/// the length a = AMPLITUDE/(MASS OMEGA^2) (units.hpp's length_scale), the axes unchanged but read as
+/// q/a = FRICTION/AMPLITUDE and b/a = STATIC/(2 AMPLITUDE), the rate in m/s, the two forces added to
+/// each row in newtons. Not given (all 0): the paper's units.
+struct PhysicalScale {
+  double mass = 0;                                                                 ///< m (kg)
+  double omega = 0;                                                                ///< the forcing's angular frequency (rad/s)
+  double amplitude = 0;                                                            ///< F0, the harmonic force's amplitude (N)
+  bool given() const { return amplitude > 0; }                                     ///< whether the sweep is in physical units
+  double metres_per_second(double rate) const { return omega * rate; }             ///< a rate (length per unit of t) in m/s
+  double friction(double q_over_a) const { return q_over_a * amplitude; }          ///< Q = (q/a) F0 (N)
+  double static_force(double b_over_a) const { return 2 * b_over_a * amplitude; }  ///< P = 2 (b/a) F0 (N)
+};
+
 /// A sweep of the (q/a, b/a) plane.
 struct Spec {
   double a = 1;                      ///< the forcing amplitude (the dynamics depend only on q/a and b/a)
+  PhysicalScale physical;            ///< --physical: a from it, the rate in m/s and the forces added
   Range q_over_a;                    ///< first axis (slowest)
   Range b_over_a;                    ///< second axis
   ObservableSet observables;         ///< what each cell computes
