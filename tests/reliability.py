@@ -221,7 +221,10 @@ else:
     r = run("certify", "discontinuities", "--a", "1", "--b", "1e-9", "--max-memory", "0.25", "--max-seconds", "600", timeout=700)
     check(one_line_error(r, 1, "memory budget of 0.25 GiB") and r.stdout == b"",
           "28.6 certify discontinuities at b/a = 1e-9 with --max-memory 0.25: gave up, exit 1, one line")
-    r = run("certify", "discontinuities", "--a", "1", "--b", "1e-9", preexec_fn=limited(resource.RLIMIT_AS, 256 << 20))
+    # (--max-seconds 600 here too: on a busy machine the default time budget of 60 s could end the run
+    # before the address space runs out)
+    r = run("certify", "discontinuities", "--a", "1", "--b", "1e-9", "--max-seconds", "600", timeout=700,
+            preexec_fn=limited(resource.RLIMIT_AS, 256 << 20))
     check(one_line_error(r, 1, "set outside dfchaos") and r.stdout == b"", "28.6 under a lower ulimit -v: the give-up line names that limit")
     # Memory running out in a sweep cell ends the run (exit 1), never a sealed 'error' cell.
     r = run("sweep", "--q-range", "0.85:0.85:1", "--b-range", "1e-8:1e-8:1", "--observables", "covering", "--max-branches", "100000000",

@@ -30,7 +30,7 @@ TAG = "SPDX-License-Identifier: GPL-3.0-or-later"
 HEAD_LINES = 3
 
 C_LIKE = {".cpp", ".hpp", ".h"}
-HASH = {".py", ".sh", ".gp", ".cmake", ".yml", ".yaml"}
+HASH = {".py", ".sh", ".gp", ".cmake", ".yml", ".yaml", ".toml"}
 TEX = {".tex", ".sty"}
 HASH_NAMES = {"CMakeLists.txt", "Makefile", "run", ".clang-format", ".clang-tidy"}  # run: .ci/run; .clang-* are YAML
 EXEMPT_SUFFIXES = {".md", ".json", ".cff"}
