@@ -22,26 +22,7 @@ using namespace dfchaos;
 using namespace dfchaos::kit;
 
 namespace {
-/// One interval of b/a on which t2 is superstable: consecutive pieces of superstable_windows() that
-/// share an end, joined (the index of its first and one past its last piece).
-struct JoinedInterval {
-  double b_lo = 0, b_hi = 0;
-  std::size_t first = 0, last = 0;
-  bool has21 = false, has22 = false;
-};
-
-std::vector<JoinedInterval> join_pieces(const std::vector<SuperstableWindow>& w) {
-  std::vector<JoinedInterval> out;
-  for (std::size_t i = 0; i < w.size(); ++i) {
-    if (out.empty() || out.back().b_hi != w[i].b_lo) out.push_back({w[i].b_lo, w[i].b_hi, i, i, false, false});
-    JoinedInterval& j = out.back();
-    j.b_hi = w[i].b_hi;
-    j.last = i + 1;
-    (w[i].condition == 21 ? j.has21 : j.has22) = true;
-  }
-  return out;
-}
-// The two lines of q/a the report shows (figures fig_windows, fig_theta2_arcs and the text read them
+// The two lines of q/a the report shows (figure fig_theta2_arcs and the text read them
 // from this experiment's macros): one inside assumption (2), one below sin(vartheta0), where (2) fails.
 constexpr double kShownQ = 0.85;
 constexpr double kOutsideQ = 0.6;
@@ -84,13 +65,13 @@ const Experiment experiment{
       for (double qa : run.reals("q")) {
         const auto w = superstable_windows(1.0, qa, b_lo, b_hi, samples);
         const auto w4 = superstable_windows(1.0, qa, b_lo, b_hi, 4 * samples);
-        const auto joined = join_pieces(w), joined4 = join_pieces(w4);
+        const auto joined = join_windows(w), joined4 = join_windows(w4);
         if (w4.size() != w.size() || joined4.size() != joined.size()) ++unstable_count;
         long long n21 = 0, n22 = 0, n_joined = 0;
         double eps_min = INFINITY, widest = 0;
         const bool eq2 = qa > s0 && qa < 1;
         for (std::size_t k = 0; k < joined.size(); ++k) {
-          const JoinedInterval& J = joined[k];
+          const SuperstableInterval& J = joined[k];
           if (J.has21 && J.has22) ++n_joined;
           if (J.has21) ++all_21;
           if (eq2)

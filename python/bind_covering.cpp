@@ -8,6 +8,8 @@
 #include <string>
 
 #include "convert.hpp"
+#include "dfchaos/certified/periodic.hpp"
+#include "dfchaos/continuation.hpp"
 #include "dfchaos/covering.hpp"
 #include "dfchaos/errors.hpp"
 #include "dfchaos/phase.hpp"
@@ -174,6 +176,53 @@ Lemma 4's J0 (letter 0) and J1 (letter 1), word primitive of 1 to 1000 letters (
 len(word)). Returns word, x (x_(j+1) = T(x_j)), T (T(x_j) as computed), log_multiplier
 (ln|(T^m)'(x_0)|), max_step_residual, precision_floor and itinerary_ok; errors as the tool's.
 certify("periodic", p, word=word) encloses it in ball arithmetic.)doc");
+  m.def(
+      "follow_orbit",
+      [](const Parameters& p, const std::string& word, double b_end, double step, double min_step, long long max_steps, bool certify) {
+        p.require_return_map();
+        require_itinerary_word("word", word, kMaxContinuedPeriod);
+        ContinuationSettings s;
+        s.step = finite("step", step);
+        s.min_step = finite("min-step", min_step);
+        s.max_steps = max_steps;
+        s.validate();
+        Parameters(p.a(), finite("to", b_end), p.q()).require_return_map();
+        const auto [br, proved] = interruptible([&] {
+          const ItineraryOrbit start = periodic_orbit(p, word);
+          OrbitBranch b = follow_periodic_orbit(p.a(), p.q(), p.b(), start.x, b_end, s);
+          std::vector<int> c = certify ? certified::prove_branch_steps(p.a(), p.q(), b) : std::vector<int>(b.points.size(), -1);
+          return std::pair{std::move(b), std::move(c)};
+        });
+        const auto n = static_cast<py::ssize_t>(br.points.size()), m = static_cast<py::ssize_t>(word.size());
+        py::array_t<double> b({n}), lm({n}), res({n}), x({n, m});
+        py::array_t<int> cert({n});
+        for (py::ssize_t k = 0; k < n; ++k) {
+          const BranchPoint& pt = br.points[static_cast<std::size_t>(k)];
+          b.mutable_at(k) = pt.b;
+          lm.mutable_at(k) = pt.log_multiplier;
+          res.mutable_at(k) = pt.residual;
+          cert.mutable_at(k) = proved[static_cast<std::size_t>(k)];
+          for (py::ssize_t j = 0; j < m; ++j) x.mutable_at(k, j) = pt.x[static_cast<std::size_t>(j)];
+        }
+        py::dict d;
+        d["b"] = b;
+        d["certified"] = cert;
+        d["log_multiplier"] = lm;
+        d["residual"] = res;
+        d["x"] = x;
+        d["end"] = std::string(branch_end_name(br.end));
+        d["end_point"] = br.end_point;
+        d["b_lost"] = br.b_lost;
+        d["detail"] = br.detail;
+        return d;
+      },
+      py::arg("p"), py::arg("word"), py::arg("b_end"), py::kw_only(), py::arg("step") = ContinuationSettings{}.step,
+      py::arg("min_step") = ContinuationSettings{}.min_step, py::arg("max_steps") = ContinuationSettings{}.max_steps, py::arg("certify") = false,
+      R"doc(follow_orbit(p, word, b_end, *, step=1e-3, min_step=1e-12, max_steps=10000, certify=False) -> dict
+
+`dfchaos continue` (to the last bit): the orbit periodic_orbit(p, word) followed in b to b_end until it
+ends. Returns the tool's columns b, certified (1/0 per interval from the row before; -1 none),
+log_multiplier, residual and x (one row per b), and end, end_point, b_lost, detail as its # lines.)doc");
 }
 
 }  // namespace dfchaos::python

@@ -25,6 +25,7 @@ The return map (Lemma 3), elementwise over array-likes:
 One orbit (theta0 a phase in [t2, t3)):
   orbit(p, theta0, steps)          T^n(theta0) with the columns of `dfchaos orbit`
   periodic_orbit(p, word)          the periodic orbit of itinerary (word)^infinity (Section 6)
+  follow_orbit(p, word, b_end)     that orbit followed in b to where it ends (dfchaos continue)
   lyapunov(p, theta0, steps, transient), rate(...), period(...)
                                    as a cell of `dfchaos sweep`; theta0=None: the sweep's default
                                    start, the arc's midpoint

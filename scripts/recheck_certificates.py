@@ -98,6 +98,7 @@ REQUIRED_STATEMENT = [
     (r"cert\.sec6\.periodic\.", "periodic"),
     (r"cert\.sec7\.entropy_graph\.", "entropy"),
     (r"cert\.thm2\.window\d+$", "window"),
+    (r"cert\.thm2\.all_windows$", "window"),
     (r"cert\.thm2\.outside$", "not_superstable"),
     (r"cert\.thm2\.erratum$", "theorem2_counterexample"),
     (r"cert\.lemma1\.b0_grid$", "b0"),
@@ -144,6 +145,11 @@ def bind(path, cert, claim, part):
         recs = {f"q{float(r['parameters']['q_over_a'][0]):.2f}": r for r in ev["columns"]}
         if part not in recs:
             return f"part '{part}' is none of the claim's columns ({', '.join(recs)})"
+        rec = recs[part]
+    elif "windows" in ev and cert.get("statement") == "window":  # one certificate per window, named by its number
+        recs = {f"w{int(r['window']):03d}": r for r in ev["windows"]}
+        if part not in recs:
+            return f"part '{part}' is none of the claim's windows"
         rec = recs[part]
     elif part is not None:
         return f"part '{part}' given, but the claim rests on one proof"

@@ -17,12 +17,14 @@
 #include "dfchaos/certified/arc_l1.hpp"
 #include "dfchaos/certified/bisect.hpp"
 #include "dfchaos/certified/lemma4_uniform.hpp"
+#include "dfchaos/certified/periodic.hpp"
 #include "dfchaos/certified/rectangle.hpp"
 #include "dfchaos/certified/region.hpp"
 #include "dfchaos/next_hit.hpp"
 #include "dfchaos/progression_stop.hpp"
 #include "dfchaos/return_map.hpp"
 #include "dfchaos/superstable.hpp"
+#include "dfchaos/symbolic.hpp"
 
 using namespace dfchaos;
 using namespace dfchaos::certified;
@@ -508,4 +510,31 @@ TEST(CertifiedRectangle, BoxesAboveTheBoundAndGivingUpBeyondTheCovering) {
   EXPECT_EQ(r.boxes_failed, 3);
   EXPECT_EQ(r.stop, RectangleStop::FailedRun);
   EXPECT_LT(r.b_reached, 0.031);
+}
+
+TEST(CertifiedContinuation, EveryStepOfAFollowedOrbitIsProvedAndAFalseCycleIsNot) {
+  // The orbit of itinerary (001)^infinity followed from b/a = 3e-3 up to 3.05e-3: for every b between
+  // two consecutive rows a cycle exists in the boxes (covering relations over the b-interval).
+  const double q = 0.85, b0 = 3e-3;
+  const ItineraryOrbit start = periodic_orbit(Parameters(1.0, b0, q), "001");
+  const OrbitBranch br = follow_periodic_orbit(1.0, q, b0, start.x, 3.05e-3);
+  ASSERT_GE(br.points.size(), 3U);
+  const std::vector<int> proved = prove_branch_steps(1.0, q, br);
+  ASSERT_EQ(proved.size(), br.points.size());
+  EXPECT_EQ(proved[0], -1);
+  for (std::size_t k = 1; k < proved.size(); ++k) EXPECT_EQ(proved[k], 1) << "step " << k << " b=" << br.points[k].b;
+  // The boxes contain the floating cycle at every row of the interval's ends.
+  const CycleIntervalProof c = prove_cycle_on_interval(1.0, q, br.points[0].b, br.points[1].b, br.points[0].x, br.points[1].x);
+  ASSERT_TRUE(c.verdict.proved);
+  for (std::size_t j = 0; j < 3; ++j) {
+    EXPECT_TRUE(c.X[j].contains(br.points[0].x[j]));
+    EXPECT_TRUE(c.X[j].contains(br.points[1].x[j]));
+  }
+  // Not a cycle: x_1 and x_2 exchanged. The relations fail (or T is not continuous on the widened boxes).
+  std::vector<double> swapped = br.points[0].x;
+  std::swap(swapped[1], swapped[2]);
+  EXPECT_FALSE(prove_cycle_on_interval(1.0, q, br.points[0].b, br.points[1].b, swapped, swapped).verdict.proved);
+  // Bad input is refused without a proof.
+  EXPECT_FALSE(prove_cycle_on_interval(1.0, q, 3.1e-3, 3e-3, br.points[0].x, br.points[1].x).verdict.proved);
+  EXPECT_FALSE(prove_cycle_on_interval(1.0, q, 3e-3, 3.1e-3, br.points[0].x, {1.0}).verdict.proved);
 }

@@ -9,6 +9,8 @@
 #include <utility>
 #include <vector>
 
+#include "dfchaos/continuation.hpp"
+#include "dfchaos/errors.hpp"
 #include "dfchaos/ode_map.hpp"
 #include "dfchaos/superstable.hpp"
 #include "dfchaos/symbolic.hpp"
@@ -94,6 +96,26 @@ TEST_F(Symbolic, AllWordsOfLengthEightAreRealised) {
   EXPECT_EQ(ok, 256);
 }
 
+TEST(Superstable, JoinWindowsJoinsExactlyTheWindowsThatShareAnEnd) {
+  EXPECT_TRUE(join_windows({}).empty());
+  const std::vector<SuperstableWindow> w = {{0.1, 0.2, 21}, {0.2, 0.25, 22}, {0.3, 0.4, 22}, {0.4, 0.5, 21}, {0.6, 0.7, 21}};
+  const auto j = join_windows(w);
+  ASSERT_EQ(j.size(), 3U);
+  EXPECT_EQ(j[0].b_lo, 0.1);
+  EXPECT_EQ(j[0].b_hi, 0.25);
+  EXPECT_TRUE(j[0].has21 && j[0].has22);
+  EXPECT_EQ(j[0].first, 0U);
+  EXPECT_EQ(j[0].last, 2U);
+  EXPECT_EQ(j[1].b_lo, 0.3);
+  EXPECT_EQ(j[1].b_hi, 0.5);
+  EXPECT_EQ(j[1].first, 2U);
+  EXPECT_EQ(j[1].last, 4U);
+  EXPECT_EQ(j[2].b_lo, 0.6);
+  EXPECT_TRUE(j[2].has21 && !j[2].has22);
+  // A gap of one ulp is a gap: only equal ends join.
+  EXPECT_EQ(join_windows({{0.1, 0.2, 21}, {std::nextafter(0.2, 1.0), 0.3, 22}}).size(), 2U);
+}
+
 TEST(Superstable, WindowsAgreeWithAPlainGridAndEpsilonWithAScan) {
   const double q = 0.85;
   const auto w = superstable_windows(1.0, q, 1e-3, 0.02, 2000);
@@ -114,4 +136,66 @@ TEST(Superstable, WindowsAgreeWithAPlainGridAndEpsilonWithAScan) {
   ASSERT_GT(c.epsilon, 0);
   for (int i = 0; i <= 100; ++i) EXPECT_EQ(T(p, *p.t2() + 0.99 * c.epsilon * i / 100), *p.t2());
   EXPECT_NE(T(p, *p.t2() + 1.01 * c.epsilon), *p.t2());
+}
+
+// ---- continuation.hpp: a periodic orbit followed in b --------------------------------------------
+
+TEST(Continuation, FollowedOrbitIsTheInverseBranchOrbitNearTheStart) {
+  // Newton's continuation and the inverse-branch solver of symbolic.hpp are independent routes to the
+  // orbit of itinerary w^infinity. The solver takes Lemma 4's J0, J1 as found at each b, which may
+  // jump to other segments farther away; within 1% of the start they are the same here, and so must
+  // the orbits be.
+  const double q = 0.85, b0 = 3e-3;
+  for (const std::string word : {"01", "001", "0111"}) {
+    const ItineraryOrbit start = periodic_orbit(Parameters(1.0, b0, q), word);
+    ContinuationSettings s;
+    s.step = 1e-3;
+    const OrbitBranch br = follow_periodic_orbit(1.0, q, b0, start.x, 3.03e-3, s);
+    EXPECT_EQ(br.end, BranchEnd::RangeEnd) << word << ": " << br.detail;
+    ASSERT_GE(br.points.size(), 5U) << word;
+    EXPECT_EQ(br.points.back().b, 3.03e-3);
+    for (std::size_t k = 0; k < br.points.size(); ++k) {
+      const BranchPoint& pt = br.points[k];
+      const ItineraryOrbit ref = periodic_orbit(Parameters(1.0, pt.b, q), word);
+      for (std::size_t j = 0; j < word.size(); ++j) EXPECT_NEAR(pt.x[j], ref.x[j], 1e-11) << word << " b=" << pt.b << " j=" << j;
+      EXPECT_NEAR(pt.log_multiplier, ref.log_expansion, 1e-6 * std::fabs(ref.log_expansion)) << word;
+      EXPECT_LE(pt.residual, 1e-10);
+    }
+  }
+}
+
+TEST(Continuation, EndsWhereItsEndIsLocatedToMinStep) {
+  const double q = 0.85, b0 = 3e-3;
+  const ItineraryOrbit start = periodic_orbit(Parameters(1.0, b0, q), "01");
+  // Up in b the orbit's x_0 nears t2, where T' tends to 0: the multiplier falls to 1, a fold.
+  for (double b_end : {0.2}) {
+    const OrbitBranch br = follow_periodic_orbit(1.0, q, b0, start.x, b_end);
+    ASSERT_EQ(br.end, BranchEnd::Fold) << branch_end_name(br.end) << ": " << br.detail;
+    EXPECT_LT(std::fabs(br.points.back().log_multiplier), kFoldLogMultiplier);
+    EXPECT_LT(br.points.back().x[0] - *Parameters(1.0, br.points.back().b, q).t2(), 1e-3);
+    const double last = br.points.back().b;
+    EXPECT_LE(std::fabs(br.b_lost - last), 1e-12 * last * (1 + 1e-12));
+    EXPECT_NE(br.b_lost, last);
+    // b is monotone towards b_end
+    for (std::size_t k = 1; k < br.points.size(); ++k) EXPECT_EQ(br.points[k].b > br.points[k - 1].b, b_end > b0);
+  }
+}
+
+TEST(Continuation, RefusesANonCycleAndBadSettings) {
+  const Parameters p(1.0, 3e-3, 0.85);
+  const ItineraryOrbit start = periodic_orbit(p, "01");
+  std::vector<double> outside = {*p.t3() + 0.1};
+  EXPECT_THROW(follow_periodic_orbit(1.0, 0.85, 3e-3, outside, 4e-3), InvalidParameter);
+  EXPECT_THROW(follow_periodic_orbit(1.0, 0.85, 3e-3, {}, 4e-3), InvalidParameter);
+  ContinuationSettings s;
+  s.step = 0;
+  EXPECT_THROW(follow_periodic_orbit(1.0, 0.85, 3e-3, start.x, 4e-3, s), InvalidParameter);
+  s = {};
+  s.min_step = 1e-2;  // above step
+  EXPECT_THROW(follow_periodic_orbit(1.0, 0.85, 3e-3, start.x, 4e-3, s), InvalidParameter);
+  s = {};
+  s.max_steps = 3;
+  const OrbitBranch br = follow_periodic_orbit(1.0, 0.85, 3e-3, start.x, 4e-3, s);
+  EXPECT_EQ(br.end, BranchEnd::StepBudget);
+  EXPECT_EQ(br.points.size(), 4U);
 }

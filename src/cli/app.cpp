@@ -86,9 +86,9 @@ int run_command(int argc, char** argv) {
       "theta0-fraction a fraction f of the arc, theta0 = t2 + f (t3 - t2) (sweep); a range is LO:HI:N[:lin|log|mid]\n"
       "with both ends included (sweep's axes, map --grid), or one value x (= x:x:1); orbit steps and transients are\n"
       "at most 1e8 (orbit, sweep); -a -b -q are --a --b --q.");
-  const std::vector<Command> commands = {add_info(app),     add_map(app),        add_orbit(app),      add_orbit_diagram(app),
-                                         add_periodic(app), add_simulate(app),   add_provenance(app), add_certify_command(app),
-                                         add_sweep(app),    add_sweep_merge(app)};
+  const std::vector<Command> commands = {add_info(app),       add_map(app),      add_orbit(app),      add_orbit_diagram(app),   add_periodic(app),
+                                         add_continue(app),   add_simulate(app), add_provenance(app), add_certify_command(app), add_sweep(app),
+                                         add_sweep_merge(app)};
 
   if (argc > 1 && argv[1][0] != '-') {
     const std::string sub = argv[1];

@@ -105,6 +105,7 @@ Command add_map(CLI::App& app);
 Command add_orbit(CLI::App& app);
 Command add_orbit_diagram(CLI::App& app);  ///< cmd_orbit_diagram.cpp
 Command add_periodic(CLI::App& app);       ///< cmd_periodic.cpp
+Command add_continue(CLI::App& app);       ///< cmd_continue.cpp
 Command add_simulate(CLI::App& app);
 Command add_provenance(CLI::App& app);
 Command add_certify_command(CLI::App& app);  ///< certify.cpp: proofs in ball arithmetic

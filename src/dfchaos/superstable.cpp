@@ -272,4 +272,32 @@ StopCycle stop_cycle(const Parameters& p, double image, long long max_steps, dou
 
 StopCycle t2_cycle(const Parameters& p, long long max_steps, double step_error) { return stop_cycle(p, p.t2_required(), max_steps, step_error); }
 
+std::vector<SuperstableInterval> join_windows(const std::vector<SuperstableWindow>& windows) {
+  std::vector<SuperstableInterval> out;
+  for (std::size_t i = 0; i < windows.size(); ++i) {
+    const SuperstableWindow& w = windows[i];
+    if (out.empty() || out.back().b_hi != w.b_lo) out.push_back({.b_lo = w.b_lo, .b_hi = w.b_hi, .first = i, .last = i});
+    SuperstableInterval& j = out.back();
+    j.b_hi = w.b_hi;
+    j.last = i + 1;
+    (w.condition == 21 ? j.has21 : j.has22) = true;
+  }
+  return out;
+}
+
+double sharpen_interval_end(double a, double q, double edge, bool lower) {
+  const auto fixed = [&](double b) {
+    const Parameters p(a, b, q);
+    return T(p, p.t2_required()) == p.t2_required();
+  };
+  double in = lower ? edge * (1 + 1e-10) : edge * (1 - 1e-10), out = lower ? edge * (1 - 1e-10) : edge * (1 + 1e-10);
+  if (!fixed(in) || fixed(out)) return edge;
+  for (int i = 0; i < 64; ++i) {  // each halving removes at least one bit of the bracket
+    const double mid = 0.5 * (in + out);
+    if (mid == in || mid == out) break;
+    (fixed(mid) ? in : out) = mid;
+  }
+  return in;
+}
+
 }  // namespace dfchaos

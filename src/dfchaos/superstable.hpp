@@ -11,6 +11,8 @@
 /// paper writes both as derivatives in \f$\theta\f$ of \f$G_1\f$; the second is of \f$G_2\f$.)
 #pragma once
 
+#include <cstddef>
+
 #include <vector>
 
 #include "dfchaos/parameters.hpp"
@@ -126,5 +128,28 @@ struct SuperstableWindow {
 /// bisected down to \f$10^{-12}\f$ relative width and the jump is an event too. Windows are the
 /// intervals between events where the condition holds at the midpoint.
 std::vector<SuperstableWindow> superstable_windows(double a, double q, double b_lo, double b_hi, int samples);
+
+/// A maximal interval of \f$b\f$ on which \f$T(t_2) = t_2\f$: consecutive windows of
+/// superstable_windows() that share an end, joined (a (21) window followed by a (22) one meet where
+/// \f$\theta_2(t_2)\f$ jumps from one stop arc to the other, and T(t2) = t2 on both sides).
+struct SuperstableInterval {
+  double b_lo = 0;        ///< left end
+  double b_hi = 0;        ///< right end
+  std::size_t first = 0;  ///< index of its first window in the list it was joined from
+  std::size_t last = 0;   ///< one past the index of its last window
+  bool has21 = false;     ///< a window of condition (21) is part of it
+  bool has22 = false;     ///< a window of condition (22) is part of it
+};
+
+/// The windows (sorted, as superstable_windows() returns them) joined into maximal intervals.
+std::vector<SuperstableInterval> join_windows(const std::vector<SuperstableWindow>& windows);
+
+/// The end of a superstable interval near `edge` (its lower end if `lower`), sharpened: bisection on
+/// whether the computed \f$T(t_2) = t_2\f$ at \f$(a, b, q)\f$, from a bracket of relative width
+/// \f$2\cdot10^{-10}\f$ around `edge` down to adjacent doubles (at most 64 halvings). Returns the last
+/// b where \f$T(t_2) = t_2\f$, or `edge` itself when the bracket's ends do not straddle an edge.
+/// superstable_windows() places its ends on the conditions (21), (22) to \f$10^{-12}\f$ relative;
+/// this is what a certified bracket of that width needs (thm2_windows).
+double sharpen_interval_end(double a, double q, double edge, bool lower);
 
 }  // namespace dfchaos

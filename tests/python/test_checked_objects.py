@@ -49,6 +49,14 @@ def periodic_orbit_01(p):
         return None
 
 
+def follow_orbit_01(p):
+    """follow_orbit at p, as periodic_orbit_01 (its start is periodic_orbit)."""
+    try:
+        return dfchaos.follow_orbit(p, "01", 0.0101)
+    except dfchaos.InvalidParameter:
+        return None
+
+
 # Every use of a Parameters: its properties, its methods, pickling, every function taking one.
 USES = {
     **{f"property {name}": (lambda name: lambda p: getattr(p, name))(name)
@@ -72,6 +80,7 @@ USES = {
     "period": lambda p: dfchaos.period(p, steps=3, transient=0),
     "derivative": lambda p: dfchaos.derivative(p, 4.0),
     "periodic_orbit": periodic_orbit_01,
+    "follow_orbit": follow_orbit_01,
     "certify at a Parameters": lambda p: dfchaos.certify("covering", p),
 }
 

@@ -275,3 +275,53 @@ def test_periodic_orbit_refuses_as_the_tool(cli):
         dfchaos.certify("covering", p, word="01")
     # word is keyword-only: the arguments before it keep their places (segment is the sixth)
     assert "on L2" in dfchaos.certify("discontinuities", 1.0, 0.01, None, 0, "L2")["statement"]
+
+
+@pytest.mark.crossval
+def test_follow_orbit_equals_the_tool_and_ends_where_it_says(cli):
+    """dfchaos.follow_orbit equals `dfchaos continue` to the last bit (issue 52, item 2), every step's
+    interval is proved (--certify), and the end is a border collision located to --min-step."""
+    p = dfchaos.Parameters(1.0, 0.003, 0.85)
+    # (up to 0.00307: nearer to where this orbit ends, at b/a = 0.0030889, its multiplier falls and
+    # the steps are no longer all proved)
+    f = dfchaos.follow_orbit(p, "011", 0.00307, certify=True)
+    rc, out, err = cli.run("continue", "--b", "0.003", "--q", "0.85", "--word", "011", "--to", "0.00307", "--certify")
+    assert rc == 0, err
+    lines = out.splitlines()
+    header = lines[0].split("\t")
+    rows = [l.split("\t") for l in lines[1:] if not l.startswith("#")]
+    assert header == ["b", "certified", "log_multiplier", "residual", "x0", "x1", "x2"]
+    assert_bits("b", f["b"], floats([r[0] for r in rows]))
+    assert_bits("log_multiplier", f["log_multiplier"], floats([r[2] for r in rows]))
+    for j in range(3):
+        assert_bits(f"x{j}", f["x"][:, j], floats([r[4 + j] for r in rows]))
+    assert [r[1] for r in rows] == ["-"] + ["1"] * (len(rows) - 1) and list(f["certified"]) == [-1] + [1] * (len(rows) - 1)
+    assert f["end"] == "range_end" and "# end = range_end" in lines and f["b"][-1] == 0.00307
+    # followed far up in b, the orbit ends in a border collision, named, located to 1e-12 relative
+    g = dfchaos.follow_orbit(p, "011", 0.2)
+    assert g["end"] in ("plateau", "reaches_t2", "reaches_t3", "grazing", "fold"), g["detail"]
+    assert abs(g["b_lost"] - g["b"][-1]) <= 1e-12 * g["b"][-1] * (1 + 1e-12)
+    _, out, _ = cli.run("continue", "--b", "0.003", "--q", "0.85", "--word", "011", "--to", "0.2")
+    assert f"# end = {g['end']}" in out.splitlines()
+    # the end is real: just past it the continued cycle is lost (its point's step is no longer smooth on
+    # its branch), and the last row is a cycle of T to its residual
+    last = dfchaos.Parameters(1.0, g["b"][-1], 0.85)
+    x = g["x"][-1]
+    for j in range(3):
+        assert abs(dfchaos.T(last, x[j]) - x[(j + 1) % 3]) <= 1e-9
+
+
+@pytest.mark.failure
+def test_follow_orbit_refuses_as_the_tool(cli):
+    p = dfchaos.Parameters(1.0, 0.003, 0.85)
+    for kw, opts in (({"step": 0.5}, ["--step", "0.5"]), ({"min_step": 1.0}, ["--min-step", "1"]), ({"max_steps": 0}, ["--max-steps", "0"])):
+        with pytest.raises(dfchaos.InvalidParameter) as e:
+            dfchaos.follow_orbit(p, "01", 0.004, **kw)
+        assert str(e.value) == cli.error("continue", "--b", "0.003", "--q", "0.85", "--word", "01", "--to", "0.004", *opts)
+    for word in ("0101", "0" * 65):
+        with pytest.raises(dfchaos.InvalidParameter) as e:
+            dfchaos.follow_orbit(p, word, 0.004)
+        assert str(e.value) == cli.error("continue", "--b", "0.003", "--q", "0.85", "--word", word, "--to", "0.004")
+    with pytest.raises(dfchaos.InvalidParameter) as e:
+        dfchaos.follow_orbit(p, "01", 0.6)
+    assert str(e.value) == cli.error("continue", "--b", "0.003", "--q", "0.85", "--word", "01", "--to", "0.6")

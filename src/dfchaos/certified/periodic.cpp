@@ -5,12 +5,14 @@
 
 #include <arb_mat.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <optional>
 
 #include "dfchaos/bisect.hpp"
 #include "dfchaos/certified/oracle.hpp"
+#include "dfchaos/stop.hpp"
 
 namespace dfchaos::certified {
 
@@ -244,6 +246,88 @@ PeriodicProof prove_periodic(const CoveringProof& cov, const std::string& word, 
     if (!rel) r.unrecorded = rel.describe();
   }
   return finish(Outcome::ok());
+}
+
+namespace {
+
+/// One piece of prove_cycle_on_interval(): the boxes around the two cycles, radius grown until proved.
+CycleIntervalProof prove_cycle_piece(double a, double q, double b_lo, double b_hi, const std::vector<double>& x_lo, const std::vector<double>& x_hi) {
+  CycleIntervalProof r;
+  const ParameterBalls m(ParameterBox{a, b_lo, b_hi, q, q});
+  if (Outcome v = m.admissible(); !v) {
+    r.verdict = v;
+    return r;
+  }
+  double spread = 0;
+  for (std::size_t j = 0; j < x_lo.size(); ++j) spread = std::max(spread, std::fabs(x_hi[j] - x_lo[j]));
+  // T' is large on these orbits, so the ends of X_j need only be a little beyond the two points:
+  // from 1% of the spread up (x4 each time, at most 10 times the spread).
+  r.radius = 0.01 * spread + 1e-13;
+  Outcome last;
+  for (int attempt = 0; attempt < 6; ++attempt, r.radius *= 4) {
+    poll_stop();
+    r.X.clear();
+    for (std::size_t j = 0; j < x_lo.size(); ++j)
+      r.X.push_back(Ball::hull(Ball(std::min(x_lo[j], x_hi[j])) - Ball(r.radius), Ball(std::max(x_lo[j], x_hi[j])) + Ball(r.radius)));
+    last = covering_relations(m, r.X, r.boxes);
+    if (last) {
+      r.verdict = Outcome::ok();
+      return r;
+    }
+  }
+  r.verdict = last;
+  return r;
+}
+
+}  // namespace
+
+CycleIntervalProof prove_cycle_on_interval(double a, double q, double b_lo, double b_hi, const std::vector<double>& x_lo,
+                                           const std::vector<double>& x_hi) {
+  if (x_lo.empty() || x_lo.size() != x_hi.size() || x_lo.size() > 64 || !(b_lo <= b_hi)) {
+    CycleIntervalProof r;
+    r.verdict = Outcome::fail("cycle: input", "two cycles of the same length 1..64 and b_lo <= b_hi");
+    return r;
+  }
+  // Halves of the interval (at most kCyclePieceDepth times), the cycle at a cut interpolated
+  // linearly: its distance to the true cycle (the curvature of x(b)) is covered by the radius.
+  struct Piece {
+    double lo, hi;
+    std::vector<double> x_lo, x_hi;
+    int depth;
+  };
+  std::vector<Piece> stack{{b_lo, b_hi, x_lo, x_hi, 0}};
+  CycleIntervalProof first;
+  int pieces = 0;
+  while (!stack.empty()) {
+    Piece pc = std::move(stack.back());
+    stack.pop_back();
+    CycleIntervalProof r = prove_cycle_piece(a, q, pc.lo, pc.hi, pc.x_lo, pc.x_hi);
+    if (r.verdict) {
+      if (pieces++ == 0) first = std::move(r);
+      continue;
+    }
+    const double mid = 0.5 * (pc.lo + pc.hi);
+    if (pc.depth >= kCyclePieceDepth || !(mid > pc.lo && mid < pc.hi)) {
+      r.pieces = pieces;
+      return r;
+    }
+    std::vector<double> x_mid(pc.x_lo.size());
+    for (std::size_t j = 0; j < x_mid.size(); ++j) x_mid[j] = 0.5 * (pc.x_lo[j] + pc.x_hi[j]);
+    stack.push_back({mid, pc.hi, x_mid, pc.x_hi, pc.depth + 1});
+    stack.push_back({pc.lo, mid, pc.x_lo, std::move(x_mid), pc.depth + 1});
+  }
+  first.pieces = pieces;
+  return first;
+}
+
+std::vector<int> prove_branch_steps(double a, double q, const OrbitBranch& branch) {
+  std::vector<int> proved(branch.points.size(), -1);
+  for (std::size_t k = 1; k < branch.points.size(); ++k) {
+    const BranchPoint &u = branch.points[k - 1], &v = branch.points[k];
+    const bool up = u.b <= v.b;
+    proved[k] = prove_cycle_on_interval(a, q, up ? u.b : v.b, up ? v.b : u.b, up ? u.x : v.x, up ? v.x : u.x).verdict.proved ? 1 : 0;
+  }
+  return proved;
 }
 
 }  // namespace dfchaos::certified

@@ -33,6 +33,7 @@
 
 #include "dfchaos/certified/covering.hpp"
 #include "dfchaos/certified/return_map.hpp"
+#include "dfchaos/continuation.hpp"
 
 namespace dfchaos::certified {
 
@@ -76,5 +77,35 @@ PeriodicProof prove_periodic(const CoveringProof& cov, int period, const Periodi
 /// of J0, J1 along the word) and the same enclosure; its least period is the word's length, since J0
 /// and J1 are disjoint and the word is no power of a shorter one. Another word fails the proof, naming it.
 PeriodicProof prove_periodic(const CoveringProof& cov, const std::string& word, const PeriodicOptions& opt = {});
+
+/// A cycle of T for every b of an interval (a, q fixed): the cycle that continuation.hpp follows in
+/// floating point, proved to exist over one of its steps.
+struct CycleIntervalProof {
+  Outcome verdict;                   ///< proved: for every b in [b_lo, b_hi], a point x with \f$T^j x \in X_j\f$, \f$T^m x = x\f$
+  std::vector<Ball> X;               ///< the boxes \f$X_0, \dots, X_{m-1}\f$ (the same for every b of the interval)
+  double radius = 0;                 ///< how far each \f$X_j\f$ reaches beyond the two floating points
+  std::vector<OrbitBoxProof> boxes;  ///< the covering relations over the parameter box (witnesses)
+  int pieces = 0;                    ///< the pieces of b proved (X, radius, boxes: those of the first piece)
+};
+
+/// prove_cycle_on_interval() halves an interval of b at most this many times (up to 32 pieces).
+inline constexpr int kCyclePieceDepth = 5;
+
+/// Proves a cycle for every b in [b_lo, b_hi] by the covering relations of the file comment over the
+/// parameter box \f$\{a\} \times [b_{lo}, b_{hi}] \times \{q\}\f$: T continuous (scenario A) on each
+/// \f$X_j\f$ and its ends mapped to opposite sides outside \f$X_{j+1}\f$, for every b at once. \f$X_j\f$ is
+/// the hull of x_lo[j] and x_hi[j] (the floating cycles at the two ends) widened by a radius r, from
+/// \f$r = 0.01\max_j|x^{hi}_j - x^{lo}_j| + 10^{-13}\f$, grown x4 up to 5 times until the relations hold
+/// (where \f$|T'| \gg 1\f$ a small r suffices, and a large one would reach the next break of T). Where
+/// that fails the interval is halved (at most kCyclePieceDepth times), the cycle at a cut taken halfway
+/// between the two given ones: each piece is proved on its own, the radius covering how far the true
+/// cycle is from that guess (a guess only chooses the boxes; the proof does not rest on it).
+CycleIntervalProof prove_cycle_on_interval(double a, double q, double b_lo, double b_hi, const std::vector<double>& x_lo,
+                                           const std::vector<double>& x_hi);
+
+/// prove_cycle_on_interval() over every step of a followed orbit (continuation.hpp): entry k is 1 if
+/// the cycle exists for every b between points k - 1 and k of `branch`, 0 if that is not proved, -1
+/// for k = 0 (no interval).
+std::vector<int> prove_branch_steps(double a, double q, const OrbitBranch& branch);
 
 }  // namespace dfchaos::certified
