@@ -139,8 +139,7 @@ const Experiment experiment{
       const double q = run.real("q"), b_lo = run.real("b-lo"), b_hi = run.real("b-hi");
       const long long grid = run.count("grid");
       if (!(b_hi > b_lo)) throw InvalidParameter("b-hi", "b-hi > b-lo = " + format_double(b_lo), b_hi);
-      const std::vector<SuperstableInterval> windows =
-          join_windows(superstable_windows(1.0, q, b_lo, b_hi, static_cast<int>(run.count("samples"))));
+      const std::vector<SuperstableInterval> windows = join_windows(superstable_windows(1.0, q, b_lo, b_hi, static_cast<int>(run.count("samples"))));
       const std::size_t n = windows.size();
       std::vector<certified::WindowProof> proofs(n);
 #pragma omp parallel for schedule(dynamic)
@@ -149,9 +148,9 @@ const Experiment experiment{
         proofs[k] = certified::prove_window(1.0, q, lo, hi, kProveRel, true);
       }
 
-      Table t({"window", "b_float_lo", "b_float_hi", "conditions", "proved", "left_out", "left_in", "right_in", "right_out", "left_rel",
-               "right_rel", "min_eps", "boxes", "left_kind", "right_kind", "left_T1_jump", "right_T1_jump", "left_v_out",
-               "right_v_out", "centre_a_over_b", "width_a_over_b"});
+      Table t({"window",     "b_float_lo",   "b_float_hi",    "conditions", "proved",      "left_out",        "left_in",
+               "right_in",   "right_out",    "left_rel",      "right_rel",  "min_eps",     "boxes",           "left_kind",
+               "right_kind", "left_T1_jump", "right_T1_jump", "left_v_out", "right_v_out", "centre_a_over_b", "width_a_over_b"});
       Json records = Json::array();
       long long proved = 0, narrow = 0;
       long long kind_count[5] = {0, 0, 0, 0, 0};  // plateau_t2, plateau_t3, grazing_at_t3, grazing, unclassified
@@ -165,8 +164,27 @@ const Experiment experiment{
         rec.set("window", static_cast<long long>(k + 1));
         records.push(rec);
         if (!w.verdict.proved) {
-          t.row({static_cast<long long>(k + 1), j.b_lo, j.b_hi, conditions, 0LL, NAN, NAN, NAN, NAN, NAN, NAN, NAN, 0LL, std::string("-"),
-                 std::string("-"), NAN, NAN, NAN, NAN, NAN, NAN});
+          t.row({static_cast<long long>(k + 1),
+                 j.b_lo,
+                 j.b_hi,
+                 conditions,
+                 0LL,
+                 NAN,
+                 NAN,
+                 NAN,
+                 NAN,
+                 NAN,
+                 NAN,
+                 NAN,
+                 0LL,
+                 std::string("-"),
+                 std::string("-"),
+                 NAN,
+                 NAN,
+                 NAN,
+                 NAN,
+                 NAN,
+                 NAN});
           continue;
         }
         ++proved;
@@ -175,11 +193,7 @@ const Experiment experiment{
         if (left_rel <= kEdgeRel && right_rel <= kEdgeRel) ++narrow;
         const EdgeKind L = edge_kind(q, w.left_in, w.left_out), R = edge_kind(q, w.right_in, w.right_out);
         for (const EdgeKind* e : {&L, &R}) {
-          const int idx = e->kind == "plateau_t2"      ? 0
-                          : e->kind == "plateau_t3"    ? 1
-                          : e->kind == "grazing_at_t3" ? 2
-                          : e->kind == "grazing"       ? 3
-                                                       : 4;
+          const int idx = e->kind == "plateau_t2" ? 0 : e->kind == "plateau_t3" ? 1 : e->kind == "grazing_at_t3" ? 2 : e->kind == "grazing" ? 3 : 4;
           ++kind_count[idx];
         }
         // In a/b the window is [1/right, 1/left]: centre and width from the inner interval.
@@ -190,8 +204,27 @@ const Experiment experiment{
         std::snprintf(part, sizeof part, "--w%03zu", k + 1);
         run.certificate(std::string("cert.thm2.all_windows") + part,
                         certify::certificate_text(certify::certificate_window(1.0, q, w, certify::statement_window())));
-        t.row({static_cast<long long>(k + 1), j.b_lo, j.b_hi, conditions, 1LL, w.left_out, w.left_in, w.right_in, w.right_out, left_rel,
-               right_rel, w.min_eps, static_cast<long long>(w.boxes), L.kind, R.kind, L.T1_jump, R.T1_jump, L.v_out, R.v_out, centre, width});
+        t.row({static_cast<long long>(k + 1),
+               j.b_lo,
+               j.b_hi,
+               conditions,
+               1LL,
+               w.left_out,
+               w.left_in,
+               w.right_in,
+               w.right_out,
+               left_rel,
+               right_rel,
+               w.min_eps,
+               static_cast<long long>(w.boxes),
+               L.kind,
+               R.kind,
+               L.T1_jump,
+               R.T1_jump,
+               L.v_out,
+               R.v_out,
+               centre,
+               width});
       }
       run.table("", t);
 
@@ -306,8 +339,8 @@ const Experiment experiment{
         };
         double spacing_c1 = NAN;
         std::tie(spacing_c0, spacing_c1) = fit_line(gx, gy);
-        law.row({std::string("spacing_a_over_b"), spacing_c0, spacing_c1, residual(gx, gy, spacing_c0, spacing_c1),
-                 static_cast<long long>(gx.size()), spacing_dev});
+        law.row({std::string("spacing_a_over_b"), spacing_c0, spacing_c1, residual(gx, gy, spacing_c0, spacing_c1), static_cast<long long>(gx.size()),
+                 spacing_dev});
         std::tie(width_c0, width_c1) = fit_line(wx, wy);
         law.row({std::string("width_a_over_b"), width_c0, width_c1, residual(wx, wy, width_c0, width_c1), static_cast<long long>(wx.size()), NAN});
       }

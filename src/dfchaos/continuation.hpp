@@ -57,10 +57,10 @@ inline constexpr double kFoldLogMultiplier = 0.3;
 
 /// One accepted point of a followed orbit.
 struct BranchPoint {
-  double b = 0;                    ///< the parameter
-  std::vector<double> x;           ///< the cycle \f$x_0, \dots, x_{m-1}\f$ (x_0 continued from the start's)
-  double log_multiplier = 0;       ///< \f$\sum_j \ln|T'(x_j)|\f$
-  double residual = 0;             ///< \f$\max_j |T(x_j) - x_{j+1}|\f$ after Newton
+  double b = 0;                     ///< the parameter
+  std::vector<double> x;            ///< the cycle \f$x_0, \dots, x_{m-1}\f$ (x_0 continued from the start's)
+  double log_multiplier = 0;        ///< \f$\sum_j \ln|T'(x_j)|\f$
+  double residual = 0;              ///< \f$\max_j |T(x_j) - x_{j+1}|\f$ after Newton
   std::vector<long long> branches;  ///< t1_branch of each point's step
 };
 
