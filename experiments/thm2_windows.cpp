@@ -370,11 +370,9 @@ const Experiment experiment{
       out.macro("WinCoveredPercent", 100 * width_c0 / spacing_c0, 2);
       out.macro("WinFitMaxRatio", format_shortest(kFitMaxRatio));
 
-      const std::string statement = "At q/a = " + format_shortest(q) + ", every interval of b/a in [" + format_shortest(b_lo) + ", " +
-                                    format_shortest(b_hi) +
-                                    "] on which the floating T(t2) = t2 is a superstability window proved in ball arithmetic over the whole "
-                                    "interval (statement window, one certificate each), both edges bracketed to a relative width of at most " +
-                                    format_shortest(kEdgeRel) + ".";
+      const std::string statement = "At q/a = " + format_shortest(q) + ", each floating interval of b/a in [" + format_shortest(b_lo) + ", " +
+                                    format_shortest(b_hi) + "] with T(t2) = t2 is a window proved in ball arithmetic, its edges bracketed to " +
+                                    format_shortest(kEdgeRel) + " relative.";
       auto& c = out.claim("cert.thm2.all_windows", "Theorem 2", EvidenceKind::Certified, statement).ours();
       c.parameter_object(Json::object().set("a", 1.0).set("q", q).set("b_over_a", Json::array().push(b_lo).push(b_hi)));
       c.evidence_object(Json::object()
@@ -386,9 +384,8 @@ const Experiment experiment{
       c.holds(n > 0 && proved == static_cast<long long>(n) && narrow == proved);
 
       out.claim("thm2.windows_grid", "Theorem 2", EvidenceKind::Sampled,
-                "On a grid of " + std::to_string(grid) +
-                    " b/a uniform in a/b (not used to find the windows), the floating T(t2) = t2 at every point inside a certified "
-                    "window and at no point outside the certified brackets.")
+                "An independent grid of " + std::to_string(grid) +
+                    " b/a has T(t2) = t2 at every point inside a proved window and at none outside the brackets.")
           .ours()
           .evidence("grid_points", grid)
           .evidence("grid_failed", grid_failed)
@@ -399,9 +396,7 @@ const Experiment experiment{
           .holds(grid_in_bad == 0 && grid_super_outside == 0 && grid_failed == 0);
 
       out.claim("thm2.window_edges", "Theorem 2", EvidenceKind::Sampled,
-                "Every certified window ends at each edge in a border collision: theta2(t2) leaves the stop plateau through t2 or "
-                "t3 (at t3 with a tangential contact of the flight from t2: a grazing), or T1(t2) jumps; read at the two ends of "
-                "each certified bracket.")
+                "Each proved window opens as theta2(t2) crosses t2 and closes as it crosses t3 (a grazing there) or as T1(t2) jumps.")
           .ours()
           .evidence("plateau_t2", kind_count[0])
           .evidence("plateau_t3", kind_count[1])
@@ -413,9 +408,7 @@ const Experiment experiment{
       out.macro("WinFollowedAtTwo", std::to_string(at_t2));
       out.macro("WinFollowedMet", std::to_string(at_t2_met));
       out.claim("thm2.windows_fixed_point", "Theorem 2", EvidenceKind::Sampled,
-                "Followed up in b (dfchaos continue: Newton's method on the cycle) from below each certified window, the fixed point "
-                "of T in Lemma 4's J1 that ends by reaching t2 ends inside the certified bracket of a window's left edge: there T(t2) "
-                "= t2 and t2 becomes the superstable fixed point of Theorem 2.")
+                "The fixed point of T in Lemma 4's J1, followed up in b, ends by reaching t2 inside a proved window's left bracket.")
           .ours()
           .evidence("followed", followed)
           .evidence("ends_at_t2", at_t2)

@@ -8,7 +8,7 @@
 # (c) The distance in a/b between consecutive windows, with 2 pi / |cos t2| (the growth of the flight
 #     time from t2, cos t2 = -sqrt(1 - (2b/a)^2)) and 2 pi.
 load figdir."/style.gp"
-set terminal cairolatex pdf input size 15cm,10.5cm
+set terminal cairolatex pdf input size 15cm,9cm
 set output "fig_thm2_windows.tex"
 win = data."/thm2_windows.tsv"
 law = data."/thm2_windows-law.tsv"
