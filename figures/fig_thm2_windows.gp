@@ -28,7 +28,7 @@ set grid noxtics noytics
 
 # ---- (a) the orbit diagram against a/b, a line at each certified window
 set lmargin at screen 0.09; set rmargin at screen 0.97
-set bmargin at screen 0.55; set tmargin at screen 0.9
+set bmargin at screen 0.6; set tmargin at screen 0.86
 set logscale x
 set xrange [C_min/1.15:C_max*1.15]
 set format x '$%g$'
@@ -44,7 +44,7 @@ plot win using (column("proved") == 1 ? column("centre_a_over_b") : NaN):(pi):(0
 unset label 1; unset key
 
 # ---- (b) widths in a/b
-set bmargin at screen 0.1; set tmargin at screen 0.42
+set bmargin at screen 0.1; set tmargin at screen 0.41
 set lmargin at screen 0.1; set rmargin at screen 0.47
 set xtics auto
 set ytics auto
