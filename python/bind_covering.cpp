@@ -194,8 +194,8 @@ certify("periodic", p, word=word) encloses it in ball arithmetic.)doc");
           return std::pair{std::move(b), std::move(c)};
         });
         const auto n = static_cast<py::ssize_t>(br.points.size()), m = static_cast<py::ssize_t>(word.size());
-        py::array_t<double> b({n}), lm({n}), res({n}), x({n, m});
-        py::array_t<int> cert({n});
+        py::array_t<double> b(n), lm(n), res(n), x(std::vector<py::ssize_t>{n, m});
+        py::array_t<int> cert(n);
         for (py::ssize_t k = 0; k < n; ++k) {
           const BranchPoint& pt = br.points[static_cast<std::size_t>(k)];
           b.mutable_at(k) = pt.b;
