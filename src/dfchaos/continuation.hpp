@@ -66,11 +66,11 @@ struct BranchPoint {
 
 /// A periodic orbit followed in b.
 struct OrbitBranch {
-  std::vector<BranchPoint> points;  ///< the accepted points, in the order followed (b monotone)
-  BranchEnd end = BranchEnd::RangeEnd;
-  long long end_point = -1;  ///< the j of the point that met the break (plateau, grazing), else -1
-  double b_lost = 0;         ///< the first b tried past the last point (NaN for range_end, step_budget)
-  std::string detail;        ///< a sentence on the end (the scenario or the branch labels seen)
+  std::vector<BranchPoint> points;      ///< the accepted points, in the order followed (b monotone)
+  BranchEnd end = BranchEnd::RangeEnd;  ///< why the orbit ends (see the file comment)
+  long long end_point = -1;             ///< the j of the point that met the break (plateau, grazing), else -1
+  double b_lost = 0;                    ///< the first b tried past the last point (NaN for range_end, step_budget)
+  std::string detail;                   ///< a sentence on the end (the scenario or the branch labels seen)
 };
 
 /// Follows the cycle `x0` of T at (a, b0, q) in b towards b_end (either side of b0).
