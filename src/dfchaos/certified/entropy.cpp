@@ -6,6 +6,7 @@
 #include <functional>
 #include <numeric>
 
+#include "dfchaos/certified/graph.hpp"
 #include "dfchaos/covering.hpp"
 #include "dfchaos/errors.hpp"
 #include "dfchaos/stop.hpp"
@@ -40,75 +41,11 @@ Part best_part(const std::vector<Proposal>& all, const std::vector<int>& vertice
   for (int i = 0; i < n; ++i)
     for (int k = 0; k < n; ++k)
       if (covers_float(all[vertices[i]], all[vertices[k]])) succ[i].push_back(k);
-  // Strongly connected components (Tarjan, iterative).
-  std::vector<int> index(n, -1), low(n, 0), comp(n, -1), stack;
-  std::vector<bool> on(n, false);
-  int counter = 0, ncomp = 0;
-  for (int s = 0; s < n; ++s) {
-    if (index[s] >= 0) continue;
-    std::vector<std::pair<int, std::size_t>> call{{s, 0}};
-    index[s] = low[s] = counter++;
-    stack.push_back(s);
-    on[s] = true;
-    while (!call.empty()) {
-      poll_stop();  // stop.hpp: a caller may end the proof here
-      auto& [u, e] = call.back();
-      if (e < succ[u].size()) {
-        const int w = succ[u][e++];
-        if (index[w] < 0) {
-          index[w] = low[w] = counter++;
-          stack.push_back(w);
-          on[w] = true;
-          call.emplace_back(w, 0);
-        } else if (on[w]) {
-          low[u] = std::min(low[u], index[w]);
-        }
-      } else {
-        const int done = u;
-        call.pop_back();
-        if (!call.empty()) low[call.back().first] = std::min(low[call.back().first], low[done]);
-        if (low[done] == index[done]) {
-          int w;
-          do {
-            w = stack.back();
-            stack.pop_back();
-            on[w] = false;
-            comp[w] = ncomp;
-          } while (w != done);
-          ++ncomp;
-        }
-      }
-    }
-  }
+  const PerronPart part = perron_part(succ);
   Part best;
-  for (int c = 0; c < ncomp; ++c) {
-    std::vector<int> members;
-    for (int i = 0; i < n; ++i)
-      if (comp[i] == c) members.push_back(i);
-    std::vector<int> pos(n, -1);
-    for (std::size_t m = 0; m < members.size(); ++m) pos[members[m]] = static_cast<int>(m);
-    // Power iteration on A + I (aperiodic, same Perron vector, root + 1).
-    std::vector<double> v(members.size(), 1.0), w(members.size());
-    double rho = 0;
-    for (int it = 0; it < 2000; ++it) {
-      for (std::size_t m = 0; m < members.size(); ++m) {
-        w[m] = v[m];
-        for (int k : succ[members[m]])
-          if (pos[k] >= 0) w[m] += v[pos[k]];
-      }
-      const double norm = *std::max_element(w.begin(), w.end());
-      const double previous = rho;
-      rho = norm - 1;
-      for (std::size_t m = 0; m < members.size(); ++m) v[m] = w[m] / norm;
-      if (it > 20 && std::fabs(rho - previous) < 1e-13 * std::max(1.0, rho)) break;
-    }
-    if (rho > best.rho + 1e-12) {
-      best.rho = rho;
-      best.vertices.clear();
-      for (int m : members) best.vertices.push_back(vertices[m]);
-      best.v = v;
-    }
-  }
+  best.rho = part.rho;
+  best.v = part.v;
+  for (int m : part.vertices) best.vertices.push_back(vertices[m]);
   return best;
 }
 
@@ -227,24 +164,13 @@ EntropyProof prove_entropy_bound(double a, double b, double q, const EntropyOpti
     }
   }
   // The Collatz-Wielandt bound of a subgraph S: min over j in S of sum_{k in S, j -> k} v_k / v_j.
-  // Greedily drop the vertex with the least ratio while that raises the bound (any S is valid).
-  std::vector<bool> in(n, true);
-  auto ratio = [&](std::size_t j) {
-    double sum = 0;
-    for (int k : r.segments[j].successors)
-      if (in[k]) sum += r.segments[k].weight;
-    return sum / r.segments[j].weight;
-  };
-  std::vector<bool> best_set = in;
+  std::vector<bool> best_set;
   double rho = 0;
-  for (std::size_t left = n; left > 0; --left) {
-    std::size_t worst = n;
-    double least = 1e300;
-    for (std::size_t j = 0; j < n; ++j)
-      if (in[j] && ratio(j) < least) least = ratio(j), worst = j;
-    if (worst == n) break;  // no ratio (NaN weights): nothing more to drop
-    if (least > rho) rho = least, best_set = in;
-    in[worst] = false;
+  {
+    std::vector<std::vector<int>> succ(n);
+    std::vector<double> w(n);
+    for (std::size_t j = 0; j < n; ++j) succ[j] = r.segments[j].successors, w[j] = r.segments[j].weight;
+    rho = greedy_collatz_wielandt(succ, w, best_set);
   }
   // Keep the chosen subgraph, successors renumbered.
   {

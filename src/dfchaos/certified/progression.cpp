@@ -2,6 +2,7 @@
 #include "dfchaos/certified/progression.hpp"
 
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "dfchaos/certified/bisect.hpp"
@@ -61,11 +62,35 @@ Ball newton_velocity(const Velocity& v, const Ball& guess) {
   return x;
 }
 
+/// A floating guess of the first zero of `g` after t: march on midpoints (step 1e-2, at most
+/// 1e6 steps), then bisect; NaN if no sign change is met.
+double first_zero_guess(const Velocity& g, double t) {
+  constexpr double kStep = 1e-2;
+  double lo = t;
+  for (int i = 0; i < 1'000'000; ++i) {
+    double hi = lo + kStep;
+    if (g.value(Ball(hi)).mid() < 0) {
+      for (int k = 0; k < 60; ++k) {
+        const double mid = 0.5 * (lo + hi);
+        if (!(mid > lo && mid < hi)) break;
+        if (g.value(Ball(mid)).mid() < 0) {
+          hi = mid;
+        } else {
+          lo = mid;
+        }
+      }
+      return hi;
+    }
+    lo = hi;
+  }
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
 Ball delta_for(const Ball& x) { return Ball(std::max(1.0, std::fabs(x.mid())) * std::ldexp(1.0, -static_cast<int>(precision() - 24))); }
 
 }  // namespace
 
-Theta2Proof certify_theta2(const ParameterBalls& m, const StartSet& set, const FirstHitProof& t1, Budget& budget, bool record) {
+Theta2Proof certify_theta2(const ParameterBalls& m, const StartSet& set, const FirstHitProof& t1, Budget& budget, bool record, bool retry) {
   Theta2Proof r;
   if (!t1.verdict) {
     r.verdict = Outcome::fail("theta2: needs T1", "T1 not proved");
@@ -75,61 +100,71 @@ Theta2Proof certify_theta2(const ParameterBalls& m, const StartSet& set, const F
   const Velocity gmin(m, th_min, t1.t_lo, m.b_lo, m.q_hi, 1.0);
   const Velocity gmax(m, th_max, t1.t_hi, m.b_hi, m.q_lo, 1.0);
   const double a = m.box().a;
-  double guess_min = oracle::theta2(a, m.box().b_lo, m.box().q_hi, th_min.mid());
-  double guess_max = oracle::theta2(a, m.box().b_hi, m.box().q_lo, th_max.mid());
-  if (std::isnan(guess_min) || std::isnan(guess_max)) {
-    r.verdict = Outcome::fail("theta2: guess", "the floating-point layer gave no theta2 at the corners");
+  // One proof from floating guesses of theta2 at the two corners.
+  auto attempt = [&](double guess_min, double guess_max) {
+    Theta2Proof r;
+    if (std::isnan(guess_min) || std::isnan(guess_max)) {
+      r.verdict = Outcome::fail("theta2: guess", "the floating-point layer gave no theta2 at the corners");
+      return r;
+    }
+    const Ball rho_min = newton_velocity(gmin, Ball(guess_min));
+    const Ball rho_max = newton_velocity(gmax, Ball(guess_max));
+    bool ok = false;
+    Ball d = delta_for(rho_min);
+    for (int k = 0; k < 4 && !ok; ++k, d = d * Ball(std::ldexp(1.0, 24))) {
+      r.u_lo = (rho_min - d).lower_ball();
+      ok = gmin.value(r.u_lo).is_positive();
+    }
+    if (!ok) {
+      r.verdict = Outcome::fail("theta2: bracket", "G2 > 0 at the left end not proved near t = " + rho_min.mid_str(20));
+      return r;
+    }
+    ok = false;
+    d = delta_for(rho_max);
+    for (int k = 0; k < 4 && !ok; ++k, d = d * Ball(std::ldexp(1.0, 24))) {
+      r.u_hi = (rho_max + d).upper_ball();
+      ok = gmax.value(r.u_hi).is_negative();
+    }
+    if (!ok) {
+      r.verdict = Outcome::fail("theta2: bracket", "G2 < 0 at the right end not proved near t = " + rho_max.mid_str(20));
+      return r;
+    }
+    if (!lt(t1.t_hi, r.u_lo)) {
+      r.verdict = Outcome::fail("theta2: bracket", "the theta2 bracket does not start after the T1 enclosure");
+      return r;
+    }
+    if (!lt(r.u_lo, r.u_hi)) {
+      r.verdict = Outcome::fail("theta2: bracket", "the corners' stops are out of order");
+      return r;
+    }
+    r.enclosure = Ball::hull(r.u_lo, r.u_hi);
+    // G2 > 0 from the impact to u_lo: the first zero is not earlier.
+    const Velocity minus_gmin(m, th_min, t1.t_lo, m.b_lo, m.q_hi, -1.0);
+    // (Failures of the corner functions refute nothing: they mix the corners of the set.)
+    if (Outcome v = prove_negative(minus_gmin, t1.t_lo, r.u_lo, budget, "theta2: no earlier stop", &r.stats, record ? &r.no_earlier_stop : nullptr);
+        !v) {
+      v.refuted = false;
+      r.verdict = v;
+      return r;
+    }
+    // dG2/dt < 0 on the bracket: a simple zero.
+    const Acceleration acc(m, m.b_hi, m.q_lo);
+    if (Outcome v = prove_negative(acc, r.u_lo, r.u_hi, budget, "theta2: simple zero (F - q < 0)", &r.stats, record ? &r.simple_zero : nullptr); !v) {
+      v.refuted = false;
+      r.verdict = v;
+      return r;
+    }
+    r.verdict = Outcome::ok();
     return r;
-  }
-  const Ball rho_min = newton_velocity(gmin, Ball(guess_min));
-  const Ball rho_max = newton_velocity(gmax, Ball(guess_max));
-  bool ok = false;
-  Ball d = delta_for(rho_min);
-  for (int k = 0; k < 4 && !ok; ++k, d = d * Ball(std::ldexp(1.0, 24))) {
-    r.u_lo = (rho_min - d).lower_ball();
-    ok = gmin.value(r.u_lo).is_positive();
-  }
-  if (!ok) {
-    r.verdict = Outcome::fail("theta2: bracket", "G2 > 0 at the left end not proved near t = " + rho_min.mid_str(20));
-    return r;
-  }
-  ok = false;
-  d = delta_for(rho_max);
-  for (int k = 0; k < 4 && !ok; ++k, d = d * Ball(std::ldexp(1.0, 24))) {
-    r.u_hi = (rho_max + d).upper_ball();
-    ok = gmax.value(r.u_hi).is_negative();
-  }
-  if (!ok) {
-    r.verdict = Outcome::fail("theta2: bracket", "G2 < 0 at the right end not proved near t = " + rho_max.mid_str(20));
-    return r;
-  }
-  if (!lt(t1.t_hi, r.u_lo)) {
-    r.verdict = Outcome::fail("theta2: bracket", "the theta2 bracket does not start after the T1 enclosure");
-    return r;
-  }
-  if (!lt(r.u_lo, r.u_hi)) {
-    r.verdict = Outcome::fail("theta2: bracket", "the corners' stops are out of order");
-    return r;
-  }
-  r.enclosure = Ball::hull(r.u_lo, r.u_hi);
-  // G2 > 0 from the impact to u_lo: the first zero is not earlier.
-  const Velocity minus_gmin(m, th_min, t1.t_lo, m.b_lo, m.q_hi, -1.0);
-  // (Failures of the corner functions refute nothing: they mix the corners of the set.)
-  if (Outcome v = prove_negative(minus_gmin, t1.t_lo, r.u_lo, budget, "theta2: no earlier stop", &r.stats, record ? &r.no_earlier_stop : nullptr);
-      !v) {
-    v.refuted = false;
-    r.verdict = v;
-    return r;
-  }
-  // dG2/dt < 0 on the bracket: a simple zero.
-  const Acceleration acc(m, m.b_hi, m.q_lo);
-  if (Outcome v = prove_negative(acc, r.u_lo, r.u_hi, budget, "theta2: simple zero (F - q < 0)", &r.stats, record ? &r.simple_zero : nullptr); !v) {
-    v.refuted = false;
-    r.verdict = v;
-    return r;
-  }
-  r.verdict = Outcome::ok();
-  return r;
+  };
+  Theta2Proof first =
+      attempt(oracle::theta2(a, m.box().b_lo, m.box().q_hi, th_min.mid()), oracle::theta2(a, m.box().b_hi, m.box().q_lo, th_max.mid()));
+  if (first.verdict || !retry) return first;
+  // The floating layer follows its own T1, which near a discontinuity of T1 may be the other
+  // branch (or a proof may skip a window on purpose): then guess from this proof's T1 instead.
+  // If that fails too, the first failure is reported.
+  Theta2Proof second = attempt(first_zero_guess(gmin, t1.t_lo.mid()), first_zero_guess(gmax, t1.t_hi.mid()));
+  return second.verdict ? second : first;
 }
 
 StopArcProof certify_stop_arc(const ParameterBalls& m, const StartSet& set, const FirstHitProof& t1, Budget& budget, bool record) {

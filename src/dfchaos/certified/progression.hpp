@@ -48,8 +48,11 @@ struct Theta2Proof {
 };
 
 /// \f$\theta_2\f$ over `set` given the certified \f$T_1\f$ (which must be proved); with `record`, the
-/// witnesses are kept.
-Theta2Proof certify_theta2(const ParameterBalls& m, const StartSet& set, const FirstHitProof& t1, Budget& budget, bool record = false);
+/// witnesses are kept. The zeros are first sought near the floating layer's \f$\theta_2\f$; with
+/// `retry`, a failed proof is tried once more from the first zeros after this proof's \f$T_1\f$
+/// (the floating layer may follow the other branch of \f$T_1\f$ next to a discontinuity).
+Theta2Proof certify_theta2(const ParameterBalls& m, const StartSet& set, const FirstHitProof& t1, Budget& budget, bool record = false,
+                           bool retry = false);
 
 /// The weaker statement that suffices where T is constant: the first zero of \f$G_2\f$ after
 /// \f$\theta_1\f$ lies in the stop arc \f$R_k = [t_3 + 2\pi k, t_2 + 2\pi(k+1))\f$, for every point of the set.

@@ -14,17 +14,18 @@ const char* t_case_name(TCase c) {
   return "none";
 }
 
-MapStepProof certify_T(const ParameterBalls& m, const StartSet& set, Budget& budget, const Lemma1Proof* lemma1, bool record) {
+MapStepProof certify_T(const ParameterBalls& m, const StartSet& set, Budget& budget, const Lemma1Proof* lemma1, bool record,
+                       const FirstHitOptions* t1_options) {
   MapStepProof r;
-  FirstHitOptions t1_options;
-  t1_options.record = record;
-  r.t1 = certify_T1(m, set, budget, t1_options);
+  FirstHitOptions options = t1_options ? *t1_options : FirstHitOptions{};
+  options.record = record;
+  r.t1 = certify_T1(m, set, budget, options);
   r.tests += r.t1.stats.tests;
   if (!r.t1.verdict) {
     r.verdict = r.t1.verdict;
     return r;
   }
-  r.theta2 = certify_theta2(m, set, r.t1, budget, record);
+  r.theta2 = certify_theta2(m, set, r.t1, budget, record, t1_options != nullptr);
   r.tests += r.theta2.stats.tests;
   // Where theta2 is not a proved simple zero, T may still be proved constant: the first stop lies
   // in a stop arc (certify_stop_arc).

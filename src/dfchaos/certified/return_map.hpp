@@ -63,7 +63,11 @@ struct MapStepProof {
 /// T over `set` (Lemma 3 with the general chain of Section 3). `lemma1` (optional): a proved
 /// Lemma 1 over the same box, used when the ScenarioBC case needs it (else it is proved here on demand).
 /// With `record`, the witnesses of the T1, theta2 and stop-arc proofs are kept (for a certificate).
-MapStepProof certify_T(const ParameterBalls& m, const StartSet& set, Budget& budget, const Lemma1Proof* lemma1 = nullptr, bool record = false);
+/// `t1_options` (optional) are passed to certify_T1: e.g. windows of t skipped in its no-contact check,
+/// left of a tangency of Lemma 2 (discontinuities.hpp); their `record` is replaced by `record`. With
+/// them, certify_theta2 also retries from this proof's T1 when the floating guess fails.
+MapStepProof certify_T(const ParameterBalls& m, const StartSet& set, Budget& budget, const Lemma1Proof* lemma1 = nullptr, bool record = false,
+                       const FirstHitOptions* t1_options = nullptr);
 
 /// One closed ball of a proof about T (a covering, Theorem 2): start phases over a sub-box of the
 /// parameters, with the proof of T on it and its witnesses (for a certificate).
