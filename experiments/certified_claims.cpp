@@ -19,6 +19,7 @@
 
 #include "certify/certificate.hpp"
 #include "certify/json.hpp"
+#include "dfchaos/certified/laps.hpp"
 #include "dfchaos/errors.hpp"
 #include "dfchaos/superstable.hpp"
 #include "kit/experiment.hpp"
@@ -52,6 +53,14 @@ std::string lower_decimal(double x, int decimals) {
   if (std::strtod(buf, nullptr) >= x) std::snprintf(buf, sizeof buf, "%.*f", decimals, (std::floor(x * scale) - 1) / scale);
   return buf;
 }
+/// x >= 0 rounded up to `decimals` places, printed exactly (a printed upper bound stays one).
+std::string upper_decimal(double x, int decimals) {
+  const double scale = std::pow(10.0, decimals);
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, std::ceil(x * scale) / scale);
+  if (std::strtod(buf, nullptr) <= x) std::snprintf(buf, sizeof buf, "%.*f", decimals, (std::ceil(x * scale) + 1) / scale);
+  return buf;
+}
 /// A number for LaTeX text mode ("5e-05" becomes 5 x 10^-5).
 std::string num(double x, int digits = 6) { return latex_number(format_significant(x, digits)); }
 
@@ -83,6 +92,7 @@ const Experiment experiment{
                 data("periodic", "periodic orbits of minimal period m, itinerary (0^(m-1)1)^infinity, enclosed by the Krawczyk operator"),
                 data("lemma1", "Lemma 1 at the parameter points: u(t2) of Eq. (8) and the stop t4 in (t1, t2)"),
                 data("discontinuities", "Lemma 2: the discontinuities z_k of T1, enclosed, with T1(z_k) and a lower bound of the jump"),
+                data("entropy", "the entropy of T bounded from both sides at the parameter points: laps of T, the two bounds, ln(a/(2 pi b))"),
                 data("b0", "certified lower bounds of b0(q): Lemma 1 holds for every b in (0, b0_lower_bound]"),
                 data("windows", "superstability windows at q/a = 0.85: the certified brackets of both edges"),
                 latex("certified_claims", "the certified results: enclosures, outcomes, proof sizes"),
@@ -160,6 +170,9 @@ const Experiment experiment{
       Table tper({"point", "period", "itinerary", "proved", "x0_mid", "x0_rad", "log_multiplier"});
       Table tl1({"point", "q_over_a", "b_over_a", "proved", "u_t2_mid", "t4_mid", "t4_rad"});
       std::vector<std::pair<const Point*, CoveringProof>> coverings;
+      Table tentropy({"point", "q_over_a", "b_over_a", "proved", "laps", "discontinuities_T1", "cells", "jump_cells", "turning_cells",
+                      "refined_pieces", "h_lower", "h_upper", "relative_gap", "log_a_over_2pi_b"});
+      double worst_gap = 0;
       int coverings_proved = 0;  // points at which the covering of Lemma 4 is proved
       for (const Point& pt : points) {
         out.macro(std::string("CertPointQ") + pt.tag, dfchaos::format_shortest(pt.q));
@@ -292,9 +305,56 @@ const Experiment experiment{
                                      : "not proved: " + latex_escape(ent.verdict.step),
                   std::to_string(ent.segments.size()));
         }
+        // Section 7 in full: the laps of T certified, the entropy bounded from both sides (laps.hpp).
+        {
+          const EntropyBracket br = prove_entropy_bracket(1.0, pt.b, pt.q);
+          time_row(std::string("entropy bracket at ") + pt.tag, br.seconds);
+          const LapPartition& lp = br.partition;
+          const double h_lo = br.verdict.proved ? br.h_lower() : 0.0, h_up = br.verdict.proved ? br.h_upper() : NAN;
+          const double gap = br.verdict.proved ? (h_up - h_lo) / h_up : NAN;
+          tentropy.row({std::string(pt.tag), pt.q, pt.b, static_cast<long long>(br.verdict.proved), static_cast<long long>(lp.laps.size()),
+                        static_cast<long long>(lp.tangencies), lp.cells, static_cast<long long>(lp.jump_cells),
+                        static_cast<long long>(lp.turning_cells), br.refined_pieces, h_lo, h_up, gap, std::log(1.0 / (2 * M_PI * pt.b))});
+          worst_gap = std::max(worst_gap, br.verdict.proved ? gap : 1.0);
+          const std::string id = std::string("cert.sec7.entropy_bracket.") + pt.tag;
+          const std::string statement =
+              "At " + box.describe() +
+              " (double values), [t2, t3) is covered by the laps of T (intervals on which T is proved continuous and monotone, "
+              "every break accounted for), and h_top(T) lies between ln rho of the covering graph on the laps and ln rho of the matrix "
+              "\"T(I_j) meets I_k\" (the laps, refined once by their preimages where the gap is wide), both rho bounded by Collatz-Wielandt.";
+          Json ev = Json::object();
+          ev.set("proved", br.verdict.proved)
+              .set("laps", static_cast<long long>(lp.laps.size()))
+              .set("discontinuities_of_T1", static_cast<long long>(lp.tangencies))
+              .set("cells", lp.cells)
+              .set("jump_cells", static_cast<long long>(lp.jump_cells))
+              .set("turning_cells", static_cast<long long>(lp.turning_cells))
+              .set("end_of_last_plateau", lp.end)
+              .set("refined_pieces", br.refined_pieces)
+              .set("rho_lower", br.rho_lower)
+              .set("rho_upper", br.rho_upper)
+              .set("h_lower", h_lo)
+              .set("h_upper", br.verdict.proved ? h_up : 0.0)
+              .set("log_laps_upper", br.verdict.proved ? br.log_laps.upper() : 0.0)
+              .set("seconds", br.seconds);
+          auto& c = certified_claim(out, id, "Section 7", statement, ev, br.verdict.proved && h_lo > std::log(2.0) && h_lo <= h_up, &br.verdict);
+          c.parameter_object(params);
+          c.ours();  // beyond the paper (Section 7 proves ln 2)
+          out.macro(std::string("CertEntropyLower") + pt.tag, lower_decimal(h_lo, 3));
+          out.macro(std::string("CertEntropyUpper") + pt.tag, br.verdict.proved ? upper_decimal(h_up, 3) : std::string("--"));
+          out.macro(std::string("CertLaps") + pt.tag, std::to_string(lp.laps.size()));
+          out.macro(std::string("CertEntropyGap") + pt.tag, br.verdict.proved ? format_significant(100 * gap, 2) : std::string("--"));
+          tex_row("entropy, both sides", ptxt,
+                  br.verdict.proved ? "$" + lower_decimal(h_lo, 3) + "\\le h_{\\mathrm{top}}\\le" + upper_decimal(h_up, 3) + "$ (" +
+                                          std::to_string(lp.laps.size()) + " laps)"
+                                    : "not proved: " + latex_escape(br.verdict.step),
+                  std::to_string(lp.laps.size()));
+        }
         coverings.emplace_back(&pt, std::move(cov));
       }
       out.macro("CertCoveringsProved", std::to_string(coverings_proved));
+      out.table("entropy", tentropy, "the entropy of T bounded from both sides at the parameter points (certified/laps.hpp)");
+      out.macro("CertEntropyWorstGap", format_significant(100 * worst_gap, 2));
       out.table("coverings", tcov, "Lemma 4 certified at the parameter points: the segments J0, J1 and the size of the proofs");
       out.table("periodic", tper, "periodic orbits of minimal period m, itinerary (0^(m-1)1)^infinity, enclosed by the Krawczyk operator");
       out.table("lemma1", tl1, "Lemma 1 at the parameter points: u(t2) of Eq. (8) and the stop t4 in (t1, t2)");

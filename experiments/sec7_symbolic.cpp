@@ -1,15 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 /// @file sec7_symbolic.cpp
 /// @brief Section 7: every binary word of length n <= 12 is realised by an orbit through K0, K1
-/// (so 2^n words), the coding H satisfies H o T = S o H along them, the entropy bound ln 2, and a
-/// lap-count estimate of the topological entropy of T (entropy.hpp).
+/// (so 2^n words), the coding H satisfies H o T = S o H along them, hence the entropy bound ln 2.
+/// The entropy itself is bounded from both sides in certified_claims (certified/laps.hpp).
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
 #include <vector>
 
 #include "dfchaos/covering.hpp"
-#include "dfchaos/entropy.hpp"
 #include "dfchaos/errors.hpp"
 #include "dfchaos/symbolic.hpp"
 #include "kit/experiment.hpp"
@@ -24,16 +23,14 @@ constexpr double kStepTol = 1e-10;  // |T(x_j) - x_{j+1}| along a realised word
 const Experiment experiment{
     .title = "Section 7: symbolic dynamics on J0, J1",
     .paper = {"Section 7"},
-    .tests = {"test_symbolic", "test_entropy"},
+    .tests = {"test_symbolic"},
     .options = {real("b", 0.01, "b/a (a = 1); below 1e-6 the orbits need more precision than the double-precision checks resolve, and the cost grows")
                     .range(1e-6, 0.5)
                     .recorded_as("b_over_a"),
                 real("q", 0.95, "q/a; assumption (2) asks sin(vartheta0) < q/a < 1").range(1e-3, 1).recorded_as("q_over_a"),
-                count("n-max", 12, "longest word length").range(1, 20).fast_value(5),
-                count("lap-grid", 400000, "grid points for the lap counts of T^n").range(100, 100'000'000).fast_value(20000).unrecorded()},
+                count("n-max", 12, "longest word length").range(1, 20).fast_value(5)},
     .outputs = {data("words", "binary words realised by orbits through K0, K1"),
-                data("cylinders", "the widest cylinder J_w = {x : itinerary starts with w} per word length"),
-                data("laps", "laps of T^n counted on a grid of [t2, t3) (monotonicity changes)")},
+                data("cylinders", "the widest cylinder J_w = {x : itinerary starts with w} per word length")},
     .body = [](Run& run) {
       const double b = run.real("b"), q = run.real("q");
       const int n_max = run.count_int("n-max");
@@ -121,13 +118,6 @@ const Experiment experiment{
       else
         coding.holds(shrinking && worst_ratio <= 0.5);
 
-      // Lap counts of T^n on [t2, t3): monotone pieces seen on a grid (a lower count).
-      Table laps({"n", "laps", "log_laps_over_n"});
-      const std::vector<LapCount> counts = lap_counts(p, run.count_int("lap-grid"), run.fast() ? 2 : 3);
-      for (const LapCount& l : counts) laps.row({static_cast<long long>(l.n), l.laps, l.entropy_estimate});
-      run.table("laps", laps);
-      const double h_est = counts.back().entropy_estimate;
-
       const std::string why = std::to_string(undecided) + " words have one-step residuals above " + format_double(kStepTol) +
                               " but below what double precision resolves along their orbits (up to " + format_double(worst_floor) + ")";
       auto& all =
@@ -143,14 +133,6 @@ const Experiment experiment{
           .evidence("words_checked", (1LL << (n_max + 1)) - 2);
       if (missing == 0 && undecided > 0) all.inconclusive(why);
       all.holds(missing == 0);
-      auto& ent = run.out.claim(
-          "sec7.entropy_bound", "Section 7", EvidenceKind::Sampled,
-          "By the covering of Lemma 4, the topological entropy of T is at least ln 2; the lap counts of T^n give a grid estimate that must not be "
-          "below ln 2.");
-      ent.evidence("ln2", std::log(2.0)).evidence("lap_estimate", h_est);
-      if (missing == 0 && undecided > 0 && h_est >= std::log(2.0)) ent.inconclusive(why);
-      ent.holds(missing == 0 && h_est >= std::log(2.0));
-      run.out.macro("SecSevenLapEstimate", h_est, 3);
       run.out.macro("SecSevenNmax", std::to_string(n_max));
     }};
 

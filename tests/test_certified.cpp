@@ -13,9 +13,14 @@
 #include <cmath>
 #include <cstdlib>
 
+#include <omp.h>
+
 #include "certify/json.hpp"
 #include "dfchaos/certified/arc_l1.hpp"
 #include "dfchaos/certified/bisect.hpp"
+#include "dfchaos/certified/entropy.hpp"
+#include "dfchaos/certified/graph.hpp"
+#include "dfchaos/certified/laps.hpp"
 #include "dfchaos/certified/lemma4_uniform.hpp"
 #include "dfchaos/certified/periodic.hpp"
 #include "dfchaos/certified/rectangle.hpp"
@@ -537,4 +542,77 @@ TEST(CertifiedContinuation, EveryStepOfAFollowedOrbitIsProvedAndAFalseCycleIsNot
   // Bad input is refused without a proof.
   EXPECT_FALSE(prove_cycle_on_interval(1.0, q, 3.1e-3, 3e-3, br.points[0].x, br.points[1].x).verdict.proved);
   EXPECT_FALSE(prove_cycle_on_interval(1.0, q, 3e-3, 3.1e-3, br.points[0].x, {1.0}).verdict.proved);
+}
+
+TEST(CollatzWielandt, UpperBoundEnclosesKnownSpectralRadii) {
+  // All ones (n x n): rho = n. [[1, 1], [1, 0]]: the golden ratio. A row without ones is allowed.
+  BandMatrix full;
+  for (int j = 0; j < 7; ++j) full.first.push_back(0), full.last.push_back(6);
+  const double r7 = collatz_wielandt_upper(full);
+  EXPECT_GE(r7, 7.0);
+  EXPECT_LT(r7, 7.0 * (1 + 1e-12));
+  BandMatrix fib;
+  fib.first = {0, 0, 2};
+  fib.last = {1, 0, 1};  // row 2 is empty
+  const double golden = 0.5 * (1 + std::sqrt(5.0));
+  const double rf = collatz_wielandt_upper(fib);
+  EXPECT_GE(rf, golden);
+  EXPECT_LT(rf, golden * (1 + 1e-9));
+  EXPECT_EQ(fib.ones(), 3);
+}
+
+TEST(CertifiedLaps, CountMatchesTheFloatingBreaksAndBoundsAreOrdered) {
+  // At (q/a, b/a) = (0.95, 0.01), against T on a fine floating grid: the steps y_{i+1} - y_i keep
+  // one sign along a lap, so each run of two or more steps of one sign (zero steps, on a plateau,
+  // skipped; a lone step of the other sign is a jump between two laps) lies in its own lap. The
+  // certified partition may add laps (any doubt adds one), but only a few here.
+  const double b = 0.01, q = 0.95;
+  const EntropyBracket e = prove_entropy_bracket(1.0, b, q);
+  ASSERT_TRUE(e.verdict.proved) << e.verdict.describe();
+  const LapPartition& p = e.partition;
+  const Parameters par(1.0, b, q);
+  const double t2 = *par.t2(), t3 = *par.t3();
+  const int grid = 200000;
+  long long runs = 0, run_length = 0;
+  int sign = 0;
+  double previous = T(par, t2);
+  for (int i = 1; i < grid; ++i) {
+    const double y = T(par, t2 + (t3 - t2) * i / grid), d = y - previous;
+    previous = y;
+    if (d == 0) continue;
+    const int s = d > 0 ? 1 : -1;
+    if (s == sign) {
+      if (++run_length == 2) ++runs;
+    } else {
+      sign = s, run_length = 1;
+    }
+  }
+  EXPECT_GE(static_cast<long long>(p.laps.size()), runs);
+  EXPECT_LE(static_cast<long long>(p.laps.size()), runs + 3);
+  // Laps ascending, covering [t2, t3) without holes.
+  EXPECT_LE(p.laps.front().lo, t2);
+  EXPECT_GE(p.laps.back().hi, t3);
+  for (std::size_t j = 1; j < p.laps.size(); ++j) EXPECT_LE(p.laps[j].lo, p.laps[j - 1].hi) << "hole before lap " << j;
+  // ln 2 < lower <= upper <= ln(laps).
+  EXPECT_GT(e.h_lower(), std::log(2.0));
+  EXPECT_LE(e.h_lower(), e.h_upper());
+  EXPECT_LE(e.h_upper(), e.log_laps.upper());
+  // The other certified lower bound (covering graph on grid segments, entropy.hpp) is below this upper.
+  const EntropyProof g = prove_entropy_bound(1.0, b, q);
+  ASSERT_TRUE(g.verdict.proved);
+  EXPECT_LE(g.log_rho_lower.lower(), e.h_upper());
+  // The same on one thread (the parts are joined in order).
+  const int threads = omp_get_max_threads();
+  omp_set_num_threads(1);
+  const EntropyBracket one = prove_entropy_bracket(1.0, b, q);
+  omp_set_num_threads(threads);
+  EXPECT_EQ(one.partition.laps.size(), p.laps.size());
+  EXPECT_EQ(one.rho_upper, e.rho_upper);
+  EXPECT_EQ(one.rho_lower, e.rho_lower);
+}
+
+TEST(CertifiedLaps, RejectsParametersOutsideTheModel) {
+  EXPECT_FALSE(prove_laps(1.0, 0.6, 0.95).verdict.proved);   // b >= a/2
+  EXPECT_FALSE(prove_laps(1.0, 0.01, 0.01).verdict.proved);  // q <= 2b
+  EXPECT_FALSE(prove_entropy_bracket(1.0, 0.6, 0.95).verdict.proved);
 }
