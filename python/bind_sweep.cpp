@@ -164,7 +164,7 @@ q_range, b_range: an axis as the tool writes it, 'lo:hi:n[:lin|log|mid]' or 'x',
   (lo, hi, n, kind), or one number x; both ends included for lin and log (one value x is (x, x, 1)),
   cell centres for mid.
 observables: a comma-separated string or a list of names among covering, superstable, lyapunov, rate,
-  period, certified, region (the columns always come in that order).
+  period, certified, region, entropy (the columns always come in that order).
 physical: (mass, omega, amplitude) in kg, rad/s and N, the tool's --physical (instead of a, which
   must then be left at 1): a = amplitude/(mass omega^2) metres, the axes read as q/a = friction/amplitude
   and b/a = static force/(2 amplitude), the column rate becomes rate_m_per_s and the columns friction_N
@@ -175,7 +175,7 @@ Returns a tuple:
               order: index (int64; index = i * n_b + j, i over q/a, j over b/a), q_over_a, b_over_a,
               status (str: ok, inadmissible, error), the observables' columns (float64: covering,
               superstable, epsilon, lyapunov, rate, period, certified, certified_step, region,
-              region_uniform, region_boxes, region_stop; nan where not
+              region_uniform, region_boxes, region_stop, entropy_lower, entropy_upper, entropy_laps; nan where not
               computed) and error (str: 'observable: message', '-' when none). pandas.DataFrame(columns)
               is the tool's table.
   provenance  a dict of str: title, version, git_hash, compiler, then each 'key = value' line of the

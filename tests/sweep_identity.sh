@@ -13,7 +13,8 @@
 # cells (eternal stick-slip at b/a = 0.45). A second grid C, 5 x 5 cells with covering and
 # certified (a proof in ball arithmetic per cell), holds proved and not-proved cells, and R (region:
 # proofs over each cell's rectangle) cells proved whole and in part: their outputs too must not depend
-# on threads, shards, resumption or ranks. Each check prints ok/FAIL; exit 1 if
+# on threads, shards, resumption or ranks; so must E (entropy: both bounds proved per cell). Each
+# check prints ok/FAIL; exit 1 if
 # any failed.
 set -u
 mode=$1
@@ -27,6 +28,8 @@ C=(--q-range 0.7:1.1:5 --b-range 1e-3:0.45:5:log --observables covering,certifie
 # R: 2 x 4 cells with region (Lemma 4 over each cell's rectangle): below, across and above the
 # uniform bound of each q/a column, 40 boxes a cell at most.
 R=(--q-range 0.85:0.87:2:mid --b-range 1e-3:3.2e-3:4:log --observables covering,region --region-max-boxes 40)
+# E: 2 x 3 cells with entropy (the laps of T and both bounds proved per cell, each on all its threads).
+E=(--q-range 0.85:0.95:2 --b-range 8e-3:2e-2:3:log --observables entropy)
 
 same() {  # same DESCRIPTION FILE-A FILE-B
   checks=$((checks + 1))
@@ -70,6 +73,15 @@ else
   echo "FAIL: the region grid lacks cells proved whole or in part"; fails=$((fails + 1))
 fi
 
+OMP_NUM_THREADS=1 "$cli" sweep "${E[@]}" > "$tmp/eserial.tsv" || { echo "FAIL: the serial sweep of E"; exit 1; }
+checks=$((checks + 1))
+# entropy_lower is column 5, entropy_upper 6, entropy_laps 7: every cell proved, ln 2 < lower <= upper.
+if awk -F'\t' '!/^#/ && NR > 1 { n++; if ($4 == "ok" && $7 > 0 && $5 > 0.6931 && $5 <= $6) p++ } END { exit !(n == 6 && p == 6) }' "$tmp/eserial.tsv"; then
+  echo "ok:   the entropy grid: 6 cells, each with ln 2 < entropy_lower <= entropy_upper"
+else
+  echo "FAIL: the entropy grid: a cell not proved or bounds out of order"; fails=$((fails + 1))
+fi
+
 # grid_identity LABEL SERIAL-FILE PREFIX SWEEP-ARGS...: the grid's rows on 2 threads, in 3 shards
 # merged, and stopped by --max-chunks then resumed with another chunk size, against its serial run.
 grid_identity() {
@@ -107,6 +119,7 @@ serial)
 
   grid_identity certified "$tmp/cserial.tsv" c "${C[@]}"
   grid_identity region "$tmp/rserial.tsv" r "${R[@]}"
+  grid_identity entropy "$tmp/eserial.tsv" e "${E[@]}"
 
   "$cli" sweep "${S[@]}" --resume "$tmp/resumed.tsv" --chunk 4 --max-chunks 3 2> /dev/null
   status "stopped by --max-chunks 3" 3 $?
@@ -157,6 +170,8 @@ mpi)
   same "2 MPI ranks = serial" "$tmp/serial.tsv" "$tmp/mpi.tsv"
   "${launch[@]}" "$mpi" "${R[@]}" --chunk 1 > "$tmp/mpi-region.tsv"
   same "region: 2 MPI ranks, chunks of 1 = serial" "$tmp/rserial.tsv" "$tmp/mpi-region.tsv"
+  "${launch[@]}" "$mpi" "${E[@]}" --chunk 1 > "$tmp/mpi-entropy.tsv"
+  same "entropy: 2 MPI ranks, chunks of 1 = serial" "$tmp/eserial.tsv" "$tmp/mpi-entropy.tsv"
   "${launch[@]}" "$mpi" "${S[@]}" --chunk 3 --out "$tmp/mpi-out.tsv"
   same "2 MPI ranks, chunks of 3, --out = serial" "$tmp/serial.tsv" "$tmp/mpi-out.tsv"
   "$cli" sweep "${S[@]}" --shard 1/4 > "$tmp/shard.tsv"

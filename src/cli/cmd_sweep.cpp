@@ -14,7 +14,8 @@
 namespace dfchaos::cli {
 
 Command add_sweep(CLI::App& app) {
-  auto* cmd = app.add_subcommand("sweep", "observables over a (q/a, b/a) grid: covering, superstable, lyapunov, rate, period, certified, region");
+  auto* cmd =
+      app.add_subcommand("sweep", "observables over a (q/a, b/a) grid: covering, superstable, lyapunov, rate, period, certified, region, entropy");
   auto args = std::make_shared<sweep::SweepArguments>();
   args->add_to(cmd);
   return {cmd, [args] {

@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "dfchaos/certified/covering.hpp"
+#include "dfchaos/certified/laps.hpp"
 #include "dfchaos/certified/rectangle.hpp"
 #include "dfchaos/covering.hpp"
 #include "dfchaos/errors.hpp"
@@ -144,6 +145,17 @@ PlaneRegion plane_region(const Spec& spec, long long index, long max_boxes) {
   return out;
 }
 
+PlaneEntropy plane_entropy(double q_over_a, double b_over_a) {
+  const certified::EntropyBracket e = certified::prove_entropy_bracket(1.0, b_over_a, q_over_a);
+  poll_stop();  // a bracket cut short by a stop request (dfchaos/stop.hpp) is never written
+  PlaneEntropy out;
+  if (!e.verdict.proved) return out;
+  out.lower = e.h_lower();
+  out.upper = e.h_upper();
+  out.laps = static_cast<double>(e.partition.laps.size());
+  return out;
+}
+
 Lemma4Covering plane_covering(const Parameters& p, long long max_branches, CoveringSearchStats* stats) {
   CoveringSearch search = CoveringSearch::branchwise();
   search.max_branches = max_branches;
@@ -222,6 +234,13 @@ CellValues evaluate_cell(const Spec& spec, long long index) {
       v.region_boxes = static_cast<double>(r.boxes);
       v.region_stop = static_cast<double>(static_cast<int>(r.stop));
     });
+  if (obs.has(Observable::Entropy))
+    guarded(v, "entropy", [&] {
+      const PlaneEntropy e = plane_entropy(v.q_over_a, v.b_over_a);
+      v.entropy_lower = e.lower;
+      v.entropy_upper = e.upper;
+      v.entropy_laps = e.laps;
+    });
   return v;
 }
 
@@ -239,6 +258,7 @@ std::vector<double> observable_values(const Spec& spec, const CellValues& v) {
       case Observable::Period: x.push_back(v.period); break;
       case Observable::Certified: x.insert(x.end(), {v.certified, v.certified_step}); break;
       case Observable::Region: x.insert(x.end(), {v.region, v.region_uniform, v.region_boxes, v.region_stop}); break;
+      case Observable::Entropy: x.insert(x.end(), {v.entropy_lower, v.entropy_upper, v.entropy_laps}); break;
     }
   }
   if (spec.physical.given()) x.insert(x.end(), {spec.physical.friction(v.q_over_a), spec.physical.static_force(v.b_over_a)});

@@ -14,6 +14,7 @@ const char* observable_name(Observable o) {
     case Observable::Period: return "period";
     case Observable::Certified: return "certified";
     case Observable::Region: return "region";
+    case Observable::Entropy: return "entropy";
   }
   return "?";
 }
@@ -61,6 +62,10 @@ std::vector<std::string> ObservableSet::columns() const {
   std::vector<std::string> c;
   for (Observable o : kAllObservables)
     if (has(o)) {
+      if (o == Observable::Entropy) {  // two bounds and a count: no column is "the" entropy
+        for (const char* name : {"entropy_lower", "entropy_upper", "entropy_laps"}) c.emplace_back(name);
+        continue;
+      }
       c.emplace_back(observable_name(o));
       if (o == Observable::Superstable) c.emplace_back("epsilon");
       if (o == Observable::Certified) c.emplace_back("certified_step");

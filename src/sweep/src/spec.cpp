@@ -79,12 +79,13 @@ void Spec::validate() const {
   }
   if (max_proofs < 1 || max_proofs > kMaxMaxProofs)
     throw InvalidParameter("max-proofs", "1 <= max-proofs <= " + count_text(kMaxMaxProofs), static_cast<double>(max_proofs));
-  const double per_cell =
-      (observables.has(Observable::Certified) ? 1.0 : 0.0) + (observables.has(Observable::Region) ? static_cast<double>(region_max_boxes) : 0.0);
+  const double per_cell = (observables.has(Observable::Certified) ? 1.0 : 0.0) +
+                          (observables.has(Observable::Region) ? static_cast<double>(region_max_boxes) : 0.0) +
+                          (observables.has(Observable::Entropy) ? 1.0 : 0.0);
   if (const double proofs = static_cast<double>(cells()) * per_cell; proofs > static_cast<double>(max_proofs))
     throw InvalidParameter("max-proofs",
-                           "cells * proofs per cell (certified: 1, region: region-max-boxes) <= max-proofs = " + count_text(max_proofs) + " (got " +
-                               format_shortest(proofs) + "): a smaller grid, or --max-proofs to raise the cap");
+                           "cells * proofs per cell (certified: 1, region: region-max-boxes, entropy: 1) <= max-proofs = " + count_text(max_proofs) +
+                               " (got " + format_shortest(proofs) + "): a smaller grid, or --max-proofs to raise the cap");
   orbit.validate();
   period.validate();
   if (observables.needs_orbit()) {
@@ -137,6 +138,11 @@ std::vector<std::string> Spec::header_lines() const {
                 "axis (mid: its part of the range); proved for every parameter in it, below region_uniform by Lemma 4 for every "
                 "small b/a, above by parameter boxes)");
   }
+  if (observables.has(Observable::Entropy))
+    h.emplace_back(
+        "entropy = entropy_lower <= h_top(T) <= entropy_upper, both proved in ball arithmetic at the cell's ratios (a = 1) from the "
+        "entropy_laps laps of T (certified/laps.hpp, prove_entropy_bracket with its default options); lower 0 when no bound above "
+        "ln 1 was proved, upper nan and laps 0 when the laps were not; a proof at one point, not over the cell");
   h.push_back("cells = " + count_text(cells()) + "  (index = i * " + count_text(b_over_a.size()) +
               " + j, i over q_over_a, j over b_over_a; a = A, q = q_over_a A, b = b_over_a A)");
   h.emplace_back(

@@ -95,6 +95,15 @@ struct PlaneRegion {
 /// pure function of the range) and at most `max_boxes` box proofs.
 /// @throws std::invalid_argument for a rectangle of zero width in b (Spec::validate refuses those axes).
 PlaneRegion plane_region(const Spec& spec, long long index, long max_boxes);
+/// The entropy of T bounded from both sides at one point (the `entropy` columns).
+struct PlaneEntropy {
+  double lower = 0;    ///< the proved lower bound of h_top(T) (0 when none above ln 1)
+  double upper = NAN;  ///< the proved upper bound (NaN when the laps were not proved)
+  double laps = 0;     ///< the laps of T (0 when not proved)
+};
+/// The rule of the `entropy` columns: certified::prove_entropy_bracket(1, b/a, q/a) with its default
+/// options (at a = 1: only the ratios matter). Bounded by counts only, never by time: deterministic.
+PlaneEntropy plane_entropy(double q_over_a, double b_over_a);
 /// The orbit observables at one parameter set: `lyapunov`, `rate` and `period` of a sweep's cell,
 /// from the phase theta0 (a sweep's cell starts at orbit_start(p, OrbitSettings::theta0_fraction)).
 struct PlaneOrbit {
@@ -143,6 +152,9 @@ struct CellValues {
   double region_uniform = NAN;         ///< plane_region(spec, index).uniform_bound
   double region_boxes = NAN;           ///< plane_region(spec, index).boxes
   double region_stop = NAN;            ///< plane_region(spec, index).stop as its code
+  double entropy_lower = NAN;          ///< plane_entropy(p).lower
+  double entropy_upper = NAN;          ///< plane_entropy(p).upper
+  double entropy_laps = NAN;           ///< plane_entropy(p).laps
   /// With lyapunov or rate: the image of the orbit's last step with a stop (orbit_statistics'
   /// last_stop_image), NaN if none. Not a column of the output.
   double stop_image = NAN;
@@ -150,7 +162,7 @@ struct CellValues {
 };
 
 /// Computes the observables of cell `index` of `spec`. Never throws for a failure of the cell:
-/// each group (covering; superstable; the orbit behind lyapunov, rate and period; certified; region) that throws is
+/// each group (covering; superstable; the orbit behind lyapunov, rate and period; certified; region; entropy) that throws is
 /// recorded in `error` and its values stay NaN; the others are kept. Running out of memory is not
 /// a failure of the cell (another run, with more memory, would answer): std::bad_alloc passes.
 CellValues evaluate_cell(const Spec& spec, long long index);

@@ -24,6 +24,12 @@
 ///    boxes attempted above that bound, `region_stop` why the rectangle was not decided to its top
 ///    (RegionStop). Not in the default set: from nothing (below the uniform bound) to some seconds
 ///    per cell.
+///  - `entropy`: the topological entropy of T bounded from both sides, *proved* in ball arithmetic at
+///    the cell's ratios (a = 1) by certified::prove_entropy_bracket with its default options
+///    (certified/laps.hpp): `entropy_lower` (0 when no bound above ln 1 was proved), `entropy_upper`
+///    (NaN when the laps were not proved) and `entropy_laps` (the laps of T, 0 when not proved). At
+///    one point of the cell. Not in the default set: about 0.1 s (b/a = 0.01) to 25 s (b/a = 5e-5)
+///    per cell, growing like a/b.
 /// Their columns always come in this order, whatever the order in which they were asked for.
 #pragma once
 
@@ -33,13 +39,13 @@
 namespace dfchaos::sweep {
 
 /// One observable.
-enum class Observable { Covering, Superstable, Lyapunov, Rate, Period, Certified, Region };
+enum class Observable { Covering, Superstable, Lyapunov, Rate, Period, Certified, Region, Entropy };
 
 /// All observables, in column order.
 inline constexpr Observable kAllObservables[] = {Observable::Covering, Observable::Superstable, Observable::Lyapunov, Observable::Rate,
-                                                 Observable::Period,   Observable::Certified,   Observable::Region};
+                                                 Observable::Period,   Observable::Certified,   Observable::Region,   Observable::Entropy};
 
-/// The observables computed when none are named (`--observables` omitted): all but `certified` and `region`.
+/// The observables computed when none are named (`--observables` omitted): all but `certified`, `region` and `entropy`.
 inline constexpr const char* kDefaultObservables = "covering,superstable,lyapunov,rate,period";
 
 /// The name as written on the command line and in the header ("covering", ...).
@@ -59,7 +65,7 @@ class ObservableSet {
   std::string canonical() const;
   /// The data columns of these observables, in order (superstable gives two: superstable, epsilon;
   /// certified two: certified, certified_step; region four: region, region_uniform, region_boxes,
-  /// region_stop).
+  /// region_stop; entropy three: entropy_lower, entropy_upper, entropy_laps).
   std::vector<std::string> columns() const;
 
  private:
