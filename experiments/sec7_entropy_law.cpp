@@ -79,7 +79,8 @@ const Experiment experiment{
       opt.max_refined = kRefineLaps * kRefineLaps;
       for (Row& r : rows) r.e = certified::prove_entropy_bracket(1.0, r.b, r.q, opt);
 
-      Table t({"line", "q_over_a", "b_over_a", "proved", "laps", "refined_pieces", "h_lower", "h_upper", "log_a_over_b", "log_a_over_2pi_b", "failed_step"});
+      Table t({"line", "q_over_a", "b_over_a", "proved", "laps", "refined_pieces", "h_lower", "h_upper", "log_a_over_b", "log_a_over_2pi_b",
+               "failed_step"});
       long long proved = 0, above_ln2 = 0;
       std::vector<double> x, y;  // ln(a/b), midpoint, on the fitted part
       for (std::size_t k = 0; k < rows.size(); ++k) {
@@ -133,8 +134,8 @@ const Experiment experiment{
       for (const Row& r : rows) ordered += r.e.verdict.proved && r.e.h_lower() <= r.e.h_upper() ? 1 : 0;
       out.claim("cert.sec7.entropy_law_points", "Section 7", EvidenceKind::Certified,
                 "At " + std::to_string(proved) + " of " + std::to_string(rows.size()) + " points of the line q/a = " + format_shortest(q) +
-                    ", b/a log-spaced in [" + format_shortest(b_lo) + ", " + format_shortest(b_hi) + "], and of the line b/a = " +
-                    format_shortest(b_q) + ", q/a in [" + format_shortest(q_lo) + ", " + format_shortest(q_hi) +
+                    ", b/a log-spaced in [" + format_shortest(b_lo) + ", " + format_shortest(b_hi) +
+                    "], and of the line b/a = " + format_shortest(b_q) + ", q/a in [" + format_shortest(q_lo) + ", " + format_shortest(q_hi) +
                     "], the laps of T are proved and h_top(T) is bounded from both sides (ball arithmetic); at the others the step not "
                     "proved is named in the data.")
           .ours()
