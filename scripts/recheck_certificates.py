@@ -287,7 +287,8 @@ def grouped(listed, premise_of=None):
         if missing:
             parts.append("none yet: " + ", ".join(dict.fromkeys(missing)))
         own = [size for _, size, st in rows if st == "accepted"]  # a premise's file is counted in its own row
-        out.append(f"\\dfccertgroup{{{label}}}{{{len(own)}}}{{{sum(own)}}}{{{'; '.join(parts)}}}")
+        status = "; ".join(parts).replace("_", "\\_")  # claim ids in the status are LaTeX text
+        out.append(f"\\dfccertgroup{{{label}}}{{{len(own)}}}{{{sum(own)}}}{{{status}}}")
     return out
 
 

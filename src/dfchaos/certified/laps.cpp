@@ -111,7 +111,7 @@ bool monotone_cell(Cover& c, const StartSet& set, double x, double y, const MapS
 }
 
 /// A cell where theta2 is proved simple and monotone but crosses one \f$t_3 + 2\pi k\f$ inside
-/// \f$[t_1 + 2\pi k, t_2 + 2\pi(k+1))\f$: T jumps down once (file comment).
+/// \f$[t_1 + 2\pi k, t_2 + 2\pi(k+1))\f$: T jumps once, at the crossing (file comment).
 bool jump_cell(Cover& c, const StartSet& set, double x, double y, const MapStepProof& t, const std::vector<std::pair<Ball, Ball>>& skip) {
   const ParameterBalls& m = c.m;
   if (!t.t1.verdict || !t.theta2.verdict || !c.lemma1) return false;
@@ -320,7 +320,8 @@ Refined refine(const ParameterBalls& m, const Lemma1Proof* lemma1, const LapPart
         bool any = false;
         for (const LapCell& c : cells) {
           if (c.image.upper() < laps[k].lo || c.image.lower() > laps[k].hi) continue;
-          const Ball part = Ball::hull(max(c.image, Ball(laps[k].lo)), min(c.image, Ball(laps[k].hi)));
+          // T on this part lies in lap k too: the image clamped to lap k's hull.
+          const Ball part = Ball::hull(max(c.image, Ball(laps[k].lo)).lower_ball(), min(c.image, Ball(laps[k].hi)).upper_ball());
           q.lo = any ? std::min(q.lo, c.lo) : c.lo;
           q.hi = any ? std::max(q.hi, c.hi) : c.hi;
           q.image = any ? Ball::hull(q.image, part) : part;
@@ -588,6 +589,10 @@ LapPartition prove_laps(double a, double b, double q, const LapOptions& opt) {
       core_open = false;
     }
   }
+  // The searches over the laps (laps_met, meets_row) need both ends nondecreasing: widen the hulls
+  // where a cell of a break starts after the next lap's first cell (a superset keeps every bound).
+  for (std::size_t j = r.laps.size(); j-- > 1;) r.laps[j - 1].lo = std::min(r.laps[j - 1].lo, r.laps[j].lo);
+  for (std::size_t j = 1; j < r.laps.size(); ++j) r.laps[j].hi = std::max(r.laps[j].hi, r.laps[j - 1].hi);
   const std::size_t nl = r.laps.size();
 #pragma omp parallel for schedule(dynamic, 16)
   for (std::size_t j = 0; j < nl; ++j) {
