@@ -317,11 +317,7 @@ const Experiment experiment{
                         static_cast<long long>(lp.turning_cells), br.refined_pieces, h_lo, h_up, gap, std::log(1.0 / (2 * M_PI * pt.b))});
           worst_gap = std::max(worst_gap, br.verdict.proved ? gap : 1.0);
           const std::string id = std::string("cert.sec7.entropy_bracket.") + pt.tag;
-          const std::string statement =
-              "At " + box.describe() +
-              " (double values), [t2, t3) is covered by the laps of T (intervals on which T is proved continuous and monotone, "
-              "every break accounted for), and h_top(T) lies between ln rho of the covering graph on the laps and ln rho of the matrix "
-              "\"T(I_j) meets I_k\" (the laps, refined once by their preimages where the gap is wide), both rho bounded by Collatz-Wielandt.";
+          const std::string statement = "At " + box.describe() + ": the laps of T give proved lower and upper bounds of h_top(T).";
           Json ev = Json::object();
           ev.set("proved", br.verdict.proved)
               .set("laps", static_cast<long long>(lp.laps.size()))

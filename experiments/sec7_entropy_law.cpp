@@ -133,11 +133,7 @@ const Experiment experiment{
       long long ordered = 0;
       for (const Row& r : rows) ordered += r.e.verdict.proved && r.e.h_lower() <= r.e.h_upper() ? 1 : 0;
       out.claim("cert.sec7.entropy_law_points", "Section 7", EvidenceKind::Certified,
-                "At " + std::to_string(proved) + " of " + std::to_string(rows.size()) + " points of the line q/a = " + format_shortest(q) +
-                    ", b/a log-spaced in [" + format_shortest(b_lo) + ", " + format_shortest(b_hi) +
-                    "], and of the line b/a = " + format_shortest(b_q) + ", q/a in [" + format_shortest(q_lo) + ", " + format_shortest(q_hi) +
-                    "], the laps of T are proved and h_top(T) is bounded from both sides (ball arithmetic); at the others the step not "
-                    "proved is named in the data.")
+                "Both bounds of h_top(T) proved at " + std::to_string(proved) + " of " + std::to_string(rows.size()) + " points of the two lines.")
           .ours()
           .evidence("points", static_cast<long long>(rows.size()))
           .evidence("proved", proved)
@@ -145,9 +141,8 @@ const Experiment experiment{
           .evidence("ordered", ordered)
           .holds(proved > 0 && ordered == proved);
       out.claim("sec7.entropy_law", "Section 7", EvidenceKind::Sampled,
-                "Along q/a = " + format_shortest(q) + " for b/a <= " + format_shortest(kFitMax) +
-                    ", h_top(T) = ln(a/b) - c with one constant c (fitted): every certified bracket there lies within " +
-                    format_shortest(kLawTolerance) + " of ln(a/b) - c.")
+                "For b/a <= " + format_shortest(kFitMax) + " at q/a = " + format_shortest(q) + ", ln(a/b) - c (c fitted) lies within " +
+                    format_shortest(kLawTolerance) + " of every certified bracket of h_top(T).")
           .ours()
           .evidence("c", c)
           .evidence("fitted_points", static_cast<long long>(x.size()))

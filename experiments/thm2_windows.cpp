@@ -370,9 +370,8 @@ const Experiment experiment{
       out.macro("WinCoveredPercent", 100 * width_c0 / spacing_c0, 2);
       out.macro("WinFitMaxRatio", format_shortest(kFitMaxRatio));
 
-      const std::string statement = "At q/a = " + format_shortest(q) + ", each floating interval of b/a in [" + format_shortest(b_lo) + ", " +
-                                    format_shortest(b_hi) + "] with T(t2) = t2 is a window proved in ball arithmetic, its edges bracketed to " +
-                                    format_shortest(kEdgeRel) + " relative.";
+      const std::string statement = "At q/a = " + format_shortest(q) + ", every window of b/a in [" + format_shortest(b_lo) + ", " +
+                                    format_shortest(b_hi) + "] with T(t2) = t2 is proved, edges to " + format_shortest(kEdgeRel) + " relative.";
       auto& c = out.claim("cert.thm2.all_windows", "Theorem 2", EvidenceKind::Certified, statement).ours();
       c.parameter_object(Json::object().set("a", 1.0).set("q", q).set("b_over_a", Json::array().push(b_lo).push(b_hi)));
       c.evidence_object(Json::object()
@@ -384,8 +383,7 @@ const Experiment experiment{
       c.holds(n > 0 && proved == static_cast<long long>(n) && narrow == proved);
 
       out.claim("thm2.windows_grid", "Theorem 2", EvidenceKind::Sampled,
-                "An independent grid of " + std::to_string(grid) +
-                    " b/a has T(t2) = t2 at every point inside a proved window and at none outside the brackets.")
+                "On a grid of " + std::to_string(grid) + " b/a: T(t2) = t2 in every proved window, nowhere outside.")
           .ours()
           .evidence("grid_points", grid)
           .evidence("grid_failed", grid_failed)
@@ -396,7 +394,7 @@ const Experiment experiment{
           .holds(grid_in_bad == 0 && grid_super_outside == 0 && grid_failed == 0);
 
       out.claim("thm2.window_edges", "Theorem 2", EvidenceKind::Sampled,
-                "Each proved window opens as theta2(t2) crosses t2 and closes as it crosses t3 (a grazing there) or as T1(t2) jumps.")
+                "Each proved window opens as theta2(t2) crosses t2, closes as it crosses t3 or T1(t2) jumps.")
           .ours()
           .evidence("plateau_t2", kind_count[0])
           .evidence("plateau_t3", kind_count[1])
@@ -408,7 +406,7 @@ const Experiment experiment{
       out.macro("WinFollowedAtTwo", std::to_string(at_t2));
       out.macro("WinFollowedMet", std::to_string(at_t2_met));
       out.claim("thm2.windows_fixed_point", "Theorem 2", EvidenceKind::Sampled,
-                "The fixed point of T in Lemma 4's J1, followed up in b, ends by reaching t2 inside a proved window's left bracket.")
+                "The fixed point in J1, followed up in b, reaches t2 in a proved window's left bracket.")
           .ours()
           .evidence("followed", followed)
           .evidence("ends_at_t2", at_t2)

@@ -6,7 +6,7 @@
 #     on the line (same q/a).
 # (b) Along b/a fixed (line "q"), against q/a: the two bounds.
 load figdir."/style.gp"
-set terminal cairolatex pdf input size 15cm,6.2cm
+set terminal cairolatex pdf input size 15cm,5.2cm
 set output "fig_entropy_law.tex"
 f = data."/sec7_entropy_law.tsv"
 fit = data."/sec7_entropy_law-fit.tsv"
@@ -26,7 +26,7 @@ set format x '$%g$'; set format y '$%g$'
 set xrange [X_min - 0.2:X_max + 0.2]
 set yrange [0:*]
 set label 1 sprintf('(a) $q/a=%s$', q_law) at graph 0.03, graph 0.93 left front
-set key at graph 0.98, graph 0.3 right samplen 1.5 spacing 0.9 font ',8'
+set key at graph 0.97, graph 0.04 right bottom samplen 1.5 spacing 1.2
 plot x - log(2 * pi) w l dt 2 lc rgb c_grey title '$\ln\frac{a}{2\pi b}$', \
      x - C_min w l lw 1 lc rgb c_alt title sprintf('$\ln\frac{a}{b}-%.3f$ (fit)', C_min), \
      log(2) w l dt 3 lc rgb c_prog title '$\ln 2$', \
@@ -45,7 +45,7 @@ set xrange [*:*]
 set yrange [*:*]
 eval tex_macro("b_law", "sec7_entropy_law", "LawB")
 set label 1 sprintf('(b) $b/a=%s$', b_law) at graph 0.03, graph 0.93 left front
-set key at graph 0.98, graph 0.93 right samplen 1.5 font ',8'
+set key at graph 0.97, graph 0.05 right bottom samplen 1.5 spacing 1.2
 plot f using (strcol("line") eq "q" ? column("q_over_a") : NaN):"h_upper" w lp pt 7 ps 0.3 lc rgb c_free title 'certified upper', \
      f using (strcol("line") eq "q" ? column("q_over_a") : NaN):"h_lower" w lp pt 6 ps 0.3 lc rgb c_stop title 'certified lower'
 unset multiplot
