@@ -154,9 +154,17 @@ TEST(Observables, CertifiedIsLastAndNotInTheDefaultSet) {
   EXPECT_EQ(s.columns(), (std::vector<std::string>{"covering", "period", "certified", "certified_step"}));
   const auto d = ObservableSet::parse("observables", kDefaultObservables);
   EXPECT_FALSE(d.has(Observable::Certified));
-  for (Observable o : kAllObservables) EXPECT_EQ(d.has(o), o != Observable::Certified && o != Observable::Region) << observable_name(o);
+  for (Observable o : kAllObservables)
+    EXPECT_EQ(d.has(o), o != Observable::Certified && o != Observable::Region && o != Observable::Entropy) << observable_name(o);
   EXPECT_EQ(spec_of("0.8:0.9:2", "0.01:0.02:2", "certified,lyapunov").columns(),
             (std::vector<std::string>{"index", "q_over_a", "b_over_a", "status", "lyapunov", "certified", "certified_step", "error"}));
+}
+
+TEST(Observables, EntropyHasThreeColumnsLast) {
+  const auto s = ObservableSet::parse("observables", "entropy,region,covering");
+  EXPECT_EQ(s.canonical(), "covering,region,entropy");
+  EXPECT_EQ(s.columns(), (std::vector<std::string>{"covering", "region", "region_uniform", "region_boxes", "region_stop", "entropy_lower",
+                                                   "entropy_upper", "entropy_laps"}));
 }
 
 TEST(Observables, RegionHasFourColumnsAfterCertified) {
