@@ -19,12 +19,14 @@ const char* observable_name(Observable o) {
   return "?";
 }
 
-namespace {
-std::string known_names() {
+std::string observable_names(const char* separator) {
   std::string s;
-  for (Observable o : kAllObservables) s += (s.empty() ? "" : ", ") + std::string(observable_name(o));
+  for (Observable o : kAllObservables) s += (s.empty() ? "" : separator) + std::string(observable_name(o));
   return s;
 }
+
+namespace {
+std::string known_names() { return observable_names(", "); }
 }  // namespace
 
 ObservableSet ObservableSet::parse(const std::string& option, const std::string& text) {

@@ -7,6 +7,7 @@
 #include "kit/options.hpp"
 #include "sweep/cell.hpp"
 #include "sweep/header.hpp"
+#include "sweep/observables.hpp"
 
 namespace dfchaos::sweep {
 
@@ -31,9 +32,10 @@ void SweepArguments::add_to(CLI::App* app) {
       ->required()
       ->type_name("LO:HI:N[:KIND]");
   app->add_option("--observables", observables,
-                  "comma-separated: covering,superstable,lyapunov,rate,period,certified,region\n"
-                  "(default " +
-                      std::string(kDefaultObservables) + ": all but certified and region, proofs per cell)")
+                  "comma-separated: " + observable_names(",") +
+                      "\n"
+                      "(default " +
+                      std::string(kDefaultObservables) + ": all but certified, region and entropy, proofs per cell)")
       ->type_name("LIST");
   app->add_option("--max-branches", max_branches,
                   "covering's work budget per cell: a cell whose [t2, 3pi/2] holds more branches of T1\n"

@@ -51,6 +51,9 @@ inline constexpr const char* kDefaultObservables = "covering,superstable,lyapuno
 /// The name as written on the command line and in the header ("covering", ...).
 const char* observable_name(Observable o);
 
+/// Every observable's name in column order, joined by `separator` (the help and the error messages).
+std::string observable_names(const char* separator);
+
 /// A set of observables.
 class ObservableSet {
  public:
