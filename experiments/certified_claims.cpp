@@ -36,7 +36,7 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
-/// A parameter point of the list.
+/// A parameter point (A-D: the report's points).
 struct Point {
   const char* tag;  ///< letters only (claim ids, macros)
   double q, b;      ///< q/a and b/a (a = 1)

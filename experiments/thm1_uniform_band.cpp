@@ -28,7 +28,7 @@ using namespace dfchaos::kit;
 
 namespace {
 
-/// The band of issue 31 against which the coverage is measured (b/a x q/a).
+/// The band against which the coverage is measured (b/a x q/a): where the sampled plane first found coverings.
 constexpr double kBandBLo = 1e-4, kBandBHi = 2e-3, kBandQLo = 0.78, kBandQHi = 0.99;
 
 }  // namespace

@@ -92,9 +92,8 @@ pdftotext -layout "$out/report.pdf" "$out/report.txt"
 python3 - "$abs" "$out" "$root/paper/report.tex" <<'PY'
 import glob, json, os, re, subprocess, sys
 build, out = sys.argv[1], sys.argv[2]
-# The report's length: the third reading (issue 50) asked for a main text of at most 24 pages and 34
-# in all, with the bibliography and the written argument behind Lemma 4 for every small b/a
-# (docs/architecture.md says what was cut and what is left).
+# The report's length: a main text of at most 24 pages and 34 in all (docs/architecture.md,
+# "The report's length").
 MAX_MAIN, MAX_TOTAL = 24, 34
 # A researcher's extension of the report may run longer: DFCHAOS_REPORT_LIMITS=warn (make reproduce
 # REPORT_LIMITS=warn, docs/adding-an-experiment.md) turns the length limits into warnings; CI keeps

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: GPL-3.0-or-later
 # A build directory configured for another clone: `make configure` says what to do (remove it, or
-# choose another BUILD) in one line and exits 2, instead of CMake's CMakeCache error (issue 53, item 7).
+# choose another BUILD) in one line and exits 2, instead of CMake's CMakeCache error.
 # A directory configured for these sources passes the same check in every other make run.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd -P)

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: GPL-3.0-or-later
-"""Hostile input to the checker and the tool (issue 47, items 1, 2, 5, 7 and 8), CTest `hostile_input`
+"""Hostile input to the checker and the tool, CTest `hostile_input`
 (label failure). The Python items (4, 6) are in tests/python/test_budgets.py, the certificate
 mutations (3) in tests/recheck_certificates.py and tests/recheck_paper_construction.sh.
 

@@ -112,7 +112,7 @@ class Verdicts(unittest.TestCase):
         self.assertEqual(row(cs, "lemma4")[2], "certified+argument 1, sampled 1")
 
     def test_a_claim_at_two_b_counts_two_points(self):
-        # dynamics_gallery's Section 5 claims are checked at b/a and at b_proof (issue 50, item 5)
+        # dynamics_gallery's Section 5 claims are checked at b/a and at b_proof
         cs = [claim("g", "Section 5 (theta in [t2, 5pi/4])", params={"b_over_a": 0.01, "b_proof": 5e-5, "q_over_a": 0.85})]
         self.assertEqual(row(cs, "sec5")[3], "2 points")
 

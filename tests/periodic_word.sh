@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: GPL-3.0-or-later
-# A periodic orbit of any itinerary (issue 53, item 3), three ways: `dfchaos periodic --word W`
+# A periodic orbit of any itinerary, three ways: `dfchaos periodic --word W`
 # (floating point: the fixed point of the composed inverse branches), `dfchaos certify periodic
 # --word W` (Krawczyk enclosure in Arb, with a certificate) and `dfchaos-recheck` (the MPFI checker
 # re-verifies the certificate). The floating orbit must lie within its precision floor of the

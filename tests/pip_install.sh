@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: GPL-3.0-or-later
-# `pip install .` works offline from the clone (issue 53, item 6; docs/python-install.md): a venv of
+# `pip install .` works offline from the clone (docs/python-install.md): a venv of
 # Debian's interpreter gets the module from the build directory BUILD (no download, --no-index), it
 # imports from outside the clone, its T equals the build tree's to the last bit, and it uninstalls.
 #   tests/pip_install.sh SOURCE BUILD PYTHON

@@ -173,7 +173,7 @@ def rejects_arc_l1(cli, checker, what, d, bad):
         "q_lower": (lambda c: c["parameters"]["q_over_a"]["lo"].update(hex=float.hex(0.6)), 1, "stops within W"),
         "b_larger": (lambda c: set_hex(c, "parameters", "b_over_a_max", 0.2), 1, "stops within W"),
         "grid_short": (lambda c: c["witnesses"]["delta_cuts"].pop(), 1, "grid covers"),
-        # the amplitude is a field of the format even where only ratios matter (issue 47)
+        # the amplitude is a field of the format even where only ratios matter
         "a_missing": (lambda c: c["parameters"].pop("a"), 2, "parameters.a"),
         "a_nan": (lambda c: c["parameters"]["a"].update(hex="nan"), 2, "parameters.a"),
         "a_negative": (lambda c: c["parameters"]["a"].update(hex=float.hex(-1.0)), 2, "parameters.a"),
@@ -190,7 +190,7 @@ def rejects_lemma4_uniform(cli, checker, what, d, bad):
         "arc_tau": (lambda c: c["witnesses"]["arc_l1"]["witnesses"]["tau"].__setitem__(0, float.hex(3.2)), 1, "landing precedes"),
         "arc_missing": (lambda c: c["witnesses"].pop("arc_l1"), 2, "arc_l1"),
         "lemma1_gap": (lambda c: c["witnesses"]["lemma1"]["sub_boxes"].pop(), 1, "Lemma 1"),
-        # the embedded arc-l1 certificate must be one of this format and version (issue 47)
+        # the embedded arc-l1 certificate must be one of this format and version
         "arc_format_missing": (lambda c: c["witnesses"]["arc_l1"].pop("format"), 2, "witnesses.arc_l1.format"),
         "arc_format_garbled": (lambda c: c["witnesses"]["arc_l1"].update(format="dfchaos-certificat"), 2, "witnesses.arc_l1.format"),
         "arc_version_missing": (lambda c: c["witnesses"]["arc_l1"].pop("version"), 2, "witnesses.arc_l1.version"),

@@ -31,7 +31,7 @@ cat "$tmp/out"
 "$checker" "$tmp/fewer.json" >"$tmp/out" 2>&1; rc=$?
 check "one discontinuity deleted: rejected (exit $rc)" '((rc == 1))'
 cat "$tmp/out"
-# The embedded certificates must be of this format and version, as files of their own (issue 47).
+# The embedded certificates must be of this format and version, as files of their own.
 "$py" - "$f" "$tmp" <<'PY'
 import json, os, sys
 c = json.load(open(sys.argv[1]))

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: GPL-3.0-or-later
-# thm2_windows (issue 52, item 1): every superstable window it finds (here --fast, b/a in [0.03, 0.1])
+# thm2_windows: every superstable window it finds (here --fast, b/a in [0.03, 0.1])
 # is proved, with a window certificate that dfchaos-recheck accepts and scripts/recheck_certificates.py
 # binds to its record in the claim cert.thm2.all_windows (edges, window number); edges bracketed to
 # 1e-12 relative, each edge's border collision named. Certificates filed under another window, or

@@ -217,7 +217,7 @@ TEST(CertifiedCovering, ProvedAtTheIssuePointsNotAtB002) {
     EXPECT_LT(c.J0.hi, c.J1.lo);
     EXPECT_GE(c.J0.lo, *Parameters(1, pq[1], pq[0]).t2());
     EXPECT_LE(c.J1.hi, 1.5 * M_PI);
-    EXPECT_LT(c.seconds, 30.0);  // the issue's cost bound per proof
+    EXPECT_LT(c.seconds, 30.0);  // the cost bound per proof
     // The floating T at the ends agrees with what was proved there.
     const Parameters p(1, pq[1], pq[0]);
     for (const SegmentProof* J : {&c.J0, &c.J1}) {

@@ -148,7 +148,7 @@ TEST(Covering, PaperConstructionOfLemma4) {
   EXPECT_FALSE(lemma4_construction(Parameters(1.0, 0.02, 0.85)).all());
 }
 
-// Regression (issue 50, item 1): step (iv) scanned each branch of L2 at 200 points and missed the arc
+// Regression: step (iv) scanned each branch of L2 at 200 points and missed the arc
 // T = t2 when it was narrower than the spacing (at q/a = 0.759, b/a = 5.56e-5 it is about the last
 // 0.3 % of each interior branch), so the construction was reported to fail at q/a = 0.7361 and 0.759
 // inside the region where `certify lemma4-uniform` proves it for every b/a <= 7.82e-5 and q/a in

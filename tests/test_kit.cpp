@@ -131,7 +131,7 @@ TEST(Claims, PrecisionLimitedIsInconclusiveNeverFails) {
   EXPECT_NE(c.to_json().dump().find("\"evidence_kind\": \"precision-limited\""), std::string::npos);
 }
 
-// Issue 50, item 7: a statement that follows from certified inequalities by a written argument has
+// A statement that follows from certified inequalities by a written argument has
 // its own kind, written as such, never as "certified".
 TEST(Claims, CertifiedInequalitiesWithAWrittenArgumentHaveTheirOwnKind) {
   Claim c("x.u", "Lemma 4", EvidenceKind::CertifiedArgument, "for every small b/a");

@@ -178,7 +178,7 @@ TEST_F(PerturbedCoveringTest, PersistsForASmallPerturbationCheckedByAnIndependen
   EXPECT_NE(r.u[0], r0.u[0]);
 }
 
-// Regression (issue 32): at eps = 0.01 the stop arc next to J0 has grown over J0's end, and the
+// Regression: at eps = 0.01 the stop arc next to J0 has grown over J0's end, and the
 // search returned that end itself as u (the unperturbed value to the last digit) instead of the
 // arc's edge. u must now be the edge on the side of w: on the arc at u, off it 1e-5 beyond.
 TEST_F(PerturbedCoveringTest, RegressionUIsTheEdgeOfTheStopArcNotTheEndOfJ) {

@@ -6,7 +6,7 @@
 // the tool streams the events to stdout and spools the sample rows to an unnamed temporary file.
 //
 // The regression tests run the tool in a forked child (dfchaos::cli::run, in-process) under an
-// address-space limit kHeadroom above what the test process maps, on the two commands
+// address-space limit kHeadroom above what the test process maps, on two long commands
 // reduced to 1e6 events and 1e6 samples (the old code needed more than 75 MB for either), and check
 // the exit status, the shape of the output and that the child's peak resident memory exceeds that
 // of a 10-time-unit run by less than kFlatGrowth. The other tests check that the streaming and the
@@ -310,7 +310,7 @@ ChildRun reference_run() {
 }
 
 TEST(SimulateStreaming, Regression_28_7_EventsStreamInFlatMemory) {
-  // The issue's `--t-end 1e12 --max-events 1e8` with 1e6 events: the give-up after them leaves the
+  // The command `--t-end 1e12 --max-events 1e8` with 1e6 events: the give-up after them leaves the
   // rows already streamed on stdout, one line on stderr, exit status 1, and no out-of-memory.
   const ChildRun ref = reference_run();
   const ChildRun r = run_simulate(with(kModel, {"--t-end", "1e12", "--max-events", "1e6"}));
@@ -325,7 +325,7 @@ TEST(SimulateStreaming, Regression_28_7_EventsStreamInFlatMemory) {
 }
 
 TEST(SimulateStreaming, Regression_28_7_SamplesSpoolInFlatMemory) {
-  // The issue's `--sample 1 --t-end 4.9e6` with 1e6 samples (and about 3.2e5 events): complete, the
+  // The command `--sample 1 --t-end 4.9e6` with 1e6 samples (and about 3.2e5 events): complete, the
   // events on stdout, the sample table in its own file (streamed into a temporary beside it), exit
   // status 0.
   const ChildRun ref = reference_run();

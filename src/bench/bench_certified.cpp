@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 /// @file bench_certified.cpp
 /// @brief `make bench`: time per certified proof, one core. A covering proof (Lemma 4)
-/// at each of the issue's parameter points, with and without the floating candidate search; one
+/// at each of the parameter points A-D, with and without the floating candidate search; one
 /// certified T at a thin phase; Lemma 2 on L0; the periodic orbit of period 12; a Lemma 4 proof
-/// over a parameter box. The issue's target: a covering proof at one point in at most 30 s.
-/// Across b/a (issue 31): the covering proof, candidates included, at q/a = 0.85 and b/a = 1e-2 ...
+/// over a parameter box. The target: a covering proof at one point in at most 30 s.
+/// Across b/a: the covering proof, candidates included, at q/a = 0.85 and b/a = 1e-2 ...
 /// 1e-12, each under 1 s and 500 MB (the process's peak resident size after the proof, an upper
-/// bound), the slowest at most 10 times the fastest. Theorem 2's windows (issue 52): one window at each
+/// bound), the slowest at most 10 times the fastest. Theorem 2's windows: one window at each
 /// end of b/a in [1e-3, 0.1] at q/a = 0.85, and every window of that axis on all cores (target: 5 minutes
 /// on 2 cores). The entropy of T bounded from both sides at each point and at the four
 /// together (target: 60 s on 2 cores).
@@ -91,7 +91,7 @@ void bm_box(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(prove_covering(box, c).verdict.proved);
 }
 
-/// Theorem 2's windows at q/a = 0.85 (issue 52): the floating intervals of b/a in [1e-3, 0.1] (5000
+/// Theorem 2's windows at q/a = 0.85: the floating intervals of b/a in [1e-3, 0.1] (5000
 /// samples, as thm2_windows), their ends sharpened, found once.
 const std::vector<std::pair<double, double>>& window_intervals() {
   static const std::vector<std::pair<double, double>> w = [] {
@@ -114,7 +114,7 @@ void bm_window(benchmark::State& state) {
   state.SetLabel("b/a=" + format_significant(lo, 3) + (proved ? " proved" : " NOT proved"));
 }
 
-/// Every window of the axis, on all threads (OMP_NUM_THREADS): the issue's target is 5 minutes on 2 cores.
+/// Every window of the axis, on all threads (OMP_NUM_THREADS): the target is 5 minutes on 2 cores.
 void bm_window_axis(benchmark::State& state) {
   const auto& w = window_intervals();
   for (auto _ : state) {
@@ -128,7 +128,7 @@ void bm_window_axis(benchmark::State& state) {
 }
 
 /// The entropy of T bounded from both sides at a point (laps.hpp), on all threads; and the four
-/// points together (the issue's target: at most 60 s on 2 cores, each gap at most 1 % of the upper end).
+/// points together (the target: at most 60 s on 2 cores, each gap at most 1 % of the upper end).
 void bm_entropy_bracket(benchmark::State& state) {
   const Point& p = kPoints[state.range(0)];
   double gap = 0;
@@ -266,7 +266,7 @@ int main(int argc, char** argv) {
                 slowest, peak / 1e6);
     std::printf("target %-55s %s (%.3g)\n", "covering at b/a 1e-2..1e-12: slowest/fastest <= 10", ratio ? "met" : "MISSED", slowest / fastest);
   }
-  // Theorem 2's windows (issue 52): the whole axis at q/a = 0.85 within 5 minutes on 2 cores.
+  // Theorem 2's windows: the whole axis at q/a = 0.85 within 5 minutes on 2 cores.
   // (its run name carries the iteration count and real time: "window_axis_q0.85/iterations:1/real_time")
   if (const auto it = std::find_if(collector.seconds.begin(), collector.seconds.end(),
                                    [](const auto& kv) { return kv.first.rfind("window_axis_q0.85", 0) == 0; });

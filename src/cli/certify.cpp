@@ -186,8 +186,9 @@ CLI::App* add_certify(CLI::App& app, CertifyOptions& o) {
                                             "proof of Lemma 4, arc L1 = [197pi/100, t3): from rest there the progression stops in (t3, t0 + "
                                             "2pi), for every b/a up to an explicit bound and q/a in a box"},
         {"lemma4-uniform",
-         "Lemma 4 / Theorem 1 for every b/a up to an explicit bound and q/a in a box: the paper's construction on L2, its inequalities "
-         "proved for all such b/a at once"}}) {
+         "Lemma 4 / Theorem 1 for every b/a up to an explicit bound and q/a in a box: the paper's construction on the best segment "
+         "[pi + w_lo, pi + w_hi] found (the paper's L2 or a wider one; the result names it), its inequalities proved for all such b/a at "
+         "once"}}) {
     auto* s = c->add_subcommand(name, text);
     add_a(s, o);
     add_parameter(s, o.q, kQ, "q, the largest dry friction (q/a is what the proof is about; 0 < q <= a)", true);

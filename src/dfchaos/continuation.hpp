@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 /// @file continuation.hpp
 /// @brief A periodic orbit of T followed in the parameter b (a and q fixed), in floating point, up to
-/// the border collision where it ends (issue 52, item 2; the certified counterpart, existence over
+/// the border collision where it ends (the certified counterpart, existence over
 /// each step's interval of b, is certified/continuation.hpp).
 ///
 /// **The orbit.** A cycle \f$x_0, \dots, x_{m-1}\f$ of \f$T\f$ with \f$T(x_j) = x_{j+1 \bmod m}\f$, each step in

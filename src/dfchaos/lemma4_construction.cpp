@@ -34,7 +34,7 @@ Lemma4Construction lemma4_construction(const Parameters& p, int l1_points) {
   // located by bisection on theta2 from the branch's ends. A sampled scan of the branch (200 points,
   // as this check did before) misses the arc where T = t2 when it is narrower than the spacing: near
   // z_(i+1) it can be a fraction of a percent of the branch, and the construction was then reported
-  // to fail inside the region that lemma4-uniform proves (issue 50). A branch that does not show the
+  // to fail inside the region that lemma4-uniform proves. A branch that does not show the
   // monotone structure sends the search back to the dense scan (200 points per branch, as before),
   // which remains sampled.
   CoveringSearch s = CoveringSearch::branchwise();

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
-"""Long calls of the module are bounded and interruptible (issue 47, items 4 and 6).
+"""Long calls of the module are bounded and interruptible.
 
 - certify has the tool's budgets (max_seconds, max_memory; defaults 60 s and 2 GiB, the tool's
   --max-seconds and --max-memory) and gives up with the tool's wording, naming the keyword;
@@ -25,7 +25,7 @@ import dfchaos
 
 pytestmark = pytest.mark.failure
 
-# Seconds allowed between SIGINT and the end of the child process (the issue asks for 1 s; measured
+# Seconds allowed between SIGINT and the end of the child process (the target is 1 s; measured
 # here 25-60 ms). The module's watcher checks for the signal every 0.1 s and the library polls its
 # stop token at every step, box, branch or cell; the rest of this bound is for a loaded machine and
 # the sanitizers. A check of behaviour, not a timing test: the calls below ran for 20 s or more after

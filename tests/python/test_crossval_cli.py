@@ -209,7 +209,7 @@ def _is_number(text):
 
 @pytest.mark.crossval
 def test_orbit_diagram_equals_the_tool(cli):
-    """dfchaos.orbit_diagram and `dfchaos orbit-diagram` (issue 53, item 4): the same cells, phases
+    """dfchaos.orbit_diagram and `dfchaos orbit-diagram`: the same cells, phases
     and marks to the last bit, with the defaults of both (one C++ function and one set of defaults)
     and with settings given; the q/a axis reaches cells whose orbit stops (lyapunov -inf, a return of t2)."""
     q = [0.8, 0.96705685618729098]
@@ -247,7 +247,7 @@ def test_orbit_diagram_refuses_as_the_tool(cli, kw, opts):
 @pytest.mark.crossval
 @pytest.mark.parametrize("word", ["0011", "1", "0111010"])
 def test_periodic_orbit_of_any_itinerary_equals_the_tool_and_its_proof(cli, word):
-    """dfchaos.periodic_orbit equals `dfchaos periodic --word` to the last bit (issue 53, item 3), and
+    """dfchaos.periodic_orbit equals `dfchaos periodic --word` to the last bit, and
     dfchaos.certify("periodic", p, word=...) proves the orbit of that itinerary, the floating points
     within their precision floor of the certified balls."""
     p = dfchaos.Parameters(1.0, 0.003, 0.85)
@@ -279,7 +279,7 @@ def test_periodic_orbit_refuses_as_the_tool(cli):
 
 @pytest.mark.crossval
 def test_follow_orbit_equals_the_tool_and_ends_where_it_says(cli):
-    """dfchaos.follow_orbit equals `dfchaos continue` to the last bit (issue 52, item 2), every step's
+    """dfchaos.follow_orbit equals `dfchaos continue` to the last bit, every step's
     interval is proved (--certify), and the end is a border collision located to --min-step."""
     p = dfchaos.Parameters(1.0, 0.003, 0.85)
     # (up to 0.00307: nearer to where this orbit ends, at b/a = 0.0030889, its multiplier falls and

@@ -128,7 +128,7 @@ def provenance(text):
 ])
 def test_every_table_says_where_it_came_from(cli, command, extra, settings):
     """The tool's tables carry the sweep's header: what made them, with which build, at which
-    settings (issue 53, item 2)."""
+    settings."""
     rc, out, err = cli.run(command, *P, *extra)
     assert rc == 0, err
     title, build, got = provenance(out)
@@ -146,7 +146,7 @@ def test_every_table_says_where_it_came_from(cli, command, extra, settings):
     ("simulate", ["--x0", "0", "--y0", "0", "--v0", "0", "--t0", "0", "--t-end", "5"]),
 ])
 def test_a_defaults_to_one_as_in_sweep_and_certify(cli, command, extra):
-    """One rule for a in every command (issue 53, item 6): left out, it is 1."""
+    """One rule for a in every command: left out, it is 1."""
     rc1, out1, err1 = cli.run(command, "--b", "0.02", "--q", "0.85", *extra)
     rc2, out2, err2 = cli.run(command, *P, *extra)
     assert rc1 == 0 and rc2 == 0, (err1, err2)

@@ -354,7 +354,7 @@ def test_certify_matches_the_cli_and_refuses_bad_input(cli):
         return x
     assert untimed(rec) == untimed(json.loads(out))
     assert rec["proved"] is True
-    # at the point of a Parameters, as the module's other functions take it (issue 53, item 6); the
+    # at the point of a Parameters, as the module's other functions take it; the
     # tool's a defaults to 1 as the module's does
     assert untimed(dfchaos.certify("covering", dfchaos.Parameters(1.0, 0.001, 0.85))) == untimed(rec)
     rc, out, err = cli.run("certify", "covering", "--b", "0.001", "--q", "0.85")

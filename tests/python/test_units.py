@@ -124,7 +124,7 @@ def columns(cli, *args):
     ("orbit", ["--theta0", "3.5", "--steps", "20"], ["elapsed", "time"], ["penetration", "y"], [], ["theta"]),
 ])
 def test_physical_output_is_the_scaled_one_in_seconds_and_metres(cli, command, extra, times, lengths, velocities, phases):
-    """--physical (issue 53, item 5): the worked example of docs/units.md gives the rows of a = 1,
+    """--physical: the worked example of docs/units.md gives the rows of a = 1,
     b = 0.01, q = 0.85 with every time divided by omega = 100 (column name_s), lengths the same
     numbers in metres (name_m) and phases unchanged; the table says so in its '#' lines."""
     phys, scaled = columns(cli, command, *PHYS, *extra), columns(cli, command, *SCALED, *extra)
@@ -177,7 +177,7 @@ SWEEP = ["--q-range", "0.8:0.95:3", "--b-range", "1e-3:0.02:3:log", "--observabl
 @pytest.mark.crossval
 @pytest.mark.parametrize("mass,omega,amplitude", [(0.5, 100.0, 5000.0), (0.7, 123.0, 4321.0)])
 def test_physical_sweep_is_the_scaled_one_with_rate_in_metres_per_second(cli, mass, omega, amplitude):
-    """sweep --physical MASS OMEGA AMPLITUDE (issue 53, item 5): the rows of the sweep at
+    """sweep --physical MASS OMEGA AMPLITUDE: the rows of the sweep at
     a = AMPLITUDE/(MASS OMEGA^2) (computed here, in the same order of rounding), the rate times omega
     (column rate_m_per_s) and each cell's forces Q = (q/a) F0, P = 2 (b/a) F0 in newtons; the Python
     module's physical= gives the same columns."""

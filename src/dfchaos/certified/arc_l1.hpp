@@ -23,9 +23,9 @@
 ///     \f$s^* \ge (\delta - \delta_3)\cos\Delta/(2g_{hi}) > \delta - \delta_3\f$ once \f$\cos\Delta > 2g_{hi}\f$;
 ///  3. the progression starts with velocity \f$x_1 = s^{*2}H'(s^*) \le (A_{\max}/g_{lo})^2 h_{hi}\f$ and,
 ///     while \f$t - 2\pi \le S + W \le \pi/2\f$, decelerates: \f$\partial_t G_2 = 2\varepsilon - q/a + \sin t
-///     \le \sin\Delta - \kappa_{lo} + \sin(S + W) = -\gamma < 0\f$ (Eq. 17, \f$2\varepsilon \le \sin\Delta\f$);
+///     \le 2\varepsilon_{\max} - \kappa_{lo} + \sin(S + W) = -\gamma < 0\f$ (Eq. 17);
 ///     so it stops at \f$\theta_2 \in (\theta_1, \theta_1 + W)\f$ when \f$\gamma W > x_1\f$;
-///  4. \f$\theta_2 < 2\pi + S + W \le 2\pi + t_0\f$ when \f$S + W \le \arcsin(\kappa_{lo} - \sin\Delta) \le t_0\f$.
+///  4. \f$\theta_2 < 2\pi + S + W \le 2\pi + t_0\f$ when \f$S + W < \arcsin(\kappa_{lo} - 2\varepsilon_{\max}) \le t_0\f$.
 /// So \f$\theta_2 \in (t_3, t_0 + 2\pi)\f$: the mass waits for \f$t_0 + 2\pi\f$, and T = t2 wherever
 /// Lemma 1 holds (certified separately: progression.hpp). \f$\varepsilon_{\max}\f$ is the largest
 /// double with \f$2\varepsilon_{\max} \le \sin\Delta\f$: beyond it \f$L_1\f$ is empty (\f$t_3 < 197\pi/100\f$).
