@@ -17,7 +17,8 @@ claim's accepted certificates (status "premise"). Also BUILD/tables/certificates
 rows, one per family of claims that differ only in their parameter point: the report's table) and
 BUILD/certificates/SHA256SUMS (every accepted file, for `sha256sum -c`). Exits 1, writing nothing, when the checker
 rejects a certificate, when a certificate names no certified claim, and when an accepted certificate
-does not prove what its claim states (bind(): the claim holds, and the certificate's claim text,
+does not prove what its claim states (states_parameters(): the checker's verdict line states every
+parameter of the certificate; bind(): the claim holds, and the certificate's claim text,
 parameters and decisive values, b_low, the rounded doubles of vartheta0, the segments J0 and J1 or
 the number of discontinuities of Lemma 2 and their segment, are the claim's record);
 the tables are written whole (a temporary file renamed into place).
@@ -240,6 +241,39 @@ def bind(path, cert, claim, part):
     return None
 
 
+NUMBER = re.compile(r"-?0x[0-9a-f]+(?:\.[0-9a-f]*)?p[+-]?\d+|-?\d+(?:\.\d*)?(?:e[+-]?\d+)?", re.IGNORECASE)
+
+
+def states_parameters(line, cert):
+    """The checker's verdict line states what it verified in the certificate's own numbers: every
+    number of the certificate's parameters (a, b, q, their boxes, the bound of b/a, ...) occurs in the
+    line exactly, in decimal or hexadecimal, and so does every name among them (the segment). The
+    same test for every statement: no branch per statement. Returns None, or what is missing."""
+    if "; " not in line:
+        return "the checker's line does not say what it verified"
+    said = line.split("; ", 1)[1]
+    shown = set()
+    for tok in NUMBER.findall(said):
+        try:
+            shown.add(float.fromhex(tok) if "x" in tok.lower() else float(tok))
+        except ValueError:
+            pass
+
+    def walk(v, where):
+        if isinstance(v, dict) and "hex" in v:
+            x = exact(v["hex"])
+            return [] if x in shown else [f"{where} = {v['hex']}"]
+        if isinstance(v, dict):
+            return [m for k, u in v.items() for m in walk(u, f"{where}.{k}")]
+        if isinstance(v, list):
+            return [m for i, u in enumerate(v) for m in walk(u, f"{where}[{i}]")]
+        if isinstance(v, str):
+            return [] if v in said else [f"{where} = {v!r}"]
+        return []
+    missing = walk(cert.get("parameters", {}), "parameters")
+    return f"the checker's line does not state {', '.join(missing)}" if missing else None
+
+
 def write(path, text):
     """Writes text to path whole or not at all (a temporary beside it, renamed into place)."""
     tmp = f"{path}.tmp.{os.getpid()}"
@@ -346,7 +380,7 @@ def main():
             # The checker verified the file's own statement and parameters; they must be the claim's.
             stem = os.path.basename(path)[: -len(".json")]
             part = stem.split("--", 1)[1] if "--" in stem else None
-            why = bind(path, json.loads(data), record[cid], part)
+            why = states_parameters(run.stdout.strip(), json.loads(data)) or bind(path, json.loads(data), record[cid], part)
             if why:
                 rejected.append(f"{path}: accepted by the checker, but not a proof of claim {cid}: {why}")
                 continue
