@@ -14,9 +14,12 @@ BTYPE   ?= RelWithDebInfo
 CMAKE   ?= cmake
 PLANE_N ?= 2000
 PLANE_RANKS ?= 2
-# Extra ctest arguments of test-sanitize and test-clang (CI passes -LE slow: the slow tier runs in
+# Extra ctest arguments of test-sanitize and test-clang (CI passes -LE "slow|crossval": those tiers run in
 # `make test`, and three times slower under the sanitizers).
 CHECK_CTEST_ARGS ?=
+# Extra arguments of the configure step of $(BUILD) (e.g. -DDFCHAOS_DEBUG_INFO=OFF, as .ci/run sets it);
+# CMake keeps them in its cache for the later runs.
+CMAKE_ARGS ?=
 ABS     := $(abspath $(BUILD))
 
 EXPERIMENTS := $(sort $(basename $(notdir $(wildcard experiments/*.cpp))))
@@ -77,7 +80,7 @@ configure:
 	if [ -n "$$home" ] && [ "$$(cd "$$home" 2>/dev/null && pwd -P)" != "$$(pwd -P)" ]; then \
 	  echo "configure: $(BUILD)/ was configured for the sources in $$home, not these ($$(pwd -P)): remove it (rm -rf $(BUILD)) and run make again, or choose another directory (make BUILD=dir ...)" >&2; \
 	  exit 2; fi
-	@$(CMAKE) -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=$(BTYPE) > $(BUILD)/configure.log 2>&1 || { cat $(BUILD)/configure.log; exit 1; }
+	@$(CMAKE) -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=$(BTYPE) $(CMAKE_ARGS) > $(BUILD)/configure.log 2>&1 || { cat $(BUILD)/configure.log; exit 1; }
 
 build: deps configure
 	@$(CMAKE) --build $(BUILD) -j $(JOBS)
@@ -247,7 +250,7 @@ TIDY_REGEX = $(CURDIR)/($(subst $(eval) ,|,$(TIDY_DIRS)))/
 test-tidy:
 	@bash scripts/install-deps.sh check
 	@mkdir -p $(BUILD)-tidy
-	@$(CMAKE) -S . -B $(BUILD)-tidy -DCMAKE_BUILD_TYPE=$(BTYPE) -DCMAKE_EXPORT_COMPILE_COMMANDS=ON > $(BUILD)-tidy/configure.log 2>&1 \
+	@$(CMAKE) -S . -B $(BUILD)-tidy -DCMAKE_BUILD_TYPE=$(BTYPE) -DCMAKE_EXPORT_COMPILE_COMMANDS=ON -DDFCHAOS_UNITY_BUILD=OFF > $(BUILD)-tidy/configure.log 2>&1 \
 	  || { cat $(BUILD)-tidy/configure.log; exit 1; }
 	@start=$$(date +%s); \
 	files=$$(grep -cE '"file": "$(TIDY_REGEX)' $(BUILD)-tidy/compile_commands.json); \

@@ -23,7 +23,7 @@ namespace dfchaos::sweep {
 namespace fs = std::filesystem;
 
 namespace {
-constexpr const char* kOption = "resume";
+constexpr const char* kResumeOption = "resume";
 constexpr const char* kHeaderFile = "header";
 constexpr const char* kLockFile = "lock";
 /// Most entries examined in the directory (chunks are at most kMaxChunks per run; runs may add up).
@@ -51,25 +51,25 @@ fs::path Checkpoint::directory(const fs::path& file) { return fs::path(file.stri
 Checkpoint::Checkpoint(const fs::path& file, std::string header, const Shard& shard, long long positions, std::vector<std::string> columns)
     : file_(file), dir_(directory(file)), header_(std::move(header)), positions_(positions), shard_(shard), columns_(std::move(columns)) {
   std::error_code ec;
-  if (fs::exists(dir_, ec) && !fs::is_directory(dir_, ec)) throw InvalidParameter(kOption, dir_.string() + " exists and is not a directory");
+  if (fs::exists(dir_, ec) && !fs::is_directory(dir_, ec)) throw InvalidParameter(kResumeOption, dir_.string() + " exists and is not a directory");
   const bool fresh = !fs::exists(dir_, ec);
   if (fresh) fs::create_directory(dir_, ec);  // in FILE's directory, which must exist (as for --out)
   if (ec) throw kit::OutputError("resume: cannot create " + dir_.string() + " (" + ec.message() + ")", true);
   lock_.fd = ::open((dir_ / kLockFile).c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
   if (lock_.fd < 0) throw kit::OutputError("resume: cannot open " + (dir_ / kLockFile).string(), true);
   if (::flock(lock_.fd, LOCK_EX | LOCK_NB) != 0)
-    throw InvalidParameter(kOption, dir_.string() + " is in use by another run (one run per FILE at a time)");
+    throw InvalidParameter(kResumeOption, dir_.string() + " is in use by another run (one run per FILE at a time)");
   const fs::path header_path = dir_ / kHeaderFile;
   if (fresh || !fs::exists(header_path, ec)) {
-    write_file_atomically(header_path, header_, kOption);
-  } else if (read_file(kOption, header_path) != header_) {
-    throw InvalidParameter(kOption, dir_.string() +
-                                        " holds an interrupted run of another spec, build or shard; "
-                                        "rerun that command, or remove the directory to start afresh");
+    write_file_atomically(header_path, header_, kResumeOption);
+  } else if (read_file(kResumeOption, header_path) != header_) {
+    throw InvalidParameter(kResumeOption, dir_.string() +
+                                              " holds an interrupted run of another spec, build or shard; "
+                                              "rerun that command, or remove the directory to start afresh");
   }
   long long seen = 0;
   for (const auto& entry : fs::directory_iterator(dir_, ec)) {
-    if (++seen > kMaxEntries) throw InvalidParameter(kOption, dir_.string() + " holds too many files");
+    if (++seen > kMaxEntries) throw InvalidParameter(kResumeOption, dir_.string() + " holds too many files");
     const std::string name = entry.path().filename().string();
     if (name == kHeaderFile || name == kLockFile) continue;
     if (name.find(".tmp.") != std::string::npos) {  // a chunk whose writer was interrupted: never renamed
@@ -78,7 +78,7 @@ Checkpoint::Checkpoint(const fs::path& file, std::string header, const Shard& sh
     }
     Interval c;
     if (!parse_chunk_name(name, c) || c.begin < 0 || c.end <= c.begin || c.end > positions_)
-      throw InvalidParameter(kOption, entry.path().string() + " is not a chunk of this run");
+      throw InvalidParameter(kResumeOption, entry.path().string() + " is not a chunk of this run");
     (void)read_chunk(entry.path(), c);  // refused unless sealed and every row well-formed
     insert(c);
   }
@@ -95,7 +95,7 @@ void Checkpoint::Lock::release() {
 void Checkpoint::insert(const Interval& c) {
   auto it = std::lower_bound(done_.begin(), done_.end(), c, [](const Interval& x, const Interval& y) { return x.begin < y.begin; });
   if ((it != done_.end() && it->begin < c.end) || (it != done_.begin() && std::prev(it)->end > c.begin))
-    throw InvalidParameter(kOption, dir_.string() + ": chunk " + chunk_name(c) + " overlaps another");
+    throw InvalidParameter(kResumeOption, dir_.string() + ": chunk " + chunk_name(c) + " overlaps another");
   done_.insert(it, c);
 }
 
@@ -106,28 +106,28 @@ long long Checkpoint::done_positions() const {
 }
 
 std::string Checkpoint::read_chunk(const fs::path& path, const Interval& c) const {
-  const std::string text = read_file(kOption, path);
+  const std::string text = read_file(kResumeOption, path);
   const std::string advice = " (remove this chunk file and rerun: only its cells are computed again)";
   Seal seal;
   std::string_view body;
   try {
-    body = check_text_seal(kOption, path.string(), text, seal);
+    body = check_text_seal(kResumeOption, path.string(), text, seal);
   } catch (const InvalidParameter& e) {
-    throw InvalidParameter(kOption, std::string(e.what()).substr(e.parameter().size() + 2) + advice);
+    throw InvalidParameter(kResumeOption, std::string(e.what()).substr(e.parameter().size() + 2) + advice);
   }
   if (body.substr(0, header_.size()) != header_)
-    throw InvalidParameter(kOption, path.string() + " is a chunk of another run (its header differs: spec, build or shard)" + advice);
+    throw InvalidParameter(kResumeOption, path.string() + " is a chunk of another run (its header differs: spec, build or shard)" + advice);
   std::string rows(body.substr(header_.size()));
   if (seal.rows != c.size())
-    throw InvalidParameter(kOption, path.string() + " is damaged (its seal counts " + std::to_string(seal.rows) + " rows, its name " +
-                                        std::to_string(c.size()) + ")" + advice);
+    throw InvalidParameter(kResumeOption, path.string() + " is damaged (its seal counts " + std::to_string(seal.rows) + " rows, its name " +
+                                              std::to_string(c.size()) + ")" + advice);
   std::istringstream in(rows);
   try {
-    check_rows(kOption, path.string(), in, shard_, c.begin, c.size(), columns_);
+    check_rows(kResumeOption, path.string(), in, shard_, c.begin, c.size(), columns_);
   } catch (const InvalidParameter& e) {
-    throw InvalidParameter(kOption, std::string(e.what()).substr(e.parameter().size() + 2) + advice);
+    throw InvalidParameter(kResumeOption, std::string(e.what()).substr(e.parameter().size() + 2) + advice);
   }
-  if (static_cast<std::size_t>(in.tellg()) != rows.size()) throw InvalidParameter(kOption, path.string() + " is damaged (extra text)" + advice);
+  if (static_cast<std::size_t>(in.tellg()) != rows.size()) throw InvalidParameter(kResumeOption, path.string() + " is damaged (extra text)" + advice);
   return rows;
 }
 
@@ -135,7 +135,7 @@ void Checkpoint::save(const Interval& chunk, std::string_view rows) {
   std::string text = header_;
   text += rows;
   text += seal_line(chunk.size(), kit::sha256_hex(text));
-  write_file_atomically(dir_ / chunk_name(chunk), text, kOption);
+  write_file_atomically(dir_ / chunk_name(chunk), text, kResumeOption);
   insert(chunk);
 }
 
@@ -143,7 +143,7 @@ void Checkpoint::assemble() {
   if (!complete()) throw std::logic_error("Checkpoint::assemble before every chunk is done");
   {
     // Every chunk is read back and checked again: a chunk damaged since it was saved is refused.
-    AtomicFile out(file_, kOption);
+    AtomicFile out(file_, kResumeOption);
     Sealer sealer;
     out.write(header_);
     sealer.add(header_, 0);
