@@ -8,7 +8,6 @@
 
 namespace recheck {
 
-
 std::vector<Piece> pieces(const json& j, const std::string& where) {
   if (!j.is_array()) throw Malformed("'" + where + "' is not an array");
   std::vector<Piece> v;
@@ -21,7 +20,6 @@ std::vector<Piece> pieces(const json& j, const std::string& where) {
   }
   return v;
 }
-
 
 /// Requires f < 0 on [X1, X2]: the pieces lie inside [X1, X2] and cover it, and on each piece
 /// X = [x1, x2], with midpoint m in M and radius r <= R, the named test holds:
@@ -63,8 +61,6 @@ void negative_on(Steps& st, const std::vector<Piece>& ps, const Num& X1, const N
   st.require(started && mpfr_cmp(reach.x, X2.x) >= 0,
              what + ": the pieces cover [" + hex(X1) + ", " + hex(X2) + "] (no gap" + (hole ? " outside the window)" : ")"));
 }
-
-
 
 /// A number of whole turns k (JSON integer, |k| < 10^9; an unsigned JSON value is not wrapped).
 long long turn(const json& jk, const std::string& where) {
@@ -130,7 +126,6 @@ BallWitness read_ball(const json& j, const std::string& where, bool allow_none, 
   }
   return w;
 }
-
 
 Corners corners(const Iv& A, const BallWitness& w) {
   const Box& x = w.ball.box;
@@ -284,7 +279,6 @@ Outcome check_ball(Steps& st, const Iv& A, const BallWitness& w, const std::stri
   return out;
 }
 
-
 /// A T1 ball of Lemma 2 at the point b: {"theta": [x, y] (exact), "T1": {...}}; or, with `right`,
 /// the right piece of a tangency {"theta", "s0", "no_contact"} (no bracket).
 BallWitness read_t1_ball(const json& j, const std::string& where, double b, bool right) {
@@ -299,7 +293,6 @@ BallWitness read_t1_ball(const json& j, const std::string& where, double b, bool
   }
   return w;
 }
-
 
 /// T = t2 on a ball: case BC, or case AB with u_hi - 2 pi k < t2 over B (then T = max(theta2 - 2 pi k,
 /// t2) = t2).
@@ -330,7 +323,6 @@ Outcome check_at_t2(Steps& st, const Iv& A, const json& j, double b, double q, c
   st.require(w.ball.box.b_lo == b && w.ball.box.b_hi == b && w.ball.box.q_lo == q && w.ball.box.q_hi == q, who + ": at the parameter point");
   return check_ball(st, A, w, who);
 }
-
 
 /// A ball of a periodic certificate at the point (b, q) whose phases are exactly [lo, hi]: T is
 /// continuous on it and, with the theta2 bracket above t2 + 2 pi k (case AB), T = theta2 - 2 pi k

@@ -62,7 +62,8 @@ std::vector<Piece> pieces(const json& j, const std::string& where);
 ///   envelope: U(x1) < 0 and U(x2) < 0.
 ///   With `hole`, a gap (g1, g2) between the pieces is allowed where hole(g1, g2) holds (f < 0 is
 ///   proved there by another argument: Lemma 2's tangency window).
-void negative_on(Steps& st, const std::vector<Piece>& ps, const Num& X1, const Num& X2, const Fn& fn, const std::string& what, const std::function<bool(const Num&, const Num&)>& hole = {});
+void negative_on(Steps& st, const std::vector<Piece>& ps, const Num& X1, const Num& X2, const Fn& fn, const std::string& what,
+                 const std::function<bool(const Num&, const Num&)>& hole = {});
 /// A number of whole turns k (JSON integer, |k| < 10^9; an unsigned JSON value is not wrapped).
 long long turn(const json& jk, const std::string& where);
 /// Reads the T1 witnesses {"s0", "t_lo", "t_hi", "no_contact", "simple_root"} of a ball into w.
@@ -79,7 +80,8 @@ Corners corners(const Iv& A, const BallWitness& w);
 void start_set_step(Steps& st, const Iv& A, const BallWitness& w, const Corners& c, const std::string& who);
 /// Steps 4 and 5 of a ball: G1(theta, t) < 0 for t in (theta, until] at every point of the ball
 /// (`until_name` names `until` in messages), except inside the window `skip` when one is given.
-void no_contact_steps(Steps& st, const Iv& A, const BallWitness& w, const Corners& c, const Iv& until, const std::string& until_name, const Window* skip, const std::string& who);
+void no_contact_steps(Steps& st, const Iv& A, const BallWitness& w, const Corners& c, const Iv& until, const std::string& until_name,
+                      const Window* skip, const std::string& who);
 /// Steps 1-5 of a ball (README.md), the part about T1: for every point of the ball, T1 is the only,
 /// simple zero of G1 in [t_lo, t_hi] and G1 < 0 on (theta, t_lo] (outside the window `skip`, when
 /// given); so T1 is continuous on the ball (where the window is proved free of zeros otherwise).

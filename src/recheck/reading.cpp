@@ -80,7 +80,6 @@ void require_embedded(const json& j, const std::string& statement, const std::st
   if (!st.is_string() || st.get<std::string>() != statement) throw Malformed("'" + where + "' is not a " + statement + " certificate");
 }
 
-
 /// field of the format (docs/certificates.md), an exact double > 0.
 void require_amplitude(const json& c) {
   const json& p = field(c, "parameters", "");
@@ -115,13 +114,11 @@ std::pair<Num, Num> exact_pair(const json& j, const std::string& where) {
   return {exact(j[0], where + "[0]"), exact(j[1], where + "[1]")};
 }
 
-
 /// The parameters (a, b, q) of a certificate at a point.
 std::tuple<double, double, double> read_point(const json& c) {
   const json& p = field(c, "parameters", "");
   return {parameter(p, "a", "parameters."), parameter(p, "b", "parameters."), parameter(p, "q", "parameters.")};
 }
-
 
 /// A list of exact doubles (the grid's cuts: at least two; whether they increase from 0 is a step).
 std::vector<double> cuts(const json& j, const std::string& where, bool grid) {

@@ -24,7 +24,6 @@ constexpr int kVersion = 1;
 /// Largest certificate read (bytes): the largest that `make reproduce` writes is a few megabytes.
 constexpr long long kMaxBytes = 256LL << 20;
 
-
 /// The certificate cannot be read as one of the format (exit 2).
 struct Malformed : std::runtime_error {
   using std::runtime_error::runtime_error;

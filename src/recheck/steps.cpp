@@ -10,7 +10,6 @@ namespace recheck {
 
 // ---- checking --------------------------------------------------------------------------------------
 
-
 /// Whether the closed intervals cover [lo, hi] (lo == hi: contain the point).
 bool covers(std::vector<std::pair<double, double>> v, double lo, double hi) {
   std::sort(v.begin(), v.end());
@@ -26,14 +25,11 @@ bool covers(std::vector<std::pair<double, double>> v, double lo, double hi) {
   return started && reach >= hi;
 }
 
-
 std::string describe(const Box& s) {
   char buf[160];
   std::snprintf(buf, sizeof buf, "b in [%a, %a], q in [%a, %a]", s.b_lo, s.b_hi, s.q_lo, s.q_hi);
   return buf;
 }
-
-
 
 /// The sorted distinct values of `ends` clipped to [lo, hi], with lo and hi.
 std::vector<double> edges(double lo, double hi, std::vector<double> ends) {
@@ -78,7 +74,6 @@ void require_cover(Steps& st, const std::vector<Ball>& balls, double th_lo, doub
   st.require(covered(), step);
 }
 
-
 /// Eq. (1): f(lo) < 0 < f(hi) with 0 < lo < hi < pi/2 (f' > 0 on (0, pi/2): analytic, README.md);
 /// then the correctly rounded doubles of vartheta0 and sin vartheta0, when given.
 void vartheta0_steps(Steps& st, const Num& lo, const Num& hi) {
@@ -88,7 +83,6 @@ void vartheta0_steps(Steps& st, const Num& lo, const Num& hi) {
   st.require(f_eq1(H).positive(), "Eq. (1): f(hi) > 0");
   st.require(f_eq1_slope(Iv(lo, hi)).positive(), "Eq. (1): f' > 0 on [lo, hi]");
 }
-
 
 /// The standing conditions of Section 2 on {a} x B x Q: 2b < a, q > 2b, q - 2b < a, and b > 0
 /// unless B starts at 0 (b0's [0, b_low], whose statement is about (0, b_low]).
@@ -146,7 +140,9 @@ void lemma1(Steps& st, const Iv& A, const Box& box, const std::vector<Ball>& sub
 }
 
 std::string box_text(double a, const Box& s) {
-  const auto part = [](const char* name, double lo, double hi) { return std::string(name) + (lo == hi ? " = " + dec(lo) : " in " + range_text(lo, hi)); };
+  const auto part = [](const char* name, double lo, double hi) {
+    return std::string(name) + (lo == hi ? " = " + dec(lo) : " in " + range_text(lo, hi));
+  };
   return "a = " + dec(a) + ", " + part("b", s.b_lo, s.b_hi) + ", " + part("q", s.q_lo, s.q_hi);
 }
 

@@ -114,7 +114,10 @@ long check_discontinuities(const json& c, std::string& what) {
   }
   st.require(started && mpfr_cmp_d(reach.x, hi) >= 0, "the tangencies' pieces and the cover balls cover [lo, hi] (no gap)");
   what = "at a = " + dec(a) + ", b = " + dec(b) + ": T1 has exactly " + std::to_string(ts.size()) + " discontinuities on " +
-         segment.get<std::string>() + " (inside " + range_text(lo, hi) + ", which the witnesses cover), the tangencies z_k listed (k = " + (ts.empty() ? std::string("none") : std::to_string(std::min(ts.front().k, ts.back().k)) + ".." + std::to_string(std::max(ts.front().k, ts.back().k))) + ")";
+         segment.get<std::string>() + " (inside " + range_text(lo, hi) + ", which the witnesses cover), the tangencies z_k listed (k = " +
+         (ts.empty() ? std::string("none")
+                     : std::to_string(std::min(ts.front().k, ts.back().k)) + ".." + std::to_string(std::max(ts.front().k, ts.back().k))) +
+         ")";
   return st.n;
 }
 

@@ -37,7 +37,8 @@ long check_lemma4_uniform(const json& c, std::string& what) {
   const json& arc = field(w, "arc_l1", "witnesses.");
   require_amplitude(c);
   require_embedded(arc, "arc-l1", "witnesses.arc_l1");
-  st.n += embedded("witnesses.arc_l1", [&] { std::string ignored;
+  st.n += embedded("witnesses.arc_l1", [&] {
+    std::string ignored;
     return check_arc_l1(arc, ignored);
   });
   const json& ap = field(arc, "parameters", "witnesses.arc_l1.");

@@ -53,9 +53,9 @@ long check_paper_construction(const json& c, std::string& what) {
   }
   st.require(lt(Iv(199.0) / Iv(100.0) * pi(), t3(Iv(a), Iv(b))), "199 pi/100 < t3 (T1(z_i) mod 2 pi in L1)");
   const json& segs = cov["witnesses"]["segments"];
-  what = "the paper's construction of Lemma 4 at " + box_text(a, {b, b, q, q}) + ": J0 = " +
-         range_text(exact_double(segs[0]["lo"], "lo"), exact_double(segs[0]["hi"], "hi")) + " and J1 = " +
-         range_text(exact_double(segs[1]["lo"], "lo"), exact_double(segs[1]["hi"], "hi")) + " each between consecutive ones of the " +
+  what = "the paper's construction of Lemma 4 at " + box_text(a, {b, b, q, q}) +
+         ": J0 = " + range_text(exact_double(segs[0]["lo"], "lo"), exact_double(segs[0]["hi"], "hi")) +
+         " and J1 = " + range_text(exact_double(segs[1]["lo"], "lo"), exact_double(segs[1]["hi"], "hi")) + " each between consecutive ones of the " +
          std::to_string(ts.size()) + " discontinuities of T1 on L2";
   return st.n;
 }
