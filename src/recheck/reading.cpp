@@ -120,6 +120,11 @@ std::tuple<double, double, double> read_point(const json& c) {
   return {parameter(p, "a", "parameters."), parameter(p, "b", "parameters."), parameter(p, "q", "parameters.")};
 }
 
+std::pair<double, double> read_a_q(const json& c) {
+  const json& p = field(c, "parameters", "");
+  return {parameter(p, "a", "parameters."), parameter(p, "q", "parameters.")};
+}
+
 /// A list of exact doubles (the grid's cuts: at least two; whether they increase from 0 is a step).
 std::vector<double> cuts(const json& j, const std::string& where, bool grid) {
   if (!j.is_array() || j.size() < (grid ? 2U : 1U))

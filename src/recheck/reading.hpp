@@ -63,6 +63,8 @@ std::string hex(const Num& n);
 std::pair<Num, Num> exact_pair(const json& j, const std::string& where);
 /// The parameters (a, b, q) of a certificate at a point.
 std::tuple<double, double, double> read_point(const json& c);
+/// The parameters (a, q) of a certificate about a range of b at fixed a and q (b0, window).
+std::pair<double, double> read_a_q(const json& c);
 /// A list of exact doubles (the grid's cuts: at least two; whether they increase from 0 is a step).
 std::vector<double> cuts(const json& j, const std::string& where, bool grid = true);
 

@@ -30,8 +30,7 @@ long check_lemma1(const json& c, std::string& what) {
 /// b-intervals inside [0, b_low] and covering it, Eq. (8) u(t2) < 0 on each.
 long check_b0(const json& c, std::string& what) {
   Steps st;
-  const json& p = field(c, "parameters", "");
-  const double a = parameter(p, "a", "parameters."), q = parameter(p, "q", "parameters.");
+  const auto [a, q] = read_a_q(c);
   const json& w = field(c, "witnesses", "");
   const double b_low = parameter(w, "b_low", "witnesses.");
   const Iv A(a), Q(q);

@@ -102,8 +102,7 @@ long check_not_superstable(const json& c, std::string& what) {
 /// right_out; Theorem 2's conclusion at the middle.
 long check_window(const json& c, std::string& what) {
   Steps st;
-  const json& p = field(c, "parameters", "");
-  const double a = parameter(p, "a", "parameters."), q = parameter(p, "q", "parameters.");
+  const auto [a, q] = read_a_q(c);
   const json& w = field(c, "witnesses", "");
   double e[4];
   const char* names[4] = {"left_out", "left_in", "right_in", "right_out"};
