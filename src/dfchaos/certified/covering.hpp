@@ -12,57 +12,29 @@
 /// disjoint (compared as doubles) prove Lemma 4 at the parameters, or, over a box, for every
 /// parameter in it (the same J for all of them).
 ///
-/// Candidates come from the floating-point search (dfchaos::covering_segments), only to know where
-/// to look; their ends are moved inside their continuity label to where the proofs have margin
-/// (T about \f$3\pi/2 + 0.3\f$ at the top end; at the other end, the middle of the plateau where
-/// \f$T = t_2\f$, between the phase where \f$\theta_2\f$ crosses \f$t_2\f$ and the end of the branch of
-/// \f$T_1\f$). Nothing of the floating search enters the proof.
+/// Candidates come from the floating-point search (candidates.hpp), only to know where to look.
+/// Nothing of the floating search enters the proof.
 #pragma once
 
 #include <string>
 #include <vector>
 
+#include "dfchaos/certified/candidates.hpp"
 #include "dfchaos/certified/parameters.hpp"
 #include "dfchaos/certified/return_map.hpp"
 
 namespace dfchaos::certified {
 
-/// Options of the covering proofs.
-struct CoveringOptions {
-  double margin_top = 0.3;     ///< target T at the top end: \f$3\pi/2 + \f$ this
+/// Options of the covering proofs (and of the search of their candidates, candidates.hpp).
+struct CoveringOptions : CandidateOptions {
   int max_balls = 20000;       ///< closed balls per segment
   int max_depth = 30;          ///< bisection depth of a segment (theta, b and q splits together)
   int end_depth = 6;           ///< bisection depth (b and q) of the checks at the two ends
   long max_tests = 4'000'000;  ///< interval tests per segment
-  int candidates = 6;          ///< floating-point candidates examined (at most)
-  /// Branches of \f$T_1\f$ in the first window [lo, w] of the candidate search (covering_candidates).
-  long long first_branches = 1LL << 14;
-  /// The candidate search stops at a window of this many branches, with the candidates it found.
-  long long max_branches = 1LL << 16;
-  double lo = 0.0 / 0.0;  ///< search window for candidates (NaN: \f$t_2\f$)
-  double hi = 0.0 / 0.0;  ///< (NaN: \f$3\pi/2\f$)
   /// Keep every ball's proof (SegmentProof::top_balls, t2_balls, cover_balls) and Lemma 1 over the
   /// box when a ball used it (CoveringProof::lemma1): the witnesses of a certificate.
   bool record = false;
 };
-
-/// A candidate segment from the floating layer.
-struct Candidate {
-  double theta_top = 0;  ///< end where T should be at least \f$3\pi/2\f$
-  double theta_t2 = 0;   ///< end where T should be \f$t_2\f$
-  double plateau = 0;    ///< width of the plateau T = t2 around theta_t2 when it was centred (0: unknown)
-  double lo() const { return theta_top < theta_t2 ? theta_top : theta_t2; }  ///< left end
-  double hi() const { return theta_top < theta_t2 ? theta_t2 : theta_top; }  ///< right end
-};
-
-/// Floating-point candidates at (a, b, q), ends moved as in the file comment, ascending, disjoint.
-std::vector<Candidate> covering_candidates(double a, double b, double q, const CoveringOptions& opt = {});
-
-/// The candidates `old` (of nearby parameters) moved to (a, b, q) by local floating searches: the t2
-/// end to the middle of its plateau, the top end re-aimed if T there lost its margin. Candidates
-/// that cannot be followed are dropped; empty when fewer than two remain (then search afresh with
-/// covering_candidates()).
-std::vector<Candidate> track_candidates(double a, double b, double q, const std::vector<Candidate>& old, const CoveringOptions& opt = {});
 
 /// The proof of one covering segment.
 struct SegmentProof {

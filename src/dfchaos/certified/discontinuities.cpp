@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "dfchaos/certified/bisect.hpp"
+#include "dfchaos/certified/cover.hpp"
 #include "dfchaos/certified/oracle.hpp"
 #include "dfchaos/errors.hpp"
 #include "dfchaos/model.hpp"
@@ -22,31 +23,20 @@ namespace {
 /// each ball's proof there.
 Outcome cover_simple(const ParameterBalls& m, double x, double y, Budget& budget, int& balls, std::vector<T1Piece>* record) {
   if (!(x < y)) return Outcome::ok();
-  struct Item {
-    double lo, hi;
-    int depth;
-  };
-  std::vector<Item> stack{{x, y, 0}};
-  while (!stack.empty()) {
-    poll_stop();  // stop.hpp: a caller may end the proof here
-    const Item it = stack.back();
-    stack.pop_back();
+  auto check = [&](const Span& c, int) {
     FirstHitOptions opt;
     opt.record = record != nullptr;
-    FirstHitProof p = certify_T1(m, StartSet::interval(it.lo, it.hi), budget, opt);
+    FirstHitProof p = certify_T1(m, StartSet::interval(c.first, c.second), budget, opt);
     if (p.verdict) {
       ++balls;
-      if (record) record->push_back({Ball(it.lo), Ball(it.hi), std::move(p)});
-      continue;
+      if (record) record->push_back({Ball(c.first), Ball(c.second), std::move(p)});
+      return CellVerdict::proved();
     }
-    const double mid = 0.5 * (it.lo + it.hi);
-    if (it.depth >= 50 || !(mid > it.lo && mid < it.hi) || budget.exhausted())
-      return Outcome::fail("Lemma 2: T1 continuous between the tangencies",
-                           "at theta in [" + format_double(it.lo) + ", " + format_double(it.hi) + "]: " + p.verdict.describe());
-    stack.push_back({mid, it.hi, it.depth + 1});
-    stack.push_back({it.lo, mid, it.depth + 1});
-  }
-  return Outcome::ok();
+    Outcome why = Outcome::fail("Lemma 2: T1 continuous between the tangencies",
+                                "at theta in [" + format_double(c.first) + ", " + format_double(c.second) + "]: " + p.verdict.describe());
+    return budget.exhausted() ? CellVerdict::stop(std::move(why)) : CellVerdict::split(std::move(why));
+  };
+  return cover(Span(x, y), check, halve, 50);
 }
 
 }  // namespace

@@ -4,8 +4,10 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <numeric>
 
+#include "dfchaos/certified/cover.hpp"
 #include "dfchaos/certified/graph.hpp"
 #include "dfchaos/covering.hpp"
 #include "dfchaos/errors.hpp"
@@ -61,25 +63,17 @@ bool T_at(const ParameterBalls& m, double x, bool record, Ball& T, BallProof& ke
 
 /// T continuous on [lo, hi]: a cover by closed balls (bisection in theta).
 bool continuous_on(const ParameterBalls& m, double lo, double hi, const EntropyOptions& opt, GraphSegment& g, bool& used_lemma1) {
-  std::vector<std::pair<double, double>> todo{{lo, hi}};
   int balls = 0;
-  while (!todo.empty()) {
-    poll_stop();  // stop.hpp: a caller may end the proof here
-    const auto [x, y] = todo.back();
-    todo.pop_back();
+  auto check = [&](const Span& c, int) {
     Budget budget;
-    MapStepProof t = certify_T(m, StartSet::interval(x, y), budget, nullptr, opt.record);
-    if (t.verdict) {
-      if (++balls > opt.max_balls) return false;
-      used_lemma1 = used_lemma1 || t.used_lemma1;
-      if (opt.record) g.cover.push_back(BallProof::of(StartSet::interval(x, y), m.box(), std::move(t)));
-      continue;
-    }
-    const double mid = 0.5 * (x + y);
-    if (!(mid > x && mid < y)) return false;
-    todo.emplace_back(mid, y);
-    todo.emplace_back(x, mid);
-  }
+    MapStepProof t = certify_T(m, StartSet::interval(c.first, c.second), budget, nullptr, opt.record);
+    if (!t.verdict) return CellVerdict::split(Outcome::fail("entropy: T continuous", t.verdict.describe()));
+    if (++balls > opt.max_balls) return CellVerdict::stop(Outcome::fail("entropy: T continuous", "too many balls"));
+    used_lemma1 = used_lemma1 || t.used_lemma1;
+    if (opt.record) g.cover.push_back(BallProof::of(StartSet::interval(c.first, c.second), m.box(), std::move(t)));
+    return CellVerdict::proved();
+  };
+  if (!cover(Span(lo, hi), check, halve, std::numeric_limits<int>::max())) return false;
   std::sort(g.cover.begin(), g.cover.end(), [](const BallProof& u, const BallProof& w) { return u.theta_lo.mid() < w.theta_lo.mid(); });
   return true;
 }

@@ -8,6 +8,7 @@
 #include <string>
 #include <utility>
 
+#include "dfchaos/certified/cover.hpp"
 #include "dfchaos/certified/discontinuities.hpp"
 #include "dfchaos/certified/graph.hpp"
 #include "dfchaos/certified/next_hit.hpp"
@@ -138,14 +139,11 @@ bool jump_cell(Cover& c, const StartSet& set, double x, double y, const MapStepP
 /// (the tangency window skipped); `guess_limit`: the T1 guesses are taken left of it (the branch
 /// of the left limit); `from_t2`: the first cell starts at t2 exactly; cells reaching past
 /// `full_below` are not full (they contain a discontinuity of T1).
-Outcome cover(Cover& c, double lo, double hi, const FirstHitOptions* t1, double guess_limit, bool from_t2, double full_below) {
+Outcome cover_by_cells(Cover& c, double lo, double hi, const FirstHitOptions* t1, double guess_limit, bool from_t2, double full_below) {
   const ParameterBalls& m = c.m;
   const std::vector<std::pair<Ball, Ball>> skip = t1 ? t1->skip : std::vector<std::pair<Ball, Ball>>{};
-  std::vector<std::pair<double, double>> todo{{lo, hi}};
-  while (!todo.empty()) {
-    poll_stop();  // stop.hpp: a caller may end the proof here
-    const auto [x, y] = todo.back();
-    todo.pop_back();
+  auto check = [&](const Span& cell, int) {
+    const auto [x, y] = cell;
     const bool at_t2 = from_t2 && x == lo;
     const StartSet set = at_t2 ? StartSet::from_t2(m, y) : StartSet::interval(x, y);
     FirstHitOptions o = t1 ? *t1 : FirstHitOptions{};
@@ -157,24 +155,23 @@ Outcome cover(Cover& c, double lo, double hi, const FirstHitOptions* t1, double 
     const MapStepProof t = certify_T(m, set, budget, c.lemma1, false, &o);
     const bool full = !at_t2 && y <= full_below;
     const double width = y - x;
+    bool proved = false;
     if (t.verdict) {
       c.r.used_lemma1 = c.r.used_lemma1 || t.used_lemma1;
-      if (monotone_cell(c, set, x, y, t, skip, full)) {
-        if (++c.r.cells > c.opt.max_cells) return Outcome::fail("laps: cells", "more than " + std::to_string(c.opt.max_cells) + " cells");
-        continue;
-      }
-    } else if (width <= kNarrow * std::max(1.0, std::fabs(x)) && jump_cell(c, set, x, y, t, skip)) {
-      if (++c.r.cells > c.opt.max_cells) return Outcome::fail("laps: cells", "more than " + std::to_string(c.opt.max_cells) + " cells");
-      continue;
+      proved = monotone_cell(c, set, x, y, t, skip, full);
+    } else {
+      proved = width <= kNarrow * std::max(1.0, std::fabs(x)) && jump_cell(c, set, x, y, t, skip);
     }
-    const double mid = 0.5 * (x + y);
-    if (width <= c.opt.min_width * std::max(1.0, std::fabs(x)) || !(mid > x && mid < y))
-      return Outcome::fail("laps: cell", "T not proved continuous and monotone on [" + format_double(x) + ", " + format_double(y) +
-                                             "]: " + (t.verdict ? std::string("the sign of theta2' is not decided") : t.verdict.describe()));
-    todo.emplace_back(mid, y);
-    todo.emplace_back(x, mid);
-  }
-  return Outcome::ok();
+    if (proved) {
+      if (++c.r.cells > c.opt.max_cells)
+        return CellVerdict::stop(Outcome::fail("laps: cells", "more than " + std::to_string(c.opt.max_cells) + " cells"));
+      return CellVerdict::proved();
+    }
+    Outcome why = Outcome::fail("laps: cell", "T not proved continuous and monotone on [" + format_double(x) + ", " + format_double(y) +
+                                                  "]: " + (t.verdict ? std::string("the sign of theta2' is not decided") : t.verdict.describe()));
+    return width <= c.opt.min_width * std::max(1.0, std::fabs(x)) ? CellVerdict::stop(std::move(why)) : CellVerdict::split(std::move(why));
+  };
+  return cover(Span(lo, hi), check, halve, std::numeric_limits<int>::max());
 }
 
 /// The cell [z, zr] right of a discontinuity of T1 (file comment); false if its checks fail.
@@ -522,12 +519,12 @@ LapPartition prove_laps(double a, double b, double q, const LapOptions& opt) {
     try {
       Cover& c = parts[i];
       if (i == 0) {
-        verdicts[i] = cover(c, m.t2.lower(), lo0, nullptr, inf, true, inf);
+        verdicts[i] = cover_by_cells(c, m.t2.lower(), lo0, nullptr, inf, true, inf);
         continue;
       }
       const double cursor = i == 1 ? lo0 : zr[i - 2];
       if (i == nz + 1) {
-        verdicts[i] = cover(c, cursor, x_star, nullptr, inf, false, inf);
+        verdicts[i] = cover_by_cells(c, cursor, x_star, nullptr, inf, false, inf);
         continue;
       }
       const Tangency& tz = disc.z[i - 1];
@@ -538,9 +535,9 @@ LapPartition prove_laps(double a, double b, double q, const LapOptions& opt) {
       const double guess_limit = z_lo - std::max(1e-9, 1e-6 * (z_lo - left_start));
       // The cell that holds z is kept narrow, so that the core of the lap reaches close to z.
       const double near_z = z_lo - std::max(1e-9 * (z_lo - left_start), 1e-15 * z_lo);
-      Outcome v = cover(c, cursor, left_start, nullptr, inf, false, inf);
-      if (v) v = cover(c, left_start, near_z, &skip, guess_limit, false, inf);
-      if (v) v = cover(c, near_z, z_hi, &skip, guess_limit, false, -inf);
+      Outcome v = cover_by_cells(c, cursor, left_start, nullptr, inf, false, inf);
+      if (v) v = cover_by_cells(c, left_start, near_z, &skip, guess_limit, false, inf);
+      if (v) v = cover_by_cells(c, near_z, z_hi, &skip, guess_limit, false, -inf);
       verdicts[i] = v;
     } catch (const Stopped&) {
 #pragma omp atomic write

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <string>
 
+#include "dfchaos/certified/cover.hpp"
 #include "dfchaos/certified/next_hit.hpp"
 #include "dfchaos/stop.hpp"
 
@@ -76,36 +77,28 @@ Lemma4UniformProof prove_lemma4_uniform(double kappa_lo, double kappa_hi, const 
   // (I9): Lemma 1 over [0, eps*] x [kappa_lo, kappa_hi], cells bisected (q and b alternately) until
   // u(t2) < 0 is proved on each; at most 4096 cells.
   {
-    struct Cell {
-      double b1, b2, q1, q2;
-      int depth;
-    };
-    std::vector<Cell> todo{{0.0, r.eps_star, kappa_lo, kappa_hi, 0}};
-    while (!todo.empty()) {
-      poll_stop();  // stop.hpp: a caller may end the proof here
-      const Cell c = todo.back();
-      todo.pop_back();
-      const Ball u = lemma1_velocity_at_t2(Ball(1.0), Ball::interval(c.b1, c.b2), Ball::interval(c.q1, c.q2));
+    auto check = [&](const Lemma1SubBox& c, int) {
+      const Ball u = lemma1_velocity_at_t2(Ball(1.0), Ball::interval(c.b_lo, c.b_hi), Ball::interval(c.q_lo, c.q_hi));
       if (u.is_negative()) {
-        r.lemma1_cells.push_back(Lemma1SubBox{c.b1, c.b2, c.q1, c.q2});
-        if (r.lemma1_cells.size() > 4096) return fail("(I9) Lemma 1", "more than 4096 cells");
-        continue;
+        r.lemma1_cells.push_back(c);
+        if (r.lemma1_cells.size() > 4096) return CellVerdict::stop(Outcome::fail("(I9) Lemma 1", "more than 4096 cells"));
+        return CellVerdict::proved();
       }
-      if (u.is_positive() && c.b1 == c.b2 && c.q1 == c.q2)
-        return fail("(I9) Lemma 1", "u(t2) > 0 at b/a = " + std::to_string(c.b1) + ", q/a = " + std::to_string(c.q1));
-      if (c.depth >= 40 || todo.size() > 4096)
-        return fail("(I9) Lemma 1",
-                    "u(t2) < 0 not proved near b/a = " + std::to_string(c.b2) + ", q/a = " + std::to_string(c.q1) + " (" + u.str(5) + ")");
-      if (c.depth % 2 == 0) {
-        const double m = 0.5 * (c.q1 + c.q2);
-        todo.push_back({c.b1, c.b2, m, c.q2, c.depth + 1});
-        todo.push_back({c.b1, c.b2, c.q1, m, c.depth + 1});
-      } else {
-        const double m = 0.5 * (c.b1 + c.b2);
-        todo.push_back({m, c.b2, c.q1, c.q2, c.depth + 1});
-        todo.push_back({c.b1, m, c.q1, c.q2, c.depth + 1});
+      if (u.is_positive() && c.b_lo == c.b_hi && c.q_lo == c.q_hi)
+        return CellVerdict::stop(Outcome::fail("(I9) Lemma 1", "u(t2) > 0 at b/a = " + std::to_string(c.b_lo) + ", q/a = " + std::to_string(c.q_lo)));
+      return CellVerdict::split(Outcome::fail(
+          "(I9) Lemma 1", "u(t2) < 0 not proved near b/a = " + std::to_string(c.b_hi) + ", q/a = " + std::to_string(c.q_lo) + " (" + u.str(5) + ")"));
+    };
+    // q/a halved at even depths, b/a at odd ones.
+    auto split = [](const Lemma1SubBox& c, int depth) -> std::optional<std::pair<Lemma1SubBox, Lemma1SubBox>> {
+      if (depth % 2 == 0) {
+        const double m = 0.5 * (c.q_lo + c.q_hi);
+        return std::make_pair(Lemma1SubBox{c.b_lo, c.b_hi, c.q_lo, m}, Lemma1SubBox{c.b_lo, c.b_hi, m, c.q_hi});
       }
-    }
+      const double m = 0.5 * (c.b_lo + c.b_hi);
+      return std::make_pair(Lemma1SubBox{c.b_lo, m, c.q_lo, c.q_hi}, Lemma1SubBox{m, c.b_hi, c.q_lo, c.q_hi});
+    };
+    if (const Outcome v = cover(Lemma1SubBox{0.0, r.eps_star, kappa_lo, kappa_hi}, check, split, 40); !v) return fail(v.step, v.detail);
   }
   // (I8): the paper's arc L1 (3pi/100 >= pi/50) for L2, else the stop-arc form on [2pi - w_b, t3).
   ArcL1Options arc;

@@ -11,6 +11,7 @@
 #include <optional>
 
 #include "dfchaos/bisect.hpp"
+#include "dfchaos/certified/cover.hpp"
 #include "dfchaos/certified/oracle.hpp"
 #include "dfchaos/stop.hpp"
 
@@ -293,28 +294,28 @@ CycleIntervalProof prove_cycle_on_interval(double a, double q, double b_lo, doub
   struct Piece {
     double lo, hi;
     std::vector<double> x_lo, x_hi;
-    int depth;
   };
-  std::vector<Piece> stack{{b_lo, b_hi, x_lo, x_hi, 0}};
-  CycleIntervalProof first;
+  CycleIntervalProof first, failed;
   int pieces = 0;
-  while (!stack.empty()) {
-    Piece pc = std::move(stack.back());
-    stack.pop_back();
+  auto check = [&](const Piece& pc, int) {
     CycleIntervalProof r = prove_cycle_piece(a, q, pc.lo, pc.hi, pc.x_lo, pc.x_hi);
     if (r.verdict) {
       if (pieces++ == 0) first = std::move(r);
-      continue;
+      return CellVerdict::proved();
     }
+    failed = std::move(r);
+    return CellVerdict::split(failed.verdict);
+  };
+  auto split = [](const Piece& pc, int) -> std::optional<std::pair<Piece, Piece>> {
     const double mid = 0.5 * (pc.lo + pc.hi);
-    if (pc.depth >= kCyclePieceDepth || !(mid > pc.lo && mid < pc.hi)) {
-      r.pieces = pieces;
-      return r;
-    }
+    if (!(mid > pc.lo && mid < pc.hi)) return std::nullopt;
     std::vector<double> x_mid(pc.x_lo.size());
     for (std::size_t j = 0; j < x_mid.size(); ++j) x_mid[j] = 0.5 * (pc.x_lo[j] + pc.x_hi[j]);
-    stack.push_back({mid, pc.hi, x_mid, pc.x_hi, pc.depth + 1});
-    stack.push_back({pc.lo, mid, pc.x_lo, std::move(x_mid), pc.depth + 1});
+    return std::make_pair(Piece{pc.lo, mid, pc.x_lo, x_mid}, Piece{mid, pc.hi, x_mid, pc.x_hi});
+  };
+  if (!cover(Piece{b_lo, b_hi, x_lo, x_hi}, check, split, kCyclePieceDepth)) {
+    failed.pieces = pieces;
+    return failed;
   }
   first.pieces = pieces;
   return first;

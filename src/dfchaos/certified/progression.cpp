@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "dfchaos/certified/bisect.hpp"
+#include "dfchaos/certified/cover.hpp"
 #include "dfchaos/certified/oracle.hpp"
 #include "dfchaos/errors.hpp"
 #include "dfchaos/model.hpp"
@@ -253,47 +254,36 @@ Lemma1Proof certify_lemma1(const ParameterBalls& m, int max_pieces) {
     r.verdict = v;
     return r;
   }
-  struct Piece {
-    double b_lo, b_hi, q_lo, q_hi;
-  };
-  std::vector<Piece> stack{{m.box().b_lo, m.box().b_hi, m.box().q_lo, m.box().q_hi}};
   bool first = true;
-  while (!stack.empty()) {
-    poll_stop();  // stop.hpp: a caller may end the proof here
-    const Piece p = stack.back();
-    stack.pop_back();
-    if (++r.pieces > max_pieces) {
-      r.verdict = Outcome::fail("Lemma 1: u(t2) < 0", "more than " + std::to_string(max_pieces) + " sub-boxes needed");
-      return r;
-    }
+  auto check = [&](const Lemma1SubBox& p, int) {
+    if (++r.pieces > max_pieces)
+      return CellVerdict::stop(Outcome::fail("Lemma 1: u(t2) < 0", "more than " + std::to_string(max_pieces) + " sub-boxes needed"));
     const Ball u = lemma1_velocity_at_t2(m.a, Ball::interval(p.b_lo, p.b_hi), Ball::interval(p.q_lo, p.q_hi));
     r.u_at_t2 = first ? u : Ball::hull(r.u_at_t2, u);
     first = false;
     if (u.is_negative()) {
-      r.sub_boxes.push_back({p.b_lo, p.b_hi, p.q_lo, p.q_hi});
-      continue;
+      r.sub_boxes.push_back(p);
+      return CellVerdict::proved();
     }
-    if (u.is_positive()) {
-      r.verdict = Outcome::refute("Lemma 1: u(t2) < 0 (Eq. 8)", "u(t2) = " + u.str(8) + " > 0 at b in [" + format_double(p.b_lo) + ", " +
-                                                                    format_double(p.b_hi) + "], q in [" + format_double(p.q_lo) + ", " +
-                                                                    format_double(p.q_hi) + "]");
-      return r;
-    }
+    if (u.is_positive())
+      return CellVerdict::stop(Outcome::refute("Lemma 1: u(t2) < 0 (Eq. 8)", "u(t2) = " + u.str(8) + " > 0 at b in [" + format_double(p.b_lo) + ", " +
+                                                                                 format_double(p.b_hi) + "], q in [" + format_double(p.q_lo) + ", " +
+                                                                                 format_double(p.q_hi) + "]"));
+    return CellVerdict::split(Outcome::fail(
+        "Lemma 1: u(t2) < 0 (Eq. 8)", "undecided at b = " + format_double(p.b_lo) + ", q = " + format_double(p.q_lo) + ": u(t2) = " + u.str(8)));
+  };
+  // Halves in b while the box is at least a quarter as wide in b as in q, else in q.
+  auto split = [](const Lemma1SubBox& p, int) -> std::optional<std::pair<Lemma1SubBox, Lemma1SubBox>> {
     const double bm = 0.5 * (p.b_lo + p.b_hi), qm = 0.5 * (p.q_lo + p.q_hi);
     const bool split_b = (p.b_hi - p.b_lo) >= (p.q_hi - p.q_lo) * 0.25 && bm > p.b_lo && bm < p.b_hi;
     const bool split_q = !split_b && qm > p.q_lo && qm < p.q_hi;
-    if (!split_b && !split_q) {
-      r.verdict = Outcome::fail("Lemma 1: u(t2) < 0 (Eq. 8)",
-                                "undecided at b = " + format_double(p.b_lo) + ", q = " + format_double(p.q_lo) + ": u(t2) = " + u.str(8));
-      return r;
-    }
-    if (split_b) {
-      stack.push_back({bm, p.b_hi, p.q_lo, p.q_hi});
-      stack.push_back({p.b_lo, bm, p.q_lo, p.q_hi});
-    } else {
-      stack.push_back({p.b_lo, p.b_hi, qm, p.q_hi});
-      stack.push_back({p.b_lo, p.b_hi, p.q_lo, qm});
-    }
+    if (split_b) return std::make_pair(Lemma1SubBox{p.b_lo, bm, p.q_lo, p.q_hi}, Lemma1SubBox{bm, p.b_hi, p.q_lo, p.q_hi});
+    if (split_q) return std::make_pair(Lemma1SubBox{p.b_lo, p.b_hi, p.q_lo, qm}, Lemma1SubBox{p.b_lo, p.b_hi, qm, p.q_hi});
+    return std::nullopt;
+  };
+  if (Outcome v = cover(Lemma1SubBox{m.box().b_lo, m.box().b_hi, m.box().q_lo, m.box().q_hi}, check, split, std::numeric_limits<int>::max()); !v) {
+    r.verdict = std::move(v);
+    return r;
   }
   r.t4 = m.box().is_point() ? enclose_t4(m) : Ball::hull(m.t1, m.t2);
   r.verdict = Outcome::ok();
@@ -332,31 +322,19 @@ Lemma1Bound lemma1_b0_lower_bound(double a, double q, double resolution, int max
     // Admissibility on [0, b_low]: 2b < a, q > 2b, q - 2b < a.
     const Ball Bmax(b_low);
     if (!(lt(2.0 * Bmax, A) && lt(2.0 * Bmax, Q) && lt(Q, A))) continue;
-    std::vector<std::pair<double, double>> stack{{0.0, b_low}};
     int pieces = 0;
-    bool ok = true;
     r.b_pieces.clear();
-    while (!stack.empty() && ok) {
-      poll_stop();  // stop.hpp: a caller may end the proof here
-      const auto [x, y] = stack.back();
-      stack.pop_back();
-      if (++pieces > max_pieces) {
-        ok = false;
-        break;
-      }
-      const Ball u = lemma1_velocity_at_t2(A, Ball::interval(x, y), Q);
+    // A failed attempt is not reported (the next, smaller b_low is tried): its outcomes are empty.
+    auto check = [&](const Span& c, int) {
+      if (++pieces > max_pieces) return CellVerdict::stop(Outcome::fail("", ""));
+      const Ball u = lemma1_velocity_at_t2(A, Ball::interval(c.first, c.second), Q);
       if (u.is_negative()) {
-        r.b_pieces.push_back({x, y, q, q});
-        continue;
+        r.b_pieces.push_back({c.first, c.second, q, q});
+        return CellVerdict::proved();
       }
-      const double mid = 0.5 * (x + y);
-      if (u.is_positive() || !(mid > x && mid < y)) {
-        ok = false;
-        break;
-      }
-      stack.emplace_back(mid, y);
-      stack.emplace_back(x, mid);
-    }
+      return u.is_positive() ? CellVerdict::stop(Outcome::fail("", "")) : CellVerdict::split(Outcome::fail("", ""));
+    };
+    const bool ok = cover(Span(0.0, b_low), check, halve, std::numeric_limits<int>::max()).proved;
     if (ok) {
       r.b_low = b_low;
       r.pieces = pieces;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "dfchaos/certified/bisect.hpp"
+#include "dfchaos/certified/cover.hpp"
 #include "dfchaos/certified/vartheta0.hpp"
 #include "dfchaos/errors.hpp"
 #include "dfchaos/model.hpp"
@@ -87,44 +88,38 @@ SuperstableProof prove_superstable(double a, double b, double q, double eps_try,
   std::string last_failure;
   for (int attempt = 0; attempt < 12; ++attempt, eps *= 0.5) {
     const double hi = t2_up + eps;
-    struct Item {
-      double lo, hi;
-      int depth;
-    };  // lo NaN: the ball starts exactly at t2
-    std::vector<Item> stack{{NAN, hi, 0}};
+    // A cell [lo, hi]; lo NaN: the ball starts exactly at t2.
     int balls = 0;
-    bool used_l1 = false, ok = true;
+    bool used_l1 = false;
     r.cover.clear();
-    while (!stack.empty() && ok) {
-      poll_stop();  // stop.hpp: a caller may end the proof here
-      const Item it = stack.back();
-      stack.pop_back();
-      const StartSet set = std::isnan(it.lo) ? StartSet::from_t2(m, it.hi) : StartSet::interval(it.lo, it.hi);
+    auto check = [&](const Span& c, int) {
+      const StartSet set = std::isnan(c.first) ? StartSet::from_t2(m, c.second) : StartSet::interval(c.first, c.second);
       MapStepProof t = certify_T(m, set, budget, nullptr, record);
       if (t.verdict && t.constant_t2) {
         ++balls;
         used_l1 = used_l1 || t.used_lemma1;
         if (record) r.cover.push_back(BallProof::of(set, m.box(), std::move(t)));
-        continue;
+        return CellVerdict::proved();
       }
-      const double from = std::isnan(it.lo) ? t2_up : it.lo;
-      const double mid = 0.5 * (from + it.hi);
-      if (it.depth >= 24 || !(mid > from && mid < it.hi) || budget.exhausted()) {
-        last_failure = "on " + set.describe() + ": " + (t.verdict ? "T not constant" : t.verdict.describe());
-        ok = false;
-        break;
-      }
-      stack.push_back({mid, it.hi, it.depth + 1});
-      stack.push_back({it.lo, mid, it.depth + 1});
+      Outcome why = Outcome::fail("", "on " + set.describe() + ": " + (t.verdict ? "T not constant" : t.verdict.describe()));
+      return budget.exhausted() ? CellVerdict::stop(std::move(why)) : CellVerdict::split(std::move(why));
+    };
+    auto split = [&](const Span& c, int) -> std::optional<std::pair<Span, Span>> {
+      const double from = std::isnan(c.first) ? t2_up : c.first;
+      const double mid = 0.5 * (from + c.second);
+      if (!(mid > from && mid < c.second)) return std::nullopt;
+      return std::make_pair(Span(c.first, mid), Span(mid, c.second));
+    };
+    if (const Outcome covered = cover(Span(NAN, hi), check, split, 24); !covered) {
+      last_failure = covered.detail;
+      continue;
     }
-    if (ok) {
-      r.eps = eps;
-      r.balls = balls;
-      r.used_lemma1 = used_l1 || at.used_lemma1;
-      // The balls proved Lemma 1 each on its own; a certificate holds it once, over the point.
-      if (record && r.used_lemma1) r.lemma1 = certify_lemma1(ParameterBalls(ParameterBox::point(a, b, q)));
-      return finish(Outcome::ok());
-    }
+    r.eps = eps;
+    r.balls = balls;
+    r.used_lemma1 = used_l1 || at.used_lemma1;
+    // The balls proved Lemma 1 each on its own; a certificate holds it once, over the point.
+    if (record && r.used_lemma1) r.lemma1 = certify_lemma1(ParameterBalls(ParameterBox::point(a, b, q)));
+    return finish(Outcome::ok());
   }
   return finish(Outcome::fail("Theorem 2: epsilon", "T = t2 on [t2, t2 + eps] not proved for any eps tried (last: " + last_failure + ")"));
 }
@@ -169,23 +164,14 @@ WindowProof prove_window(double a, double q, double b_lo, double b_hi, double re
     }
     if (!outer_ok) continue;
     // Inside: b-boxes on which T(t2(b)) = t2.
-    struct Item {
-      double lo, hi;
-      int depth;
-    };
-    std::vector<Item> stack{{r.left_in, r.right_in, 0}};
     int boxes = 0;
-    bool ok = true;
     r.box_proofs.clear();
     Budget budget;
     budget.max_tests = 20'000'000;
-    while (!stack.empty()) {
-      poll_stop();  // stop.hpp: a caller may end the proof here
-      const Item it = stack.back();
-      stack.pop_back();
+    auto check = [&](const Span& c, int) {
       // T = t2 on [t2(b), t2(b_hi) + e] for every b of the box, with the largest e tried that is
       // proved (from the middle's epsilon, halved): t2 is superstable at each b, with eps >= e.
-      const ParameterBalls mb(ParameterBox{a, it.lo, it.hi, q, q});
+      const ParameterBalls mb(ParameterBox{a, c.first, c.second, q, q});
       MapStepProof t;
       StartSet set;
       for (double e = r.inside.eps; e > 1e-15 * r.inside.eps; e *= 0.25) {
@@ -198,18 +184,16 @@ WindowProof prove_window(double a, double q, double b_lo, double b_hi, double re
         const double eps_box = (set.hi - mb.t2_at_b_hi).lower();  // <= h - t2(b) for every b of the box
         r.min_eps = boxes == 1 ? eps_box : std::min(r.min_eps, eps_box);
         if (record) r.box_proofs.push_back(BallProof::of(set, mb.box(), std::move(t)));
-        continue;
+        return CellVerdict::proved();
       }
-      const double m2 = 0.5 * (it.lo + it.hi);
-      if (it.depth >= 48 || !(m2 > it.lo && m2 < it.hi) || boxes > 20000 || budget.exhausted()) {
-        last = "T(t2(b)) = t2 not proved for b in [" + format_double(it.lo) + ", " + format_double(it.hi) + "]: " + t.verdict.describe();
-        ok = false;
-        break;
-      }
-      stack.push_back({m2, it.hi, it.depth + 1});
-      stack.push_back({it.lo, m2, it.depth + 1});
+      Outcome why = Outcome::fail(
+          "", "T(t2(b)) = t2 not proved for b in [" + format_double(c.first) + ", " + format_double(c.second) + "]: " + t.verdict.describe());
+      return boxes > 20000 || budget.exhausted() ? CellVerdict::stop(std::move(why)) : CellVerdict::split(std::move(why));
+    };
+    if (const Outcome inside = cover(Span(r.left_in, r.right_in), check, halve, 48); !inside) {
+      last = inside.detail;
+      continue;
     }
-    if (!ok) continue;
     r.boxes = boxes;
     bool used_lemma1 = false;  // a certificate holds Lemma 1 once, over [left_in, right_in] x {q}
     for (const BallProof& p : r.box_proofs) used_lemma1 = used_lemma1 || p.T.used_lemma1;
