@@ -241,7 +241,8 @@ def bind(path, cert, claim, part):
     return None
 
 
-NUMBER = re.compile(r"-?0x[0-9a-f]+(?:\.[0-9a-f]*)?p[+-]?\d+|-?\d+(?:\.\d*)?(?:e[+-]?\d+)?", re.IGNORECASE)
+# A number standing alone: not the digits of a name such as (I1), L2 or t2 (nor the tail of another number).
+NUMBER = re.compile(r"(?<![\w.])(?:-?0x[0-9a-f]+(?:\.[0-9a-f]*)?p[+-]?\d+|-?\d+(?:\.\d*)?(?:e[+-]?\d+)?)", re.IGNORECASE)
 
 
 def states_parameters(line, cert):

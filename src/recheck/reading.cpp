@@ -81,9 +81,11 @@ void require_embedded(const json& j, const std::string& statement, const std::st
 }
 
 /// field of the format (docs/certificates.md), an exact double > 0.
-void require_amplitude(const json& c) {
+double require_amplitude(const json& c) {
   const json& p = field(c, "parameters", "");
-  if (!(parameter(p, "a", "parameters.") > 0)) throw Malformed("'parameters.a' is not a positive number");
+  const double a = parameter(p, "a", "parameters.");
+  if (!(a > 0)) throw Malformed("'parameters.a' is not a positive number");
+  return a;
 }
 
 /// An array of `n` exact doubles.

@@ -33,6 +33,7 @@ struct Failed : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// j[key], which must be present (`where` prefixes the key in the message). @throws Malformed.
 const json& field(const json& j, const std::string& key, const std::string& where);
 /// Whether s has the form -?0x H(.H+)? p[+-]?D{1,6} (H a hexadecimal digit, D a decimal digit).
 bool is_hex_float(const std::string& s);
@@ -45,8 +46,9 @@ double parameter(const json& j, const std::string& key, const std::string& where
 /// A certificate held inside another (`where` names it, e.g. "witnesses.arc_l1"): an object of this
 /// format and version whose statement is `statement`, as a file of its own must be.
 void require_embedded(const json& j, const std::string& statement, const std::string& where);
-/// field of the format (docs/certificates.md), an exact double > 0.
-void require_amplitude(const json& c);
+/// The certificate's `parameters.a`, a field of the format (docs/certificates.md): an exact double
+/// > 0. @throws Malformed otherwise.
+double require_amplitude(const json& c);
 /// An array of `n` exact doubles.
 std::vector<double> doubles(const json& j, std::size_t n, const std::string& where);
 /// x as the verdict line shows a number of the certificate: the fewest decimal digits (at most 17)

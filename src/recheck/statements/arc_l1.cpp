@@ -26,7 +26,7 @@ namespace recheck {
 /// deceleration gamma, its stop within W, before t0 + 2pi.
 long check_arc_l1(const json& c, std::string& what) {
   Steps st;
-  require_amplitude(c);
+  const double a = require_amplitude(c);
   const json& p = field(c, "parameters", "");
   const json& k = field(p, "q_over_a", "parameters.");
   const double k_lo = parameter(k, "lo", "parameters.q_over_a."), k_hi = parameter(k, "hi", "parameters.q_over_a.");
@@ -70,8 +70,8 @@ long check_arc_l1(const json& c, std::string& what) {
   st.require(le(s_star, Iv(S)), "the contact lies within S: sin(delta_max) / (2 g_lo) <= S");
   st.require(lt(2.0 * Iv(g_hi), cosD), "the contact is past t3: 2 g_hi < cos(delta_max)");
   const Iv room = Iv(k_lo) - 2.0 * Iv(eps_max);
-  const std::string arc_text = "for every b/a <= " + exact_text(eps_max) + " and q/a in " + range_text(k_lo, k_hi) + ", from rest on [2pi - " +
-                               dec(delta_max) + ", t3) the first contact is simple and after t3,";
+  const std::string arc_text = "at a = " + exact_text(a) + ", for every b/a <= " + exact_text(eps_max) + " and q/a in " + range_text(k_lo, k_hi) +
+                               ", from rest on [2pi - " + dec(delta_max) + ", t3) the first contact is simple and after t3,";
   if (stop_arc) {  // per row: at 2pi + tau, l_hi < tau < pi, u = x1 + (2 b/a - q/a)(tau - l) - cos(tau) + cos(l) < 0, l = theta1 - 2pi
     const std::vector<double> tau = cuts(field(w, "tau", "witnesses."), "witnesses.tau", false);
     st.require(tau.size() + 1 == dc.size(), "one tau per row of the grid");

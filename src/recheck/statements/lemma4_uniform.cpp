@@ -35,7 +35,7 @@ long check_lemma4_uniform(const json& c, std::string& what) {
     throw Malformed("'witnesses.pieces' is not an integer in 1..4096");
   const int n = static_cast<int>(np.get<long long>());
   const json& arc = field(w, "arc_l1", "witnesses.");
-  require_amplitude(c);
+  const double a = require_amplitude(c);
   require_embedded(arc, "arc-l1", "witnesses.arc_l1");
   st.n += embedded("witnesses.arc_l1", [&] {
     std::string ignored;
@@ -81,8 +81,8 @@ long check_lemma4_uniform(const json& c, std::string& what) {
   st.require(2.0 * eps_star < k_lo, "(I9) q/a > 2 b/a on the box");
   lemma1(st, Iv(1.0), Box{0.0, eps_star, k_lo, k_hi}, read_sub_boxes(field(w, "lemma1", "witnesses."), "witnesses.lemma1."));
   st.require(lt(Iv(2.0), (Iv(k_lo) - 2.0 * E) * s_min), "(I7) (q/a - 2 b/a)(s0 - 1) > 2");
-  what = "(I1)-(I9), the inequalities of Lemma 4's argument, for every b/a <= " + exact_text(eps_star) + " and q/a in " + range_text(k_lo, k_hi) +
-         " on the segment [pi + " + dec(w_lo) + ", pi + " + dec(w_hi) + "]";
+  what = "(I1)-(I9), the inequalities of Lemma 4's argument, at a = " + exact_text(a) + ", for every b/a <= " + exact_text(eps_star) +
+         " and q/a in " + range_text(k_lo, k_hi) + " on the segment [pi + " + dec(w_lo) + ", pi + " + dec(w_hi) + "]";
   return st.n;
 }
 
