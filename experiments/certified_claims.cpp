@@ -276,11 +276,7 @@ const Experiment experiment{
           std::size_t edges = 0;
           for (const GraphSegment& g : ent.segments) edges += g.successors.size();
           const std::string id = std::string("cert.sec7.entropy_graph.") + pt.tag;
-          const std::string statement =
-              "At " + box.describe() +
-              " (double values), disjoint segments of [t2, t3) on each of which T is continuous, with "
-              "T(I_j) containing I_k along each edge of their graph, give h_top(T) >= ln rho(A) > ln 2 for the graph's 0-1 matrix A, "
-              "rho(A) bounded below from a positive vector (Collatz-Wielandt).";
+          const std::string statement = statement_entropy(box);
           Json e = Json::object();
           e.set("proved", ent.verdict.proved)
               .set("segments", static_cast<long long>(ent.segments.size()))

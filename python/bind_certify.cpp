@@ -8,11 +8,13 @@
 
 #include <cmath>
 #include <optional>
+#include <string>
 #include <utility>
 #include <variant>
 
 #include "certify/certificate.hpp"
 #include "certify/certify.hpp"
+#include "certify/statements.hpp"
 #include "convert.hpp"
 #include "dfchaos/errors.hpp"
 #include "dfchaos/parameters.hpp"
@@ -64,9 +66,6 @@ py::object certify_py(const std::string& what, double a, std::optional<NumberOrB
                       double max_seconds, double max_memory, const std::string& word) {
   certify::check_statement(what);
   if (certificate && certificate->empty()) throw InvalidParameter("certificate", "a file name (got '')");
-  if (certificate && !certify::has_certificate(what))
-    throw InvalidParameter("certificate",
-                           std::string("a statement with a certificate format: ") + certify::kCertificateStatements + " (not certify " + what + ")");
   certify::Request r;
   r.what = what;
   r.certificate = certificate.has_value();
@@ -235,6 +234,41 @@ class Certified(dict):
         return f"<dfchaos.Certified {what}: {', '.join(parts)}>"
 )py";
 
+/// The docstring of dfchaos.certify: the statements listed from the registry (certify/statements.hpp).
+const char* certify_doc() {
+  static const std::string doc = [] {
+    std::string d =
+        "certify(what, a=1.0, b=None, q=None, period=0, segment='L0', window=None, certificate=None,\n"
+        "        max_seconds=60, max_memory=2, *, word='') -> Certified\n\n"
+        "A proof in ball arithmetic (Arb), as `dfchaos certify WHAT` gives it.\n`what` is one of " +
+        certify::statement_names(" or ") + " (what each proves: `dfchaos certify --help`).";
+    return d + R"doc(
+periodic takes `period` (itinerary (0^(M-1)1)^infinity) or a primitive `word` over 0, 1 of 1 to 64 letters;
+superstable with `window=(lo, hi)` certifies a window in b and its edges; discontinuities reads `segment`
+(L0 or L2); arc-l1 and lemma4-uniform read a and the box `q` of q/a. `b` and `q` are numbers or (lo, hi)
+boxes where the request allows them. Returns a dfchaos.Certified: the JSON record of the tool as a
+dict ("proved" True/False, the statement, the enclosures as decimal mid and radius, on failure the
+step that failed) whose attributes give the answer typed: .proved, .statement, .failed_step,
+.J0 and .J1 as dfchaos.Interval(lo, hi), .enclosures (each ball as an Interval rounded outward),
+.certificate (see help(dfchaos.Certified)). The C++ API is called directly. Bad input
+raises dfchaos.InvalidParameter with the CLI's message. Doubles are exact binary numbers: the proofs
+are for those numbers (or every parameter of the box).
+
+With `certificate="path"` a proved statement's certificate (the witnesses, for the independent checker
+dfchaos-recheck; docs/certificates.md) is written to path whole or not at all, and the dict gets
+"certificate": {"path", "bytes", "sha256"} ({"written": False} when not proved). A path that cannot
+be written raises OSError and leaves no file.
+
+The budget is the tool's (--max-seconds, --max-memory): at most max_seconds seconds of wall-clock time
+(0 < max_seconds <= 1e6) and max_memory GiB of resident memory added by the call (0.25 <= max_memory
+<= 1e4; the tool limits the address space of its process instead). When either runs out the proof is
+abandoned and dfchaos.GaveUp is raised ("gave up: the time budget of 60 s ran out (max_seconds raises
+it)"); Ctrl-C raises KeyboardInterrupt within a fraction of a second. Either way no certificate is
+written. The proof runs on a worker thread of the module, without the GIL.)doc";
+  }();
+  return doc.c_str();
+}
+
 }  // namespace
 
 void bind_certify(py::module_& m) {
@@ -246,36 +280,7 @@ void bind_certify(py::module_& m) {
   m.def("certify", &certify_py, py::arg("what"), py::arg("a") = 1.0, py::arg("b") = py::none(), py::arg("q") = py::none(), py::arg("period") = 0,
         py::arg("segment") = "L0", py::arg("window") = py::none(), py::arg("certificate") = py::none(),
         py::arg("max_seconds") = kit::kDefaultBudgetSeconds, py::arg("max_memory") = kit::kDefaultBudgetGiB, py::kw_only(), py::arg("word") = "",
-        R"doc(certify(what, a=1.0, b=None, q=None, period=0, segment='L0', window=None, certificate=None,
-        max_seconds=60, max_memory=2, *, word='') -> Certified
-
-A proof in ball arithmetic (Arb), as `dfchaos certify WHAT` gives it: `what` is one of vartheta0 (Eq. 1),
-lemma1 (Lemma 1), b0 (a certified lower bound of b0(q)), discontinuities (Lemma 2, on segment L0 or L2),
-covering (Lemma 4 / Theorem 1), periodic (Sections 6-7, minimal period `period`, or the orbit of
-itinerary (word)^infinity for a primitive `word` over 0, 1 of 1 to 64 letters), superstable
-(Theorem 2; with `window=(lo, hi)` a window in b with both edges) arc-l1 (the arc L1 of Lemma 4's
-proof) or lemma4-uniform (Lemma 4 by the paper's construction), both for every b/a up to the bound
-they report and q/a in the box `q`. `b` and `q` are numbers or (lo, hi)
-boxes where the request allows them. Returns a dfchaos.Certified: the JSON record of the tool as a
-dict ("proved" True/False, the statement, the enclosures as decimal mid and radius, on failure the
-step that failed) whose attributes give the answer typed: .proved, .statement, .failed_step,
-.J0 and .J1 as dfchaos.Interval(lo, hi), .enclosures (each ball as an Interval rounded outward),
-.certificate (see help(dfchaos.Certified)). The C++ API is called directly. Bad input
-raises dfchaos.InvalidParameter with the CLI's message. Doubles are exact binary numbers: the proofs
-are for those numbers (or every parameter of the box).
-
-With `certificate="path"` (vartheta0, lemma1, b0, covering, periodic, superstable, discontinuities, arc-l1, lemma4-uniform) a proved
-statement's certificate (the witnesses, for the independent checker dfchaos-recheck;
-docs/certificates.md) is written to path whole or not at all,
-and the dict gets "certificate": {"path", "bytes", "sha256"} ({"written": False} when not proved).
-A path that cannot be written raises OSError and leaves no file.
-
-The budget is the tool's (--max-seconds, --max-memory): at most max_seconds seconds of wall-clock time
-(0 < max_seconds <= 1e6) and max_memory GiB of resident memory added by the call (0.25 <= max_memory
-<= 1e4; the tool limits the address space of its process instead). When either runs out the proof is
-abandoned and dfchaos.GaveUp is raised ("gave up: the time budget of 60 s ran out (max_seconds raises
-it)"); Ctrl-C raises KeyboardInterrupt within a fraction of a second. Either way no certificate is
-written. The proof runs on a worker thread of the module, without the GIL.)doc");
+        certify_doc());
   // The same at the point of a dfchaos.Parameters, as the module's other functions take it.
   m.def(
       "certify",

@@ -47,6 +47,10 @@ expect 1 '"failed_step"'   superstable --b 0.05 --q 0.85
 expect 0 '"theorem2": false' superstable --b 0.49 --q 1.9
 expect 0 '"theorem2": true'  superstable --b 0.0641 --q 0.85
 expect 0 '"right_edge"'    superstable --b 0.0641 --q 0.85 --window 0.0640755627691:0.064187276763
+# Section 7's covering graph (a statement added through the registry): h_top >= ln rho > ln 2 at C
+expect 0 '"h_lower"'       entropy --b 0.01 --q 0.95
+expect 2 'b:'              entropy --b 0.01:0.011 --q 0.95
+expect 2 '--q is required' entropy --b 0.01
 expect 0 '"b_over_a_max": 0.047' arc-l1 --q 0.72:1
 expect 0 '"proved": true'  arc-l1 -a 2 -q 1.5
 expect 1 '"failed_step": "arc L1: progression' arc-l1 --q 0.3:1
@@ -91,6 +95,16 @@ if [[ "$usage" == *"certify STATEMENT [OPTIONS]" && "$usage" != *"[]"* ]] &&
   echo "ok:   certify --help: $usage"
 else
   echo "FAIL: certify --help usage: $usage"; fails=$((fails + 1))
+fi
+# The statements of the help (the registry, certify/statements.hpp) are those of docs/certified.md's
+# command-line block, in the same order.
+checks=$((checks + 1))
+helped=$("$cli" certify --help | awk '/^Subcommands:/{on=1; next} on && /^  [a-z]/{print $1}' | tr '\n' ' ')
+documented=$(sed -n 's/^dfchaos certify \([a-z0-9-]*\).*/\1/p' "$(dirname "$0")/../docs/certified.md" | tr '\n' ' ')
+if [[ -n "$helped" && "$helped" == "$documented" ]]; then
+  echo "ok:   the statements of certify --help are docs/certified.md's: $helped"
+else
+  echo "FAIL: certify --help lists '$helped', docs/certified.md '$documented'"; fails=$((fails + 1))
 fi
 echo "cli_certify: $checks checks, $fails failures"
 exit $((fails > 0))

@@ -8,6 +8,7 @@ mutated copy of it is rejected with the exit status of its kind of damage (1: a 
 
 usage: recheck_certificates.py DFCHAOS DFCHAOS_RECHECK CASE
 """
+import importlib.util
 import json
 import math
 import os
@@ -15,11 +16,14 @@ import subprocess
 import sys
 import tempfile
 
+HERE = os.path.dirname(os.path.abspath(__file__))
+
 # The requests whose certificates the cases use.
 REQUESTS = {
     "vartheta0": ["vartheta0"],
     "lemma1_point": ["lemma1", "--a", "1", "--b", "0.001", "--q", "0.85"],
     # a box across which u(t2) is near 0 at the low q: the prover splits it into several sub-boxes
+    "entropy": ["entropy", "--a", "1", "--b", "0.01", "--q", "0.95"],
     "lemma1_box": ["lemma1", "--a", "1", "--b", "0.001:0.0035", "--q", "0.73:0.76"],
     "b0": ["b0", "--a", "1", "--q", "0.85"],
     # Lemma 4 at point A of the report: every ball in case AB (theta2 bracketed)
@@ -230,6 +234,32 @@ def main():
                             ball["b"] = [two(x) for x in ball["b"]]
                             ball["q"] = [two(x) for x in ball["q"]]
             recheck(checker, mutate(path, bad, double), 0, "the covering at a = 1 scaled to a = 2")
+        elif case == "binding_states_parameters":
+            # The binding script's generic test (scripts/recheck_certificates.py, states_parameters):
+            # the checker's line states every parameter of the certificate; a line that leaves one out,
+            # or shows it only as part of a name such as (I1), is refused.
+            spec = importlib.util.spec_from_file_location("binding", os.path.join(HERE, "..", "scripts", "recheck_certificates.py"))
+            binding = importlib.util.module_from_spec(spec)
+            spec.loader.exec_module(binding)
+            path, _ = write_certificate(cli, "lemma1_box", d)
+            with open(path) as f:
+                cert = json.load(f)
+            proc = subprocess.run([checker, path], capture_output=True, text=True)
+            line = proc.stdout.strip()
+            if proc.returncode != 0 or binding.states_parameters(line, cert) is not None:
+                sys.exit(f"FAIL: the checker's line of a good certificate is not bound: {line!r}: {binding.states_parameters(line, cert)}")
+            q_lo = cert["parameters"]["q"]["lo"]["decimal"]
+            cut = line.replace(q_lo, "q_lo")
+            if binding.states_parameters(cut, cert) is None:
+                sys.exit(f"FAIL: a line without q = {q_lo} was bound: {cut!r}")
+            par = cert["parameters"]
+            said = (line.split("; ", 1)[0] + f"; (I1) for b in [{par['b']['lo']['decimal']}, {par['b']['hi']['decimal']}], "
+                    f"q in [{par['q']['lo']['decimal']}, {par['q']['hi']['decimal']}]")  # a = 1 only inside the name (I1)
+            if binding.states_parameters(said, cert) is None:
+                sys.exit(f"FAIL: the 1 of (I1) was taken for a = 1: {said!r}")
+            if binding.states_parameters(line.split("; ", 1)[0], cert) is None:
+                sys.exit("FAIL: a line that does not say what it verified was bound")
+            print(f"ok:   the checker's line binds, and three lines that leave a parameter out are refused")
         elif case.startswith("accepts_"):
             path, _ = write_certificate(cli, case[len("accepts_"):], d)
             recheck(checker, path, 0, f"the {case[len('accepts_'):]} certificate")

@@ -9,15 +9,20 @@
 //    jump of T, is never proved continuous; Lemma 1 below q = a sin(vartheta0)).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdlib>
+#include <string>
+#include <vector>
 
 #include <omp.h>
 
 #include "certify/json.hpp"
+#include "certify/statements.hpp"
 #include "dfchaos/certified/arc_l1.hpp"
 #include "dfchaos/certified/bisect.hpp"
+#include "dfchaos/certified/cover.hpp"
 #include "dfchaos/certified/entropy.hpp"
 #include "dfchaos/certified/graph.hpp"
 #include "dfchaos/certified/laps.hpp"
@@ -25,6 +30,7 @@
 #include "dfchaos/certified/periodic.hpp"
 #include "dfchaos/certified/rectangle.hpp"
 #include "dfchaos/certified/region.hpp"
+#include "dfchaos/errors.hpp"
 #include "dfchaos/next_hit.hpp"
 #include "dfchaos/progression_stop.hpp"
 #include "dfchaos/return_map.hpp"
@@ -83,6 +89,79 @@ TEST(CertifiedBisect, EnclosesTheSignChangeAndStopsWhereTheSignIsNotProved) {
   const Ball u = enclose_sign_change([](const Ball& x) { return Ball::hull(x - Ball(10.0), x + Ball(10.0)); }, Ball(1.0), Ball(2.0), 200);
   EXPECT_NEAR(u.lower(), 1.0, 1e-8);
   EXPECT_NEAR(u.upper(), 2.0, 1e-8);
+}
+
+TEST(CertifiedCover, ProvesCellsLeftToRightAndStopsWhereACellCannotBeSplit) {
+  // x^2 - 2 < 0 on [0, 1.4]: the check proves a cell no wider than 1/4 whose upper end is below sqrt 2
+  // in ball arithmetic.
+  std::vector<Span> proved;
+  auto negative = [&proved](const Span& c, int) {
+    if (c.second - c.first <= 0.25 && (sqr(Ball(c.second)) - 2.0).is_negative()) {
+      proved.push_back(c);
+      return CellVerdict::proved();
+    }
+    return CellVerdict::split(Outcome::fail("x^2 < 2", "at " + std::to_string(c.second)));
+  };
+  EXPECT_TRUE(cover(Span(0.0, 1.4), negative, halve, 60));
+  ASSERT_EQ(proved.size(), 8U);          // widths 1.4 / 8 = 0.175
+  EXPECT_EQ(proved.front().first, 0.0);  // the cells tile [0, 1.4] in order, left half first
+  EXPECT_EQ(proved.back().second, 1.4);
+  for (std::size_t i = 1; i < proved.size(); ++i) EXPECT_EQ(proved[i - 1].second, proved[i].first);
+  // Past the zero: the cell [lo, hi] with lo < sqrt 2 <= hi is split until it is two adjacent doubles.
+  proved.clear();
+  const Outcome at_root = cover(Span(0.0, 2.0), negative, halve, 2000);
+  EXPECT_FALSE(at_root);
+  EXPECT_EQ(at_root.step, "x^2 < 2");
+  EXPECT_LE(proved.back().second, std::sqrt(2.0));
+  // The depth limit: no cell below depth 2 (width 0.35), so [0, 1.4] is not proved.
+  int checks = 0;
+  auto count = [&checks, &negative](const Span& c, int depth) {
+    ++checks;
+    EXPECT_LE(depth, 2);
+    return negative(c, depth);
+  };
+  proved.clear();
+  EXPECT_FALSE(cover(Span(0.0, 1.4), count, halve, 2));
+  EXPECT_EQ(checks, 3);  // [0, 1.4], [0, 0.7], [0, 0.35]: the first cell at the limit ends the cover
+  // A stop ends the cover at once, with its outcome (a refutation here).
+  checks = 0;
+  const Outcome refuted = cover(
+      Span(0.0, 1.0),
+      [&checks](const Span&, int) {
+        return ++checks == 2 ? CellVerdict::stop(Outcome::refute("s", "d")) : CellVerdict::split(Outcome::fail("s", "d"));
+      },
+      halve, 60);
+  EXPECT_TRUE(refuted.refuted);
+  EXPECT_EQ(checks, 2);
+  EXPECT_FALSE(halve(Span(1.0, std::nextafter(1.0, 2.0)), 0));  // two adjacent doubles: no midpoint inside
+}
+
+TEST(CertifyRegistry, OneEntryPerStatementEachWithItsProver) {
+  std::vector<std::string> names;
+  for (const Statement& s : statements()) {
+    EXPECT_FALSE(s.summary.empty()) << s.name;
+    EXPECT_NE(s.run, nullptr) << s.name;
+    EXPECT_EQ(&statement(s.name), &s);  // found by its name
+    EXPECT_EQ(std::count(names.begin(), names.end(), s.name), 0) << s.name;
+    names.push_back(s.name);
+  }
+  EXPECT_GE(names.size(), 9U);
+  // A name that is not in the registry: one message naming "what" and listing every statement.
+  try {
+    check_statement("lemma5");
+    ADD_FAILURE() << "lemma5 accepted";
+  } catch (const InvalidParameter& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("what"), std::string::npos) << m;
+    for (const std::string& n : names) EXPECT_NE(m.find(n), std::string::npos) << m;
+  }
+  // A request runs its statement's prover: vartheta0 through certify() and through the entry agree.
+  Request r;
+  r.what = "vartheta0";
+  EXPECT_EQ(dfchaos::certify::certify(r).record.dump(0), statement("vartheta0").run(r).record.dump(0));
+  // The word is read only by a statement that takes an itinerary.
+  r.word = "01";
+  EXPECT_THROW(dfchaos::certify::certify(r), InvalidParameter);
 }
 
 TEST(CertifiedVartheta0, DigitsAndCorrectlyRoundedDoubles) {

@@ -15,6 +15,7 @@
 
 #include "certify/certificate.hpp"
 #include "certify/certify.hpp"
+#include "certify/statements.hpp"
 #include "dfchaos/certified/ball.hpp"
 #include "dfchaos/errors.hpp"
 #include "kit/budget.hpp"
@@ -44,36 +45,38 @@ certify::SegmentEnds segment_ends(const std::string& name, const std::string& s)
   return certify::SegmentEnds{number(name, s.substr(0, colon)), number(name, s.substr(colon + 1))};
 }
 
-/// The typed request of the options: only the options the statement reads are parsed, in the order
-/// a, b, q, window (b0 takes one number q, not a box).
+/// The typed request of the options: only the inputs the statement reads are parsed, in the order
+/// of its registry entry (a, b, q, then the others).
 certify::Request request_from(const CertifyOptions& o) {
-  certify::check_statement(o.what);
-  if (!o.certificate.empty() && !certify::has_certificate(o.what))
-    throw InvalidParameter(
-        "certificate", std::string("a statement with a certificate format: ") + certify::kCertificateStatements + " (not certify " + o.what + ")");
+  const certify::Statement& s = certify::statement(o.what);
   certify::Request r;
   r.what = o.what;
   r.certificate = !o.certificate.empty();
   r.period = o.period;
   r.word = o.word;
   r.segment = o.segment;
-  if (o.what == "vartheta0") return r;
-  r.a = number("a", o.a);
-  if (o.what == "b0") {
-    if (!o.q.empty()) r.q = certify::Range::point(number("q", o.q));
-    return r;
-  }
-  if (o.what == "arc-l1" || o.what == "lemma4-uniform") {
-    if (!o.q.empty()) r.q = range("q", o.q);
-    return r;
-  }
-  if (!o.b.empty()) r.b = range("b", o.b);
-  if (o.what == "discontinuities") return r;
-  if (!o.q.empty()) r.q = range("q", o.q);
-  if (o.what == "superstable" && !o.window.empty()) r.window = range("window", o.window);
-  if (o.what == "covering") {
-    if (!o.J0.empty()) r.J0 = segment_ends("J0", o.J0);
-    if (!o.J1.empty()) r.J1 = segment_ends("J1", o.J1);
+  for (const certify::Input in : s.inputs) {
+    switch (in) {
+      case certify::Input::a: r.a = number("a", o.a); break;
+      case certify::Input::b:
+      case certify::Input::b_box:
+        if (!o.b.empty()) r.b = range("b", o.b);
+        break;
+      case certify::Input::q:
+      case certify::Input::q_box:
+      case certify::Input::q_ratio:
+        if (!o.q.empty()) r.q = range("q", o.q);
+        break;
+      case certify::Input::window:
+        if (!o.window.empty()) r.window = range("window", o.window);
+        break;
+      case certify::Input::segments:
+        if (!o.J0.empty()) r.J0 = segment_ends("J0", o.J0);
+        if (!o.J1.empty()) r.J1 = segment_ends("J1", o.J1);
+        break;
+      case certify::Input::segment:
+      case certify::Input::period: break;  // copied above (checked by the statement)
+    }
   }
   return r;
 }
@@ -82,13 +85,12 @@ certify::Request request_from(const CertifyOptions& o) {
 
 namespace {
 
-/// The options every statement takes: --certificate (where the statement has a certificate
-/// format) and the budgets.
-void add_common(CLI::App* s, CertifyOptions& o, bool certificate) {
-  if (certificate)
-    s->add_option("--certificate", o.certificate, "write the proof's certificate (JSON witnesses for dfchaos-recheck) to FILE, whole or not at all")
-        ->type_name("FILE")
-        ->check([](const std::string& v) { return v.empty() ? std::string("certificate: a file name (got '')") : std::string(); });
+/// The options every statement takes: --certificate (every statement has a certificate format,
+/// docs/certificates.md) and the budgets.
+void add_common(CLI::App* s, CertifyOptions& o) {
+  s->add_option("--certificate", o.certificate, "write the proof's certificate (JSON witnesses for dfchaos-recheck) to FILE, whole or not at all")
+      ->type_name("FILE")
+      ->check([](const std::string& v) { return v.empty() ? std::string("certificate: a file name (got '')") : std::string(); });
   s->add_option("--max-seconds", o.max_seconds, "time budget: give up (exit 1, one line) after S seconds, 0 < S <= 1e6")
       ->type_name("S")
       ->capture_default_str();
@@ -127,72 +129,49 @@ CLI::App* add_certify(CLI::App& app, CertifyOptions& o) {
   const char* kQ = "-q,--q";
   const char* kBText = "b, half the constant force";
   const char* kQText = "q, the largest dry friction";
-
-  auto* v = c->add_subcommand("vartheta0", "Eq. (1): the root vartheta0 of pi - x = cot(x/2) and its sine, enclosed");
-  add_common(v, o, true);
-
-  auto* l1 = c->add_subcommand("lemma1", "Lemma 1 (u(t2) < 0, Eq. 8) at a point or over a box of (b, q)");
-  add_a(l1, o);
-  add_parameter(l1, o.b, kB, kBText, true);
-  add_parameter(l1, o.q, kQ, kQText, true);
-  add_common(l1, o, true);
-
-  auto* b0 = c->add_subcommand("b0", "a certified lower bound of b0(q): Lemma 1 for every b below it, at one q");
-  add_a(b0, o);
-  add_parameter(b0, o.q, kQ, kQText, false);
-  add_common(b0, o, true);
-
-  auto* d = c->add_subcommand("discontinuities", "Lemma 2: the discontinuities of T1 on L0 or L2, at a point (a, b)");
-  add_a(d, o);
-  add_parameter(d, o.b, kB, kBText, false);
-  d->add_option("--segment", o.segment, "L0 = [101pi/100, 3pi/2] or L2 = [101pi/100, 51pi/50]")->type_name("L0|L2")->capture_default_str();
-  add_common(d, o, true);
-
-  auto* cov = c->add_subcommand("covering", "Lemma 4 / Theorem 1: two disjoint covering segments J0, J1, at a point or over a box");
-  add_a(cov, o);
-  add_parameter(cov, o.b, kB, kBText, true);
-  add_parameter(cov, o.q, kQ, kQText, true);
-  auto* j0 = cov->add_option("--J0", o.J0,
-                             "prove this segment J0, given as TOP:T2 (the phases where T >= 3pi/2 and T = t2; e.g. from "
-                             "certified_region's data), with --J1, instead of searching candidates")
-                 ->type_name("TOP:T2");
-  auto* j1 = cov->add_option("--J1", o.J1, "the segment J1 (right of J0), as TOP:T2")->type_name("TOP:T2");
-  j0->needs(j1);
-  j1->needs(j0);
-  add_common(cov, o, true);
-
-  auto* per = c->add_subcommand("periodic", "Sections 6-7: a periodic point of minimal period M, at a point");
-  add_a(per, o);
-  add_parameter(per, o.b, kB, kBText, false);
-  add_parameter(per, o.q, kQ, kQText, false);
-  auto* pm = per->add_option("--period", o.period, "the minimal period M, 1 <= M <= 64: the orbit of itinerary (0^(M-1)1)^infinity")->type_name("M");
-  auto* pw = per->add_option("--word", o.word,
-                             "instead of --period: the orbit of itinerary (W)^infinity, W a primitive word of 1..64 letters 0 and 1\n"
-                             "(0 for J0, 1 for J1; its least period is the length of W)")
-                 ->type_name("W");
-  pm->excludes(pw);
-  add_common(per, o, true);
-
-  auto* sup = c->add_subcommand("superstable", "Theorem 2 at a point, or a window in b with both its edges (--window)");
-  add_a(sup, o);
-  add_parameter(sup, o.b, kB, kBText, false);
-  add_parameter(sup, o.q, kQ, kQText, false);
-  sup->add_option("--window", o.window, "certify the window LO:HI in b (a floating estimate) and its edges, at this q")->type_name("LO:HI");
-  add_common(sup, o, true);
-
-  // The statements for every b/a up to a bound at once: a and a box of q only.
-  for (const auto& [name, text] :
-       {std::pair<const char*, const char*>{"arc-l1",
-                                            "proof of Lemma 4, arc L1 = [197pi/100, t3): from rest there the progression stops in (t3, t0 + "
-                                            "2pi), for every b/a up to an explicit bound and q/a in a box"},
-        {"lemma4-uniform",
-         "Lemma 4 / Theorem 1 for every b/a up to an explicit bound and q/a in a box: the paper's construction on the best segment "
-         "[pi + w_lo, pi + w_hi] found (the paper's L2 or a wider one; the result names it), its inequalities proved for all such b/a at "
-         "once"}}) {
-    auto* s = c->add_subcommand(name, text);
-    add_a(s, o);
-    add_parameter(s, o.q, kQ, "q, the largest dry friction (q/a is what the proof is about; 0 < q <= a)", true);
-    add_common(s, o, true);
+  // One subcommand per statement of the registry (certify/statements.hpp), its options those of the
+  // inputs the statement reads.
+  for (const certify::Statement& st : certify::statements()) {
+    auto* s = c->add_subcommand(st.name, st.summary);
+    for (const certify::Input in : st.inputs) {
+      switch (in) {
+        case certify::Input::a: add_a(s, o); break;
+        case certify::Input::b: add_parameter(s, o.b, kB, kBText, false); break;
+        case certify::Input::b_box: add_parameter(s, o.b, kB, kBText, true); break;
+        case certify::Input::q: add_parameter(s, o.q, kQ, kQText, false); break;
+        case certify::Input::q_box: add_parameter(s, o.q, kQ, kQText, true); break;
+        case certify::Input::q_ratio:
+          add_parameter(s, o.q, kQ, "q, the largest dry friction (q/a is what the proof is about; 0 < q <= a)", true);
+          break;
+        case certify::Input::segment:
+          s->add_option("--segment", o.segment, "L0 = [101pi/100, 3pi/2] or L2 = [101pi/100, 51pi/50]")->type_name("L0|L2")->capture_default_str();
+          break;
+        case certify::Input::period: {
+          auto* pm =
+              s->add_option("--period", o.period, "the minimal period M, 1 <= M <= 64: the orbit of itinerary (0^(M-1)1)^infinity")->type_name("M");
+          auto* pw = s->add_option("--word", o.word,
+                                   "instead of --period: the orbit of itinerary (W)^infinity, W a primitive word of 1..64 letters 0 and 1\n"
+                                   "(0 for J0, 1 for J1; its least period is the length of W)")
+                         ->type_name("W");
+          pm->excludes(pw);
+          break;
+        }
+        case certify::Input::window:
+          s->add_option("--window", o.window, "certify the window LO:HI in b (a floating estimate) and its edges, at this q")->type_name("LO:HI");
+          break;
+        case certify::Input::segments: {
+          auto* j0 = s->add_option("--J0", o.J0,
+                                   "prove this segment J0, given as TOP:T2 (the phases where T >= 3pi/2 and T = t2; e.g. from "
+                                   "certified_region's data), with --J1, instead of searching candidates")
+                         ->type_name("TOP:T2");
+          auto* j1 = s->add_option("--J1", o.J1, "the segment J1 (right of J0), as TOP:T2")->type_name("TOP:T2");
+          j0->needs(j1);
+          j1->needs(j0);
+          break;
+        }
+      }
+    }
+    add_common(s, o);
   }
 
   // A word that names no statement, with the options after it, lands in `what` and is refused

@@ -2,15 +2,12 @@
 /// @file certify.hpp
 /// @brief `dfchaos certify`: the options of the certified statements (certify/certify.hpp runs them).
 ///
-///   dfchaos certify vartheta0
-///   dfchaos certify lemma1          --a A --b B|LO:HI --q Q|LO:HI
-///   dfchaos certify b0              --a A --q Q
-///   dfchaos certify discontinuities --a A --b B [--segment L0|L2]
-///   dfchaos certify covering        --a A --b B|LO:HI --q Q|LO:HI
-///   dfchaos certify periodic        --a A --b B --q Q --period M
-///   dfchaos certify superstable     --a A --b B --q Q [--window LO:HI]
+///   dfchaos certify STATEMENT [OPTIONS]
 ///
-/// With `--certificate FILE` (vartheta0, lemma1, b0) a proved statement's certificate is written
+/// One subcommand per statement of the registry (certify/statements.hpp), its options those of the
+/// inputs the statement reads; `dfchaos certify --help` lists them.
+///
+/// With `--certificate FILE` a proved statement's certificate is written
 /// to FILE whole or not at all (certify/certificate.hpp), and the record gets "certificate":
 /// {"path", "bytes", "sha256"}; a statement not proved writes none ({"written": false}). A FILE
 /// that cannot be created is bad input (exit 2, one line, no file).
@@ -30,7 +27,7 @@ namespace dfchaos::cli {
 
 /// The options of `certify`.
 struct CertifyOptions {
-  std::string what;                ///< vartheta0, lemma1, b0, discontinuities, covering, periodic, superstable
+  std::string what;                ///< the statement (a name of certify/statements.hpp)
   std::string a = "1";             ///< a (a number)
   std::string b;                   ///< b: a number or LO:HI
   std::string q;                   ///< q: a number or LO:HI

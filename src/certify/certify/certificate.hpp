@@ -7,8 +7,8 @@
 /// numbers (hexadecimal floating-point strings such as `"0x1.0624dd2f1a9fcp-10"`, which denote a
 /// binary number exactly, with a decimal beside them for humans) and every witness of the proof.
 /// The format, statement by statement, and what the checker does with it: docs/certificates.md.
-/// Statements with a certificate so far: vartheta0, lemma1, b0, covering, periodic, superstable (with or
-/// without a window), arc-l1, lemma4-uniform, and in the experiments not_superstable and theorem2_counterexample.
+/// Every statement of `dfchaos certify` (certify/statements.hpp) has a certificate; the experiments
+/// also write coverings, entropy, not_superstable, theorem2_counterexample and paper_construction.
 #pragma once
 
 #include <cstddef>
@@ -35,13 +35,6 @@ namespace dfchaos::certify {
 inline constexpr const char* kCertificateFormat = "dfchaos-certificate";
 /// The format version (`"version"`); a checker refuses any other.
 inline constexpr int kCertificateVersion = 1;
-
-/// Whether `dfchaos certify what` can write a certificate (vartheta0, lemma1, b0, discontinuities, covering,
-/// periodic, superstable, arc-l1, lemma4-uniform: today every statement of the tool).
-bool has_certificate(const std::string& what);
-/// The statements with a certificate format, in words (for messages).
-inline constexpr const char* kCertificateStatements =
-    "vartheta0, lemma1, b0, discontinuities, covering, periodic, superstable, arc-l1 or lemma4-uniform";
 
 /// The double x as a C99 hexadecimal floating-point string (`%a`: exactly x, e.g. "0x1p+0").
 std::string hex_double(double x);

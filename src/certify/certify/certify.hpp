@@ -4,17 +4,8 @@
 /// runs the proof in ball arithmetic and returns the verdict with its JSON record.
 ///
 /// This is what `dfchaos certify` and the Python function `dfchaos.certify` both call; neither
-/// builds option strings nor reads JSON back. The statements:
-///
-///   vartheta0        Eq. (1): the root vartheta0 of pi - x = cot(x/2) and its sine
-///   lemma1           Lemma 1 at a point or over a box of (b, q)
-///   b0               a certified lower bound of b0(q) (Lemma 1 for every smaller b)
-///   discontinuities  Lemma 2 on the segment L0 or L2, at a point (a, b)
-///   covering         Lemma 4 / Theorem 1 at a point or over a box of (b, q)
-///   periodic         Sections 6-7: a periodic point of minimal period m, at a point
-///   superstable      Theorem 2 at a point, or a window in b with both edges
-///   arc-l1           the arc L1 of Lemma 4's proof, for every b/a up to its bound, q/a in a box
-///   lemma4-uniform   Lemma 4 for every b/a up to an explicit bound, q/a in a box
+/// builds option strings nor reads JSON back. The statements, their inputs and their provers are
+/// listed once, in the registry (statements.hpp).
 #pragma once
 
 #include <optional>
@@ -40,7 +31,7 @@ struct SegmentEnds {
 
 /// A request: the statement and its parameters (each statement reads only the ones it needs).
 struct Request {
-  std::string what;             ///< vartheta0, lemma1, b0, discontinuities, covering, periodic, superstable, arc-l1, lemma4-uniform
+  std::string what;             ///< the statement: a name of the registry (statements.hpp)
   double a = 1;                 ///< forcing amplitude a > 0
   std::optional<Range> b;       ///< dry friction b (a box for lemma1 and covering)
   std::optional<Range> q;       ///< constant force q (a box for lemma1 and covering)
@@ -68,11 +59,12 @@ struct Result {
   std::string no_certificate = "";
 };
 
-/// Whether `what` names a statement. Lets a caller check the name before reading other input.
+/// Whether `what` names a statement of the registry (statements.hpp). Lets a caller check the name
+/// before reading other input.
 /// @throws InvalidParameter naming "what" when it does not.
 void check_statement(const std::string& what);
 
-/// Checks the request and runs the proof. Every number must be finite with |x| <= kMaxParameter.
+/// Checks the request and runs the proof of its statement (its entry in statements.hpp). Every number must be finite with |x| <= kMaxParameter.
 /// @throws InvalidParameter (one line naming the parameter) for bad input, before any proof starts.
 Result certify(const Request& r);
 

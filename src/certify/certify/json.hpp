@@ -14,6 +14,7 @@
 #include "dfchaos/certified/arc_l1.hpp"
 #include "dfchaos/certified/covering.hpp"
 #include "dfchaos/certified/discontinuities.hpp"
+#include "dfchaos/certified/entropy.hpp"
 #include "dfchaos/certified/lemma4_uniform.hpp"
 #include "dfchaos/certified/periodic.hpp"
 #include "dfchaos/certified/progression.hpp"
@@ -43,6 +44,7 @@ Json to_json(double a, double b, double q, const certified::SuperstableProof& p)
 Json to_json(double a, double q, const certified::WindowProof& w);                                     ///< a superstability window
 Json to_json(double a, const certified::ArcL1Proof& p);                                                ///< the arc L1 of Lemma 4's proof
 Json to_json(double a, const certified::Lemma4UniformProof& p);                                        ///< Lemma 4 for every small b/a
+Json to_json(const certified::EntropyProof& p);                                                        ///< Section 7: h_top from a covering graph
 
 /// The statements, in words (what "proved" means for each result).
 std::string statement_vartheta0();
@@ -55,5 +57,6 @@ std::string statement_superstable();
 std::string statement_window();
 std::string statement_arc_l1(const certified::ArcL1Proof& p);
 std::string statement_lemma4_uniform(const certified::Lemma4UniformProof& p);
+std::string statement_entropy(const certified::ParameterBox& box);  ///< box: the point (a, b, q)
 
 }  // namespace dfchaos::certify

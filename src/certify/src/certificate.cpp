@@ -53,11 +53,6 @@ kit::Json lemma1_sub_boxes(const certified::Lemma1Proof& p) {
 
 }  // namespace
 
-bool has_certificate(const std::string& what) {
-  return what == "vartheta0" || what == "lemma1" || what == "b0" || what == "discontinuities" || what == "covering" || what == "periodic" ||
-         what == "superstable" || what == "entropy" || what == "arc-l1" || what == "lemma4-uniform";
-}
-
 std::string hex_double(double x) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%a", x);

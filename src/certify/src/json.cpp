@@ -125,6 +125,13 @@ std::string statement_window() {
          "At the middle, Theorem 2 holds with a certified eps.";
 }
 
+std::string statement_entropy(const ParameterBox& box) {
+  return "At " + box.describe() +
+         " (double values), disjoint segments of [t2, t3) on each of which T is continuous, with "
+         "T(I_j) containing I_k along each edge of their graph, give h_top(T) >= ln rho(A) > ln 2 for the graph's 0-1 matrix A, "
+         "rho(A) bounded below from a positive vector (Collatz-Wielandt).";
+}
+
 Json to_json(const Vartheta0& v) {
   Json j = Json::object();
   j.set("statement", statement_vartheta0());
@@ -254,6 +261,19 @@ Json to_json(double a, const Lemma4UniformProof& p) {
   j.set("departure_g_max", p.departure_g_max).set("middle_max", p.middle_max).set("end_bracket_max", p.end_bracket_max);
   if (p.verdict.proved) j.set("count_length", ball_json(p.count_length, 8)).set("s_min", ball_json(p.s_min, 8));
   j.set("arc_l1", to_json(a, p.arc_l1));
+  return j;
+}
+
+Json to_json(const EntropyProof& p) {
+  Json j = Json::object();
+  j.set("statement", statement_entropy(ParameterBox::point(p.a, p.b, p.q)))
+      .set("parameters", Json::object().set("a", p.a).set("b", p.b).set("q", p.q));
+  add_verdict(j, p.verdict);
+  long long edges = 0;
+  for (const GraphSegment& g : p.segments) edges += static_cast<long long>(g.successors.size());
+  j.set("segments", static_cast<long long>(p.segments.size())).set("edges", edges).set("rho_lower", p.rho_lower);
+  if (p.verdict.proved) j.set("h_lower", ball_json(p.log_rho_lower, 20));
+  j.set("rho_float", p.rho_float).set("candidates", static_cast<long long>(p.candidates)).set("used_lemma1", p.used_lemma1);
   return j;
 }
 
