@@ -70,7 +70,7 @@ struct PlaneCertified {
 
 /// The rule of the `certified` and `certified_step` columns: certified::prove_covering at the point
 /// (a, b, q) of `p`, with its default options (as `dfchaos certify covering --a A --b B --q Q`)
-/// except CoveringOptions::max_branches = max_branches / kDenseCostFactor (the budget of the
+/// except CoveringOptions::max_branches (of its CandidateOptions) = max_branches / kDenseCostFactor (the budget of the
 /// covering column's Dense fallback): its candidates come from a Dense search in a window above
 /// \f$t_2\f$ that grows up to that many branches of \f$T_1\f$ (beyond it the cell is not proved, step
 /// "covering: candidates"). Its work is bounded by counts only (branches, interval tests, balls,
