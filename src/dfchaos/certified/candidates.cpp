@@ -3,14 +3,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <exception>
 #include <limits>
-#include <new>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "dfchaos/bisect.hpp"
+#include "dfchaos/certified/oracle.hpp"
 #include "dfchaos/covering.hpp"
 #include "dfchaos/errors.hpp"
 #include "dfchaos/phase.hpp"
@@ -129,7 +128,7 @@ double branch_window(const Parameters& p, double lo, double hi, long long branch
 
 std::vector<Candidate> track_candidates(double a, double b, double q, const std::vector<Candidate>& old, const CandidateOptions& opt) {
   std::vector<Candidate> out;
-  try {
+  const bool followed = oracle::attempt([&] {
     const Parameters p(a, b, q);
     p.require_return_map();
     const double lo_target = kThreeHalvesPi + 0.25 * opt.margin_top, hi_limit = *p.t3() - 0.25;
@@ -185,14 +184,8 @@ std::vector<Candidate> track_candidates(double a, double b, double q, const std:
       if (n.lo() < *p.t2() || n.hi() > kThreeHalvesPi) continue;
       out.push_back(n);
     }
-  } catch (const Stopped&) {
-    throw;  // a stop request (stop.hpp): not an answer of the search
-  } catch (const std::bad_alloc&) {
-    throw;  // memory ran out: not an answer of the search
-  } catch (const std::exception&) {
-    return {};
-  }
-  if (out.size() < 2) return {};
+  });
+  if (!followed || out.size() < 2) return {};
   return out;
 }
 
@@ -202,20 +195,8 @@ std::string for_each_candidate(double a, double b, double q, const CandidateOpti
   double lo = 0, hi = 0;
   std::vector<dfchaos::CoveringSegment> segs;
   // The floating layer may refuse (parameters outside its domain, or it gave up): then no (more)
-  // candidates. Only its exceptions are caught here; the proofs' (`take`) pass.
-  const auto floating = [](auto&& f) {
-    try {
-      f();
-      return true;
-    } catch (const Stopped&) {
-      throw;  // a stop request (stop.hpp): not an answer of the search
-    } catch (const std::bad_alloc&) {
-      throw;  // memory ran out: not an answer of the search
-    } catch (const std::exception&) {
-      return false;
-    }
-  };
-  const bool searched_ok = floating([&] {
+  // candidates. Only its calls are attempted (oracle::attempt); the proofs' exceptions (`take`) pass.
+  const bool searched_ok = oracle::attempt([&] {
     p.emplace(a, b, q);
     p->require_return_map();
     lo = std::isnan(opt.lo) ? *p->t2() : std::max(opt.lo, *p->t2());
@@ -240,7 +221,7 @@ std::string for_each_candidate(double a, double b, double q, const CandidateOpti
   double last_hi = -std::numeric_limits<double>::infinity();  // keep them disjoint
   for (const auto& s : segs) {
     Candidate c;
-    if (!floating([&] {
+    if (!oracle::attempt([&] {
           c.theta_top = move_top(*p, s, kThreeHalvesPi + opt.margin_top);
           c.theta_t2 = move_t2(*p, s);
           double w = 0;

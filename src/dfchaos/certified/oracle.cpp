@@ -2,11 +2,8 @@
 #include "dfchaos/certified/oracle.hpp"
 
 #include <cmath>
-#include <exception>
-#include <new>
 
 #include "dfchaos/next_hit.hpp"
-#include "dfchaos/stop.hpp"
 
 namespace dfchaos::certified::oracle {
 
@@ -20,31 +17,21 @@ double clamp_theta(const Parameters& p, double theta) {
 }  // namespace
 
 double T1(double a, double b, double theta) {
-  try {
+  double t1 = NAN;
+  attempt([&] {
     const Parameters p(a, b, a);  // q plays no role in T1
-    if (!p.t2()) return NAN;
-    return next_hit(p, clamp_theta(p, theta)).t1.value();
-  } catch (const Stopped&) {
-    throw;  // a stop request (stop.hpp): not an answer of the search
-  } catch (const std::bad_alloc&) {
-    throw;  // memory ran out: not an answer of the search
-  } catch (const std::exception&) {
-    return NAN;
-  }
+    if (p.t2()) t1 = next_hit(p, clamp_theta(p, theta)).t1.value();
+  });
+  return t1;
 }
 
 std::optional<MapStep> step(double a, double b, double q, double theta) {
-  try {
+  std::optional<MapStep> s;
+  attempt([&] {
     const Parameters p(a, b, q);
-    if (!p.t2() || !(q > 2 * b)) return std::nullopt;
-    return return_map_step(p, clamp_theta(p, theta));
-  } catch (const Stopped&) {
-    throw;  // a stop request (stop.hpp): not an answer of the search
-  } catch (const std::bad_alloc&) {
-    throw;  // memory ran out: not an answer of the search
-  } catch (const std::exception&) {
-    return std::nullopt;
-  }
+    if (p.t2() && q > 2 * b) s = return_map_step(p, clamp_theta(p, theta));
+  });
+  return s;
 }
 
 double theta2(double a, double b, double q, double theta) {

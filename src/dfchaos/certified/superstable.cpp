@@ -3,11 +3,11 @@
 
 #include <chrono>
 #include <cmath>
-#include <new>
 #include <vector>
 
 #include "dfchaos/certified/bisect.hpp"
 #include "dfchaos/certified/cover.hpp"
+#include "dfchaos/certified/oracle.hpp"
 #include "dfchaos/certified/vartheta0.hpp"
 #include "dfchaos/errors.hpp"
 #include "dfchaos/model.hpp"
@@ -73,15 +73,7 @@ SuperstableProof prove_superstable(double a, double b, double q, double eps_try,
   // epsilon: cover [t2, t2 + eps] with closed balls on which T = t2.
   double eps = eps_try;
   if (std::isnan(eps)) {
-    try {
-      eps = 0.9 * dfchaos::superstable_check(dfchaos::Parameters(a, b, q), 20000).epsilon;
-    } catch (const Stopped&) {
-      throw;  // a stop request (stop.hpp): not an answer of the search
-    } catch (const std::bad_alloc&) {
-      throw;  // memory ran out: not an answer of the search
-    } catch (const std::exception&) {
-      eps = 0;
-    }
+    if (!oracle::attempt([&] { eps = 0.9 * dfchaos::superstable_check(dfchaos::Parameters(a, b, q), 20000).epsilon; })) eps = 0;
     if (!(eps > 0)) eps = 1e-4;
   }
   const double t2_up = m.t2.upper();
